@@ -1,0 +1,167 @@
+//! Exact calibration: the damping parameter that makes the delivered `e_post` equal the requested `e_pre`
+//! to 1e-10, by root finding on the exact relations of [`crate::impact::exact`] (or on an integrated impact
+//! for Jankowski's law, which has no closed form). All parameters are dimensionless.
+
+use super::{
+    bilinear_law, damping, hertz_max_penetration, papi_factors, ForceLaw, Reading, Tension,
+};
+use crate::impact::{self, exact, ImpactOptions, ImpactSetup};
+use crate::integrate::brent_root;
+use crate::Error;
+
+/// Required agreement between `e_post` and `e_pre` after calibration.
+pub const E_TOLERANCE: f64 = 1e-10;
+
+/// Root of `e_post(p) = e` for a decreasing `e_post` on `[0, hi]`, widening `hi` while needed.
+fn solve_decreasing(
+    what: &'static str,
+    e: f64,
+    mut hi: f64,
+    mut e_post: impl FnMut(f64) -> Result<f64, Error>,
+) -> Result<f64, Error> {
+    if e == 1.0 {
+        return Ok(0.0);
+    }
+    let f0 = e_post(0.0)? - e;
+    let mut fhi = e_post(hi)? - e;
+    let mut tries = 0;
+    while fhi > 0.0 {
+        hi *= 4.0;
+        fhi = e_post(hi)? - e;
+        tries += 1;
+        if tries > 40 {
+            return Err(Error::Calibration {
+                what,
+                e,
+                reason: "no damping value delivers so small an e".into(),
+            });
+        }
+    }
+    finish(what, e, 0.0, hi, f0, fhi, e_post)
+}
+
+fn finish(
+    what: &'static str,
+    e: f64,
+    lo: f64,
+    hi: f64,
+    flo: f64,
+    fhi: f64,
+    mut e_post: impl FnMut(f64) -> Result<f64, Error>,
+) -> Result<f64, Error> {
+    let mut failure = None;
+    let root = brent_root(
+        |p| match e_post(p) {
+            Ok(v) => v - e,
+            Err(err) => {
+                failure = Some(err);
+                f64::NAN
+            }
+        },
+        lo,
+        hi,
+        flo,
+        fhi,
+        1e-15 * hi.abs().max(1.0),
+    );
+    if let Some(err) = failure {
+        return Err(err);
+    }
+    let root = root.ok_or_else(|| Error::Calibration {
+        what,
+        e,
+        reason: format!(
+            "e_post ranges from {:.6} to {:.6} for {what} in [{lo}, {hi}]",
+            flo + e,
+            fhi + e
+        ),
+    })?;
+    let miss = (e_post(root)? - e).abs();
+    if miss > E_TOLERANCE {
+        return Err(Error::Calibration {
+            what,
+            e,
+            reason: format!("root found misses e by {miss:e}"),
+        });
+    }
+    Ok(root)
+}
+
+/// Exact damping ratio `zeta` of a linear contact: damped in both phases (Kelvin–Voigt, with the tension
+/// rule) or in approach only (Mahmoud & Jankowski). With tension allowed the Anagnostopoulos formula is
+/// already exact and is returned as is.
+pub fn exact_zeta(e: f64, restitution_damped: bool, tension: Tension) -> Result<f64, Error> {
+    if restitution_damped && tension == Tension::Allow {
+        return Ok(damping::zeta_anagnostopoulos(e));
+    }
+    solve_decreasing("zeta", e, 1.0, |z| {
+        Ok(if restitution_damped {
+            exact::kv_e_post(z, tension)
+        } else {
+            exact::mj_e_post(z)
+        })
+    })
+}
+
+/// Exact Hunt–Crossley factor `chi` (same in both phases).
+pub fn exact_chi(e: f64) -> Result<f64, Error> {
+    solve_decreasing("chi", e, 1.0 / e, |c| Ok(exact::hc_e_post(c, c)))
+}
+
+/// The seed's `alpha` calibrated exactly: the root of `e_post(alpha) = e` in [0, 1] (for `e = 1` any
+/// alpha works and 1 is returned).
+pub fn papi_alpha(e: f64, reading: Reading) -> Result<f64, Error> {
+    if e == 1.0 {
+        return Ok(1.0);
+    }
+    let f = |a: f64| {
+        let (chi, chi_r) = papi_factors(e, a, reading);
+        Ok(exact::hc_e_post(chi, chi_r))
+    };
+    let (f0, f1) = (f(0.0)? - e, f(1.0)? - e);
+    finish("alpha", e, 0.0, 1.0, f0, f1, f)
+}
+
+/// Delivered `e` of Jankowski's law with damping ratio `xi` and exponent `n`, by an integrated impact
+/// (100 times tighter than the default tolerance), in dimensionless units (`k = m = v_i = 1`).
+pub fn jankowski_e_post(xi: f64, n: f64) -> Result<f64, Error> {
+    let law = ForceLaw::Jankowski {
+        k: 1.0,
+        n,
+        c0: 2.0 * xi,
+    };
+    let opts = ImpactOptions {
+        rtol: 1e-12,
+        history: false,
+    };
+    Ok(impact::simulate(
+        &law,
+        Tension::Clamp,
+        &ImpactSetup::relative(1.0, 1.0),
+        &opts,
+    )?
+    .e_post)
+}
+
+/// Exact Jankowski damping ratio `xi` for exponent `n`.
+pub fn exact_xi(e: f64, n: f64) -> Result<f64, Error> {
+    let start = damping::xi_jankowski(e).max(0.1);
+    solve_decreasing("xi", e, start, |x| jankowski_e_post(x, n))
+}
+
+/// Exact design restitution `e_d` of the bilinear loop: the `e` to put into the dissipated-energy formula so
+/// that the impact delivers `e`, for exponent `n`, yield ratio `a` and `d_m` equal to `ratio` times the
+/// elastic Hertz penetration.
+pub fn exact_e_design(e: f64, n: f64, a: f64, ratio: f64) -> Result<f64, Error> {
+    let d_m = ratio * hertz_max_penetration(1.0, n, 1.0, 1.0, 1.0);
+    let f = |e_d: f64| match bilinear_law(1.0, n, e_d, a, d_m) {
+        ForceLaw::Bilinear { k1, k2, d_y } => Ok(exact::bilinear_e_post(k1, k2, d_y, 0.5)),
+        _ => unreachable!("bilinear_law returns a bilinear law"),
+    };
+    if e == 1.0 {
+        return Ok(1.0);
+    }
+    let (lo, hi) = (1e-9, 1.0);
+    let (flo, fhi) = (f(lo)? - e, f(hi)? - e);
+    finish("e_design", e, lo, hi, flo, fhi, f)
+}

@@ -1,0 +1,203 @@
+//! Force laws resolved for one impact (effective mass and impact velocity known). Forces in N, penetration
+//! `d` in m, rate `v = d'` in m/s.
+
+/// Phase of an impact: approach (`v > 0`, compression) or restitution (`v <= 0`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Phase {
+    /// Compression, until the rate `v` first reaches 0.
+    Approach,
+    /// Restitution, from the turning point until the contact ends.
+    Restitution,
+}
+
+/// What a law remembers of the current impact: the turning point (maximum penetration in m and the force
+/// there in N), used by hysteretic laws on unloading.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Turn {
+    /// Penetration at the turning point, m.
+    pub d: f64,
+    /// Force at the turning point, N.
+    pub force: f64,
+}
+
+/// A contact force law with every parameter fixed for one impact. The force is the smooth continuation of
+/// the law for any `d` (signed powers for `d < 0`), so that an integrator may step past the end of contact
+/// and locate it as an event; whether the contact has ended is decided by the caller.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ForceLaw {
+    /// `F = k d^n`; `k` in N/m^n.
+    Elastic {
+        /// Stiffness, N/m^n.
+        k: f64,
+        /// Exponent.
+        n: f64,
+    },
+    /// `F = k d + c v` in approach, `k d + c_r v` in restitution; `k` in N/m, `c`, `c_r` in N s/m.
+    LinearViscous {
+        /// Stiffness, N/m.
+        k: f64,
+        /// Approach damping coefficient, N s/m.
+        c: f64,
+        /// Restitution damping coefficient, N s/m.
+        c_r: f64,
+    },
+    /// `F = k d^n (1 + chi v / v_i)` in approach, `chi_r` in place of `chi` in restitution.
+    HuntCrossley {
+        /// Stiffness, N/m^n.
+        k: f64,
+        /// Exponent.
+        n: f64,
+        /// Approach damping factor (dimensionless).
+        chi: f64,
+        /// Restitution damping factor (dimensionless).
+        chi_r: f64,
+        /// Impact velocity, m/s.
+        v_i: f64,
+    },
+    /// `F = k d^n + c0 d^((n-1)/2) v` in approach, `k d^n` in restitution, `c0 = 2 xi sqrt(k m)`.
+    Jankowski {
+        /// Stiffness, N/m^n.
+        k: f64,
+        /// Exponent.
+        n: f64,
+        /// `2 xi sqrt(k m)`, in N s / m^((n+1)/2).
+        c0: f64,
+    },
+    /// Bilinear loop: loading `K1` up to `d_y`, then `K2`; unloading with `K1` down to the line `F = K2 d`.
+    Bilinear {
+        /// Initial (and unloading) stiffness, N/m.
+        k1: f64,
+        /// Post-yield stiffness, N/m.
+        k2: f64,
+        /// Yield penetration, m.
+        d_y: f64,
+    },
+}
+
+/// `sign(d) |d|^n`, with the common exponents computed without `powf`.
+#[inline]
+pub(crate) fn spow(d: f64, n: f64) -> f64 {
+    let a = d.abs();
+    let p = if n == 1.0 {
+        a
+    } else if n == 1.5 {
+        a * a.sqrt()
+    } else {
+        a.powf(n)
+    };
+    p.copysign(d)
+}
+
+impl ForceLaw {
+    /// Contact force in N (positive pushes the bodies apart) at penetration `d` (m) and rate `v` (m/s).
+    #[inline]
+    pub fn force(&self, d: f64, v: f64, phase: Phase, turn: &Turn) -> f64 {
+        match *self {
+            ForceLaw::Elastic { k, n } => k * spow(d, n),
+            ForceLaw::LinearViscous { k, c, c_r } => {
+                k * d
+                    + v * match phase {
+                        Phase::Approach => c,
+                        Phase::Restitution => c_r,
+                    }
+            }
+            ForceLaw::HuntCrossley {
+                k,
+                n,
+                chi,
+                chi_r,
+                v_i,
+            } => {
+                let x = match phase {
+                    Phase::Approach => chi,
+                    Phase::Restitution => chi_r,
+                };
+                k * spow(d, n) * (1.0 + x * v / v_i)
+            }
+            ForceLaw::Jankowski { k, n, c0 } => {
+                let el = k * spow(d, n);
+                match phase {
+                    Phase::Approach => el + c0 * spow(d, 0.5 * (n - 1.0)).abs() * v,
+                    Phase::Restitution => el,
+                }
+            }
+            ForceLaw::Bilinear { k1, k2, d_y } => match phase {
+                Phase::Approach => {
+                    if d <= d_y {
+                        k1 * d
+                    } else {
+                        k1 * d_y + k2 * (d - d_y)
+                    }
+                }
+                Phase::Restitution => (turn.force - k1 * (turn.d - d)).max(k2 * d),
+            },
+        }
+    }
+
+    /// A function whose sign change marks a kink of the law (where the force is continuous but its slope
+    /// is not), so that integration can restart there; `None` for smooth laws.
+    pub fn kink(&self, d: f64, phase: Phase, turn: &Turn) -> Option<f64> {
+        match *self {
+            ForceLaw::Bilinear { k1, k2, d_y } => Some(match phase {
+                Phase::Approach => d_y - d,
+                Phase::Restitution => (turn.force - k1 * (turn.d - d)) - k2 * d,
+            }),
+            _ => None,
+        }
+    }
+
+    /// Whether the force is a smooth function of time at first touch. Jankowski's damping grows like
+    /// `d^((n-1)/2)`, so the solution behaves like `t^((n+1)/2)` near touch, where an integrator's error
+    /// estimate underestimates its error by a constant factor.
+    pub fn smooth_at_touch(&self) -> bool {
+        !matches!(*self, ForceLaw::Jankowski { n, .. } if n != 1.0)
+    }
+
+    /// Scale of penetration for this law, m: the penetration at which the elastic part of the force has
+    /// stored the kinetic energy `m v^2` (up to a factor of order one). Used to set tolerances.
+    pub fn length_scale(&self, m: f64, v: f64) -> f64 {
+        let (k, n) = match *self {
+            ForceLaw::Elastic { k, n }
+            | ForceLaw::HuntCrossley { k, n, .. }
+            | ForceLaw::Jankowski { k, n, .. } => (k, n),
+            ForceLaw::LinearViscous { k, .. } => (k, 1.0),
+            ForceLaw::Bilinear { k1, .. } => (k1, 1.0),
+        };
+        (m * v * v / k).powf(1.0 / (n + 1.0))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn signed_power_matches_powf() {
+        for n in [1.0, 1.5, 2.0, 0.25] {
+            for d in [-0.3f64, 0.0, 1e-9, 0.7] {
+                let expect = if d < 0.0 { -(-d).powf(n) } else { d.powf(n) };
+                assert!((spow(d, n) - expect).abs() <= 1e-15 * expect.abs().max(1e-300));
+            }
+        }
+    }
+
+    #[test]
+    fn bilinear_loop_follows_opensees_impact_material() {
+        // Load past yield, unload: the unloading branch has slope K1 and meets F = K2 d.
+        let law = ForceLaw::Bilinear {
+            k1: 10.0,
+            k2: 2.0,
+            d_y: 1.0,
+        };
+        let t0 = Turn::default();
+        assert_eq!(law.force(0.5, 1.0, Phase::Approach, &t0), 5.0);
+        assert_eq!(law.force(3.0, 1.0, Phase::Approach, &t0), 14.0);
+        let turn = Turn {
+            d: 3.0,
+            force: 14.0,
+        };
+        assert_eq!(law.force(2.5, -1.0, Phase::Restitution, &turn), 9.0);
+        // Unloading line 14 - 10 (3 - d) meets 2 d at d = 2, F = 4; below that F = 2 d.
+        assert_eq!(law.force(1.0, -1.0, Phase::Restitution, &turn), 2.0);
+    }
+}

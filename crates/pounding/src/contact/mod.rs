@@ -1,0 +1,439 @@
+//! Contact force models (`shared/design/contact-models.md`, sections 2–3).
+//!
+//! A [`ContactModel`] is what a user specifies: a [`Model`] from the catalogue with stiffness `k` (N/m^n),
+//! exponent `n`, the requested coefficient of restitution `e_pre`, how the damping is chosen
+//! ([`Damping::Formula`], the published formula, or [`Damping::Exact`], the value that delivers `e_pre`),
+//! and the tension rule. [`ContactModel::prepare`] fixes the dimensionless damping parameter once
+//! (calibrating it if asked); [`PreparedContact::law`] then gives the [`ForceLaw`] of one impact, which
+//! depends on the effective mass and on the impact velocity.
+//!
+//! ```
+//! use pounding::contact::{ContactModel, Damping, Model};
+//! let spec = ContactModel::new(Model::Flores, 1.0e9, 0.65)?.with_damping(Damping::Exact);
+//! let prepared = spec.prepare()?;
+//! let (law, _) = prepared.law(1000.0, 1.0)?;
+//! let e = pounding::impact::exact::e_post(&law, spec.tension(), 1000.0, 1.0).unwrap();
+//! assert!((e - 0.65).abs() < 1e-10);
+//! # Ok::<(), pounding::Error>(())
+//! ```
+
+pub mod calibrate;
+pub mod damping;
+mod law;
+mod model;
+
+pub use law::{ForceLaw, Phase, Turn};
+pub use model::{Family, Formula, Model, ModelInfo, MODELS};
+
+use crate::Error;
+
+/// May the contact force become tensile (attractive) late in restitution?
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize),
+    serde(rename_all = "kebab-case")
+)]
+pub enum Tension {
+    /// The force follows the law into tension; the contact ends when the penetration returns to 0.
+    Allow,
+    /// The force is clamped at 0: the contact ends when it first reaches 0 in restitution.
+    Clamp,
+}
+
+/// The two readings of the seed's force law (design page, section 3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize),
+    serde(rename_all = "kebab-case")
+)]
+pub enum Reading {
+    /// Restitution damping `chi_r = (alpha / e) chi`: restitution dissipates `alpha` times the approach.
+    EnergySplit,
+    /// The same `chi` in both phases; `alpha` enters only through eq (7).
+    SameDamping,
+}
+
+/// How the damping parameter is chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize),
+    serde(rename_all = "kebab-case")
+)]
+pub enum Damping {
+    /// The model's published formula.
+    Formula,
+    /// The value that makes the delivered `e_post` equal `e_pre` (to 1e-10).
+    Exact,
+}
+
+/// How `alpha` of the `papi` model is chosen.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AlphaRule {
+    /// A given value (dimensionless, `alpha >= 0`; the seed's range is [0, 1]).
+    Given(f64),
+    /// Seed eq (8) as printed (flagged as a probable misprint).
+    Eq8,
+    /// The seed's iterative procedure done exactly: the root of `e_post(alpha) = e_pre` in [0, 1].
+    Calibrate,
+}
+
+/// The damping parameter fixed for a contact (all dimensionless).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DampingParameter {
+    /// No damping (elastic models).
+    None,
+    /// Damping ratio of a linear dashpot, `c = 2 zeta sqrt(k m)`.
+    Zeta(f64),
+    /// Hunt–Crossley factor, the same in both phases.
+    Chi(f64),
+    /// The seed's model: `alpha`, and the resulting approach and restitution factors.
+    Papi {
+        /// Energy-split coefficient.
+        alpha: f64,
+        /// Approach factor, eq (7).
+        chi: f64,
+        /// Restitution factor.
+        chi_r: f64,
+    },
+    /// Jankowski's damping ratio.
+    Xi(f64),
+    /// The `e` put into the bilinear loop's dissipated-energy formula.
+    EDesign(f64),
+}
+
+impl DampingParameter {
+    /// The parameter's name (`zeta`, `chi`, `alpha`, `xi`, `e_design`) and value; `None` for no damping.
+    pub fn named(&self) -> Option<(&'static str, f64)> {
+        match *self {
+            DampingParameter::None => None,
+            DampingParameter::Zeta(z) => Some(("zeta", z)),
+            DampingParameter::Chi(c) => Some(("chi", c)),
+            DampingParameter::Papi { alpha, .. } => Some(("alpha", alpha)),
+            DampingParameter::Xi(x) => Some(("xi", x)),
+            DampingParameter::EDesign(e) => Some(("e_design", e)),
+        }
+    }
+}
+
+/// A validated contact specification. Build with [`ContactModel::new`] and the `with_*` methods.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ContactModel {
+    model: Model,
+    k: f64,
+    n: f64,
+    e: f64,
+    damping: Damping,
+    alpha: AlphaRule,
+    reading: Reading,
+    tension: Tension,
+    max_penetration: Option<f64>,
+    yield_ratio: f64,
+}
+
+pub(crate) fn check(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    allowed: &'static str,
+) -> Result<f64, Error> {
+    if ok && value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::Parameter {
+            name,
+            value,
+            allowed,
+        })
+    }
+}
+
+impl ContactModel {
+    /// A contact of `model` with stiffness `k` (N/m^n, > 0) and requested restitution `e` (in (0, 1]);
+    /// the model's default exponent and tension rule, published damping formula, `alpha` calibrated and
+    /// the energy-split reading (for `papi`), yield ratio `a = 0.1` (for `impact-material`).
+    pub fn new(model: Model, k: f64, e: f64) -> Result<Self, Error> {
+        let info = model.info();
+        Ok(Self {
+            model,
+            k: check("k", k, k > 0.0, "k > 0 (N/m^n)")?,
+            n: info.default_n,
+            e: check("e", e, e > 0.0 && e <= 1.0, "0 < e <= 1")?,
+            damping: Damping::Formula,
+            alpha: AlphaRule::Calibrate,
+            reading: Reading::EnergySplit,
+            tension: info.tension,
+            max_penetration: None,
+            yield_ratio: 0.1,
+        })
+    }
+
+    /// Sets the exponent `n` (> 0; linear models accept only 1).
+    pub fn with_exponent(mut self, n: f64) -> Result<Self, Error> {
+        if self.model.info().n_fixed {
+            check("n", n, n == 1.0, "n = 1 (a linear model)")?;
+        }
+        self.n = check("n", n, n > 0.0, "n > 0")?;
+        Ok(self)
+    }
+
+    /// Chooses the published damping formula or exact calibration. For `papi`, `Exact` means `alpha`
+    /// is calibrated.
+    pub fn with_damping(mut self, damping: Damping) -> Self {
+        self.damping = damping;
+        if damping == Damping::Exact && self.model == Model::Papi {
+            self.alpha = AlphaRule::Calibrate;
+        }
+        self
+    }
+
+    /// Chooses `alpha` for `papi` (a given value must be finite and >= 0).
+    pub fn with_alpha(mut self, alpha: AlphaRule) -> Result<Self, Error> {
+        if let AlphaRule::Given(a) = alpha {
+            check(
+                "alpha",
+                a,
+                a >= 0.0,
+                "alpha >= 0 (the seed's range is 0..1)",
+            )?;
+        }
+        self.alpha = alpha;
+        Ok(self)
+    }
+
+    /// Chooses the reading of the seed's model.
+    pub fn with_reading(mut self, reading: Reading) -> Self {
+        self.reading = reading;
+        self
+    }
+
+    /// Sets the tension rule.
+    pub fn with_tension(mut self, tension: Tension) -> Self {
+        self.tension = tension;
+        self
+    }
+
+    /// Sets the expected maximum penetration `d_m` (m, > 0) of `impact-material`; by default the elastic
+    /// Hertz penetration of each impact.
+    pub fn with_max_penetration(mut self, d_m: f64) -> Result<Self, Error> {
+        self.max_penetration = Some(check(
+            "max_penetration",
+            d_m,
+            d_m > 0.0,
+            "max_penetration > 0 (m)",
+        )?);
+        Ok(self)
+    }
+
+    /// Sets the yield ratio `a = d_y / d_m` of `impact-material` (0 < a < 1).
+    pub fn with_yield_ratio(mut self, a: f64) -> Result<Self, Error> {
+        self.yield_ratio = check("yield_ratio", a, a > 0.0 && a < 1.0, "0 < yield_ratio < 1")?;
+        Ok(self)
+    }
+
+    /// The model.
+    pub fn model(&self) -> Model {
+        self.model
+    }
+    /// Stiffness `k`, N/m^n.
+    pub fn stiffness(&self) -> f64 {
+        self.k
+    }
+    /// Exponent `n`.
+    pub fn exponent(&self) -> f64 {
+        self.n
+    }
+    /// Requested coefficient of restitution `e_pre`.
+    pub fn restitution(&self) -> f64 {
+        self.e
+    }
+    /// Damping choice.
+    pub fn damping(&self) -> Damping {
+        self.damping
+    }
+    /// Tension rule.
+    pub fn tension(&self) -> Tension {
+        self.tension
+    }
+    /// Reading of the seed's model.
+    pub fn reading(&self) -> Reading {
+        self.reading
+    }
+    /// Rule for `alpha`.
+    pub fn alpha_rule(&self) -> AlphaRule {
+        self.alpha
+    }
+
+    /// Fixes the damping parameter, calibrating it where asked. Calibration is done once here: the
+    /// parameter is dimensionless and the same for every impact (except `impact-material` with a given
+    /// `d_m`, which is calibrated per impact in [`PreparedContact::law`]).
+    pub fn prepare(&self) -> Result<PreparedContact, Error> {
+        let deferred = self.model == Model::ImpactMaterial
+            && self.damping == Damping::Exact
+            && self.max_penetration.is_some();
+        let parameter = if deferred {
+            None
+        } else {
+            Some(self.parameter_for(None)?)
+        };
+        Ok(PreparedContact {
+            spec: self.clone(),
+            parameter,
+        })
+    }
+
+    /// The damping parameter; `impact` gives `(m, v_i)` for `impact-material` with a given `d_m`.
+    fn parameter_for(&self, impact: Option<(f64, f64)>) -> Result<DampingParameter, Error> {
+        let e = self.e;
+        let exact = self.damping == Damping::Exact;
+        Ok(match self.model.info().formula {
+            Formula::None => DampingParameter::None,
+            Formula::Zeta(f) => DampingParameter::Zeta(if exact {
+                calibrate::exact_zeta(e, self.model.info().restitution_damped, self.tension)?
+            } else {
+                f(e)
+            }),
+            Formula::Chi(f) => DampingParameter::Chi(if exact {
+                calibrate::exact_chi(e)?
+            } else {
+                f(e)
+            }),
+            Formula::Papi => {
+                let alpha = match self.alpha {
+                    AlphaRule::Given(a) => a,
+                    AlphaRule::Eq8 => damping::alpha_eq8(e),
+                    AlphaRule::Calibrate => calibrate::papi_alpha(e, self.reading)?,
+                };
+                let (chi, chi_r) = papi_factors(e, alpha, self.reading);
+                DampingParameter::Papi { alpha, chi, chi_r }
+            }
+            Formula::Xi(f) => DampingParameter::Xi(if exact {
+                calibrate::exact_xi(e, self.n)?
+            } else {
+                f(e)
+            }),
+            Formula::Bilinear => DampingParameter::EDesign(if exact {
+                let ratio = match impact {
+                    Some((m, v_i)) => {
+                        self.max_penetration_for(m, v_i)
+                            / hertz_max_penetration(1.0, self.n, m, v_i, self.k)
+                    }
+                    None => 1.0,
+                };
+                calibrate::exact_e_design(e, self.n, self.yield_ratio, ratio)?
+            } else {
+                e
+            }),
+        })
+    }
+
+    fn max_penetration_for(&self, m: f64, v_i: f64) -> f64 {
+        self.max_penetration
+            .unwrap_or_else(|| hertz_max_penetration(1.0, self.n, m, v_i, self.k))
+    }
+
+    /// The force law of one impact with parameter `p`, effective mass `m` (kg) and impact velocity `v_i`
+    /// (m/s). Pure arithmetic.
+    fn law_with(&self, p: DampingParameter, m: f64, v_i: f64) -> ForceLaw {
+        let (k, n) = (self.k, self.n);
+        match (self.model.info().family, p) {
+            (Family::LinearViscous, DampingParameter::Zeta(z)) => {
+                let c = 2.0 * z * (k * m).sqrt();
+                let c_r = if self.model.info().restitution_damped {
+                    c
+                } else {
+                    0.0
+                };
+                ForceLaw::LinearViscous { k, c, c_r }
+            }
+            (Family::HuntCrossley, DampingParameter::Chi(chi)) => ForceLaw::HuntCrossley {
+                k,
+                n,
+                chi,
+                chi_r: chi,
+                v_i,
+            },
+            (Family::HuntCrossley, DampingParameter::Papi { chi, chi_r, .. }) => {
+                ForceLaw::HuntCrossley {
+                    k,
+                    n,
+                    chi,
+                    chi_r,
+                    v_i,
+                }
+            }
+            (Family::Jankowski, DampingParameter::Xi(xi)) => ForceLaw::Jankowski {
+                k,
+                n,
+                c0: 2.0 * xi * (k * m).sqrt(),
+            },
+            (Family::Bilinear, DampingParameter::EDesign(e_d)) => bilinear_law(
+                k,
+                n,
+                e_d,
+                self.yield_ratio,
+                self.max_penetration_for(m, v_i),
+            ),
+            _ => ForceLaw::Elastic { k, n },
+        }
+    }
+}
+
+/// `papi` approach and restitution factors for `e`, `alpha` and a reading.
+pub fn papi_factors(e: f64, alpha: f64, reading: Reading) -> (f64, f64) {
+    let chi = damping::chi_papi(e, alpha);
+    let chi_r = match reading {
+        Reading::EnergySplit => alpha / e * chi,
+        Reading::SameDamping => chi,
+    };
+    (chi, chi_r)
+}
+
+/// Elastic maximum penetration (m) of `F = k_scale k d^n` for effective mass `m` (kg) and impact velocity
+/// `v_i` (m/s): `((n + 1) m v_i^2 / (2 k))^(1/(n+1))`.
+pub fn hertz_max_penetration(k_scale: f64, n: f64, m: f64, v_i: f64, k: f64) -> f64 {
+    (0.5 * (n + 1.0) * m * v_i * v_i / (k_scale * k)).powf(1.0 / (n + 1.0))
+}
+
+/// The Muthukumar & DesRoches bilinear law from Hertz stiffness `k` (N/m^n), exponent `n`, design
+/// restitution `e_d`, yield ratio `a` and expected maximum penetration `d_m` (m).
+pub fn bilinear_law(k: f64, n: f64, e_d: f64, a: f64, d_m: f64) -> ForceLaw {
+    let k_eff = k * d_m.powf(n - 1.0);
+    let de = k * d_m.powf(n + 1.0) * (1.0 - e_d * e_d) / (n + 1.0);
+    ForceLaw::Bilinear {
+        k1: k_eff + de / (a * d_m * d_m),
+        k2: k_eff - de / ((1.0 - a) * d_m * d_m),
+        d_y: a * d_m,
+    }
+}
+
+/// A [`ContactModel`] with its damping parameter fixed.
+#[derive(Clone, Debug)]
+pub struct PreparedContact {
+    spec: ContactModel,
+    parameter: Option<DampingParameter>,
+}
+
+impl PreparedContact {
+    /// The specification.
+    pub fn spec(&self) -> &ContactModel {
+        &self.spec
+    }
+
+    /// The damping parameter, if it does not depend on the impact.
+    pub fn parameter(&self) -> Option<DampingParameter> {
+        self.parameter
+    }
+
+    /// The force law and damping parameter of one impact with effective mass `m` (kg) and impact velocity
+    /// `v_i` (m/s), both > 0.
+    pub fn law(&self, m: f64, v_i: f64) -> Result<(ForceLaw, DampingParameter), Error> {
+        let p = match self.parameter {
+            Some(p) => p,
+            None => self.spec.parameter_for(Some((m, v_i)))?,
+        };
+        Ok((self.spec.law_with(p, m, v_i), p))
+    }
+}

@@ -1,0 +1,40 @@
+//! The library's error type.
+
+/// Everything that can go wrong in the library. Every variant names what was wrong and what is allowed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Error {
+    /// A parameter outside its allowed range (or NaN).
+    #[error("{name} = {value} is not allowed: {allowed}")]
+    Parameter {
+        /// Parameter name.
+        name: &'static str,
+        /// Value given.
+        value: f64,
+        /// What is allowed, with the unit.
+        allowed: &'static str,
+    },
+    /// Exact calibration failed.
+    #[error("cannot calibrate {what} for e = {e}: {reason}")]
+    Calibration {
+        /// The parameter being calibrated.
+        what: &'static str,
+        /// Requested coefficient of restitution.
+        e: f64,
+        /// Why.
+        reason: String,
+    },
+    /// The integrator could not take a step.
+    #[error("integration step size underflow at t = {t:e} s")]
+    StepSizeUnderflow {
+        /// Time reached, s.
+        t: f64,
+    },
+    /// The contact never ended (for example a supercritically damped contact that may pull).
+    #[error(
+        "the contact had not ended at t = {t:e} s: the bodies do not separate with this damping"
+    )]
+    ContactNeverEnds {
+        /// Time reached, s.
+        t: f64,
+    },
+}

@@ -1,0 +1,24 @@
+//! # pounding
+//!
+//! Contact force models for collisions between bodies and earthquake-induced pounding between adjacent
+//! structures, with exact calibration of their damping and event-located single-impact analysis.
+//!
+//! Units are SI throughout: m, s, kg, N; a contact stiffness `k` of exponent `n` is in N/m^n.
+//!
+//! - [`contact`]: the catalogue of models (`shared/design/contact-models.md`), their damping formulas and
+//!   exact calibration, including the Papi & Toopchi-Nezhad (2022) model (the "seed").
+//! - [`impact`]: one impact (two bodies, or a ball dropped on a slab), integrated with located events, and
+//!   the exact relations it must agree with.
+//! - [`integrate`]: the adaptive Dormand–Prince stepper with dense output and Brent's root finder.
+//! - [`paper`]: the reproduction of the seed's comparison (its Table 1).
+//!
+//! The library does no file or terminal I/O; the `pounding` command-line tool does.
+
+mod error;
+
+pub mod contact;
+pub mod impact;
+pub mod integrate;
+pub mod paper;
+
+pub use error::Error;
