@@ -42,5 +42,10 @@ fn table1(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, single_impacts, table1);
-criterion_main!(benches);
+// The macro generates an undocumented function.
+#[allow(missing_docs)]
+mod group {
+    use super::*;
+    criterion_group!(benches, single_impacts, table1);
+}
+criterion_main!(group::benches);
