@@ -1,1 +1,72 @@
-fn main() {}
+//! The `pounding` command-line tool: configuration, I/O and presentation around the `pounding` library.
+
+mod args;
+mod commands;
+mod output;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+/// What can stop a command: bad input (exit code 2) or a failure to write output (exit code 1).
+#[derive(Debug)]
+pub enum CliError {
+    /// Bad input: one line naming the parameter, the value and what is allowed.
+    Input(String),
+    /// An output could not be written.
+    Io(String),
+}
+
+impl From<pounding::Error> for CliError {
+    fn from(e: pounding::Error) -> Self {
+        match e {
+            pounding::Error::Parameter {
+                name,
+                value,
+                allowed,
+            } => CliError::Input(format!(
+                "--{} {value} is not allowed: {allowed}",
+                name.replace('_', "-")
+            )),
+            other => CliError::Input(other.to_string()),
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = match args::Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+                print!("{e}");
+                return ExitCode::SUCCESS;
+            }
+            if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                eprint!("{}", e.render());
+                return ExitCode::from(2);
+            }
+            // One line: clap's first line names the option, the value and what is allowed.
+            // (A missing-argument error lists the arguments on the indented lines that follow.)
+            let text = e.render().to_string();
+            let mut lines = text.lines();
+            let mut line = lines.next().unwrap_or("error: invalid arguments").trim_end().to_string();
+            for more in lines.take_while(|l| l.starts_with("  ")) {
+                line.push(' ');
+                line.push_str(more.trim());
+            }
+            eprintln!("{line} (see pounding --help)");
+            return ExitCode::from(2);
+        }
+    };
+    match commands::run(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(CliError::Input(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(2)
+        }
+        Err(CliError::Io(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(1)
+        }
+    }
+}

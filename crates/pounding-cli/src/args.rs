@@ -1,0 +1,221 @@
+//! Command-line syntax (clap). Values are parsed here; ranges are checked once, by the library.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use pounding::contact::{AlphaRule, Damping, Model, Reading, Tension};
+
+/// Contact models, single impacts and structural pounding. SI units: m, s, kg, N (k in N/m^n).
+#[derive(Parser, Debug)]
+#[command(name = "pounding", version, propagate_version = true)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// List the contact models with force law, damping formula and source.
+    Models {
+        /// Print one JSON object on stdout.
+        #[arg(long)]
+        json: bool,
+    },
+    /// One impact of two bodies (m1 moving at v towards m2 at rest), integrated with located events.
+    Impact(ImpactArgs),
+    /// The damping parameter that delivers e exactly (alpha for papi; zeta, chi, xi or e_design).
+    Calibrate(CalibrateArgs),
+    /// A ball dropped from a height onto a rigid slab of the same material (gravity acts during contact).
+    Drop(DropArgs),
+    /// Reproductions of the seed paper's tables.
+    Paper {
+        #[command(subcommand)]
+        table: PaperTable,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+pub enum PaperTable {
+    /// Table 1: mean |e_pre - e_post| / e_pre * 100 of every model, with the published figures beside.
+    Table1 {
+        /// Print one JSON object on stdout.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Peak force of every model for the documented concrete ball-drop example (the seed's Table 2 needs
+    /// experimental inputs it does not give).
+    Table2 {
+        /// Print one JSON object on stdout.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// Options that choose and tune the contact model.
+#[derive(Args, Debug, Clone)]
+pub struct ModelArgs {
+    /// Contact model (see `pounding models`).
+    #[arg(long, value_parser = parse_model)]
+    pub model: Model,
+    /// Requested coefficient of restitution e_pre, 0 < e <= 1.
+    #[arg(long)]
+    pub e: f64,
+    /// Exponent n of the force law (default: the model's, 1 or 1.5).
+    #[arg(long)]
+    pub n: Option<f64>,
+    /// Damping: the published formula, or the exact value that delivers e.
+    #[arg(long, value_enum, default_value_t = DampingArg::Formula)]
+    pub damping: DampingArg,
+    /// alpha of papi: a number >= 0, eq8 (the seed's eq (8), as printed) or calibrate [default: calibrate].
+    #[arg(long, value_parser = parse_alpha)]
+    pub alpha: Option<AlphaRule>,
+    /// Reading of papi's force law.
+    #[arg(long, value_enum, default_value_t = ReadingArg::EnergySplit)]
+    pub reading: ReadingArg,
+    /// May the force become tensile late in restitution? [default: allow for kelvin-voigt, clamp otherwise]
+    #[arg(long, value_enum)]
+    pub tension: Option<TensionArg>,
+    /// impact-material: expected maximum penetration d_m, m [default: the elastic Hertz penetration].
+    #[arg(long)]
+    pub max_penetration: Option<f64>,
+    /// impact-material: yield ratio a = d_y / d_m, 0 < a < 1.
+    #[arg(long, default_value_t = 0.1)]
+    pub yield_ratio: f64,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct ImpactArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// Contact stiffness k, N/m^n.
+    #[arg(long, default_value_t = 1.0e9)]
+    pub k: f64,
+    /// Mass of the moving body, kg.
+    #[arg(long, default_value_t = 1.0e5)]
+    pub m1: f64,
+    /// Mass of the body at rest, kg, or inf for a rigid wall.
+    #[arg(long, default_value = "inf")]
+    pub m2: f64,
+    /// Approach velocity at first touch, m/s.
+    #[arg(long, default_value_t = 1.0)]
+    pub v: f64,
+    /// Write the time history (t, penetration, rate, force) to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
+    pub history: Option<std::path::PathBuf>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct CalibrateArgs {
+    /// Contact model (see `pounding models`).
+    #[arg(long, value_parser = parse_model)]
+    pub model: Model,
+    /// Requested coefficient of restitution e_pre, 0 < e <= 1.
+    #[arg(long)]
+    pub e: f64,
+    /// Reading of papi's force law.
+    #[arg(long, value_enum, default_value_t = ReadingArg::EnergySplit)]
+    pub reading: ReadingArg,
+    /// Tension rule (changes the exact zeta of kelvin-voigt).
+    #[arg(long, value_enum)]
+    pub tension: Option<TensionArg>,
+    /// Exponent n (changes the exact xi of jankowski and e_design of impact-material).
+    #[arg(long)]
+    pub n: Option<f64>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct DropArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// Ball radius, m.
+    #[arg(long)]
+    pub radius: f64,
+    /// Young's modulus of ball and slab, Pa.
+    #[arg(long)]
+    pub youngs_modulus: f64,
+    /// Poisson's ratio of ball and slab.
+    #[arg(long)]
+    pub poisson: f64,
+    /// Drop height, m.
+    #[arg(long)]
+    pub height: f64,
+    /// Density of the ball, kg/m^3 (concrete).
+    #[arg(long, default_value_t = 2400.0)]
+    pub density: f64,
+    /// Write the time history (t, penetration, rate, force) to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
+    pub history: Option<std::path::PathBuf>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum DampingArg {
+    Formula,
+    Exact,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum ReadingArg {
+    EnergySplit,
+    SameDamping,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum TensionArg {
+    Allow,
+    Clamp,
+}
+
+impl From<DampingArg> for Damping {
+    fn from(d: DampingArg) -> Self {
+        match d {
+            DampingArg::Formula => Damping::Formula,
+            DampingArg::Exact => Damping::Exact,
+        }
+    }
+}
+
+impl From<ReadingArg> for Reading {
+    fn from(r: ReadingArg) -> Self {
+        match r {
+            ReadingArg::EnergySplit => Reading::EnergySplit,
+            ReadingArg::SameDamping => Reading::SameDamping,
+        }
+    }
+}
+
+impl From<TensionArg> for Tension {
+    fn from(t: TensionArg) -> Self {
+        match t {
+            TensionArg::Allow => Tension::Allow,
+            TensionArg::Clamp => Tension::Clamp,
+        }
+    }
+}
+
+fn parse_model(s: &str) -> Result<Model, String> {
+    Model::from_name(s).ok_or_else(|| {
+        let names: Vec<_> = Model::all().map(Model::name).collect();
+        format!("unknown model; allowed: {}", names.join(", "))
+    })
+}
+
+fn parse_alpha(s: &str) -> Result<AlphaRule, String> {
+    match s {
+        "eq8" => Ok(AlphaRule::Eq8),
+        "calibrate" => Ok(AlphaRule::Calibrate),
+        _ => s
+            .parse::<f64>()
+            .map(AlphaRule::Given)
+            .map_err(|_| "allowed: a number >= 0, eq8 or calibrate".to_string()),
+    }
+}

@@ -1,0 +1,419 @@
+//! The commands: validated inputs in, library calls, reports out.
+
+use crate::args::{CalibrateArgs, Command, DropArgs, ImpactArgs, ModelArgs, PaperTable};
+use crate::output::{fmt_num, history_csv, num, write_atomic, Report};
+use crate::CliError;
+use pounding::contact::{
+    hertz_max_penetration, AlphaRule, ContactModel, Damping, DampingParameter, Model, Reading, Tension,
+    MODELS,
+};
+use pounding::impact::{
+    delivered_e, exact, simulate, BallDrop, ImpactOptions, ImpactResult, ImpactSetup, TwoBodies,
+};
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// Runs one command.
+pub fn run(cmd: Command) -> Result<(), CliError> {
+    match cmd {
+        Command::Models { json } => models(json),
+        Command::Impact(a) => impact(&a),
+        Command::Calibrate(a) => calibrate(&a),
+        Command::Drop(a) => drop(&a),
+        Command::Paper { table } => match table {
+            PaperTable::Table1 { json } => table1(json),
+            PaperTable::Table2 { json } => table2(json),
+        },
+    }
+}
+
+fn input(msg: impl Into<String>) -> CliError {
+    CliError::Input(msg.into())
+}
+
+/// The contact specification of `a` with stiffness `k` (N/m^n).
+fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
+    let papi = a.model == Model::Papi;
+    if a.alpha.is_some() && !papi {
+        return Err(input(format!("--alpha applies to papi only, not to {}", a.model)));
+    }
+    if matches!(a.alpha, Some(AlphaRule::Given(_) | AlphaRule::Eq8))
+        && matches!(a.damping, crate::args::DampingArg::Exact)
+    {
+        return Err(input(
+            "--alpha conflicts with --damping exact (exact damping calibrates alpha); drop one",
+        ));
+    }
+    if a.max_penetration.is_some() && a.model != Model::ImpactMaterial {
+        return Err(input(format!(
+            "--max-penetration applies to impact-material only, not to {}",
+            a.model
+        )));
+    }
+    let mut s = ContactModel::new(a.model, k, a.e)?;
+    if let Some(n) = a.n {
+        s = s.with_exponent(n)?;
+    }
+    s = s
+        .with_damping(a.damping.into())
+        .with_reading(a.reading.into())
+        .with_yield_ratio(a.yield_ratio)?;
+    if let Some(alpha) = a.alpha {
+        s = s.with_alpha(alpha)?;
+    }
+    if let Some(t) = a.tension {
+        s = s.with_tension(t.into());
+    }
+    if let Some(d_m) = a.max_penetration {
+        s = s.with_max_penetration(d_m)?;
+    }
+    Ok(s)
+}
+
+fn tension_name(t: Tension) -> &'static str {
+    match t {
+        Tension::Allow => "allow",
+        Tension::Clamp => "clamp",
+    }
+}
+
+fn damping_name(d: Damping) -> &'static str {
+    match d {
+        Damping::Formula => "formula",
+        Damping::Exact => "exact",
+    }
+}
+
+fn reading_name(r: Reading) -> &'static str {
+    match r {
+        Reading::EnergySplit => "energy-split",
+        Reading::SameDamping => "same-damping",
+    }
+}
+
+/// Adds the model description and its damping parameter to a report.
+fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
+    rep.add("model", s.model().name(), "")
+        .add("k", num(s.stiffness()), "N/m^n")
+        .add("n", num(s.exponent()), "")
+        .add("tension", tension_name(s.tension()), "")
+        .add("damping", damping_name(s.damping()), "");
+    if s.model() == Model::Papi {
+        let rule = match s.alpha_rule() {
+            AlphaRule::Given(_) => "given",
+            AlphaRule::Eq8 => "eq8",
+            AlphaRule::Calibrate => "calibrate",
+        };
+        rep.add("reading", reading_name(s.reading()), "")
+            .add("alpha_rule", rule, "");
+    }
+    match p {
+        DampingParameter::Papi { alpha, chi, chi_r } => {
+            rep.add("alpha", num(alpha), "")
+                .add("chi", num(chi), "")
+                .add("chi_r", num(chi_r), "");
+        }
+        other => {
+            if let Some((name, v)) = other.named() {
+                rep.add(name, num(v), "");
+            }
+        }
+    }
+}
+
+/// Adds the results of one impact to a report.
+fn results(rep: &mut Report, s: &ContactModel, r: &ImpactResult, exact_e: Option<f64>) {
+    rep.add("e_pre", num(s.restitution()), "")
+        .add("e_post", num(r.e_post), "")
+        .add("e_post_exact", exact_e.map_or(Value::Null, num), "")
+        .add("peak_force", num(r.peak_force), "N")
+        .add("time_of_peak_force", num(r.time_of_peak_force), "s")
+        .add("max_penetration", num(r.max_penetration), "m")
+        .add("contact_duration", num(r.contact_duration), "s")
+        .add("dissipated_energy", num(r.dissipated_energy), "J")
+        .add("impulse", num(r.impulse), "N s")
+        .add("steps", r.steps, "");
+}
+
+fn save_history(path: Option<&Path>, r: &ImpactResult) -> Result<(), CliError> {
+    if let (Some(path), Some(h)) = (path, r.history.as_ref()) {
+        write_atomic(path, history_csv(h).as_bytes())
+            .map_err(|e| CliError::Io(format!("cannot write {}: {e}", path.display())))?;
+    }
+    Ok(())
+}
+
+/// `m2` as text: infinite is a rigid body (JSON: null).
+fn m2_text(m2: f64) -> String {
+    if m2.is_infinite() {
+        "inf (rigid)".into()
+    } else {
+        fmt_num(m2)
+    }
+}
+
+fn impact(a: &ImpactArgs) -> Result<(), CliError> {
+    let bodies = TwoBodies::new(a.m1, a.m2, a.v)?;
+    let s = contact(&a.model, a.k)?;
+    let setup = bodies.setup();
+    let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
+    let opts = ImpactOptions {
+        history: a.history.is_some(),
+        ..ImpactOptions::default()
+    };
+    let r = simulate(&law, s.tension(), &setup, &opts)?;
+    let exact_e = exact::e_post(&law, s.tension(), setup.mass, setup.v_i);
+    let (v1, v2) = bodies.velocities_after(r.impulse);
+    let mut rep = Report::default();
+    describe(&mut rep, &s, p);
+    rep.add("m1", num(a.m1), "kg")
+        .add_shown("m2", num(a.m2), m2_text(a.m2), "kg")
+        .add("v", num(a.v), "m/s")
+        .add("effective_mass", num(setup.mass), "kg");
+    results(&mut rep, &s, &r, exact_e);
+    rep.add("velocity_1_after", num(v1), "m/s")
+        .add("velocity_2_after", num(v2), "m/s");
+    save_history(a.history.as_deref(), &r)?;
+    rep.print(a.json);
+    Ok(())
+}
+
+fn calibrate(a: &CalibrateArgs) -> Result<(), CliError> {
+    if !a.model.is_damped() {
+        return Err(input(format!(
+            "model {} has no damping to calibrate (elastic: e = 1); choose a damped model",
+            a.model
+        )));
+    }
+    let mut s = ContactModel::new(a.model, 1.0, a.e)?
+        .with_damping(Damping::Exact)
+        .with_reading(a.reading.into());
+    if let Some(n) = a.n {
+        s = s.with_exponent(n)?;
+    }
+    if let Some(t) = a.tension {
+        s = s.with_tension(t.into());
+    }
+    // The parameter is dimensionless: any k, m and v give it; unit values are used.
+    let (law, p) = s.prepare()?.law(1.0, 1.0)?;
+    let setup = ImpactSetup::relative(1.0, 1.0);
+    let e_post = delivered_e(&law, s.tension(), &setup)?;
+    let integrated = simulate(&law, s.tension(), &setup, &ImpactOptions::default())?.e_post;
+    let mut rep = Report::default();
+    rep.add("model", s.model().name(), "")
+        .add("e_pre", num(a.e), "")
+        .add("n", num(s.exponent()), "")
+        .add("tension", tension_name(s.tension()), "");
+    if s.model() == Model::Papi {
+        rep.add("reading", reading_name(s.reading()), "");
+    }
+    match p {
+        DampingParameter::Papi { alpha, chi, chi_r } => {
+            rep.add("alpha", num(alpha), "")
+                .add("chi", num(chi), "")
+                .add("chi_r", num(chi_r), "");
+        }
+        other => {
+            if let Some((name, v)) = other.named() {
+                rep.add(name, num(v), "");
+            }
+        }
+    }
+    rep.add("e_post", num(e_post), "")
+        .add("e_post_integrated", num(integrated), "");
+    rep.print(a.json);
+    Ok(())
+}
+
+/// Stiffness for a drop: the Hertz `k_h` for `n = 3/2`; otherwise `k_h d_h^(3/2 - n)`, equal to the Hertz
+/// force at the elastic Hertz penetration `d_h` (for `n = 1` this is Muthukumar & DesRoches' `K_eff`).
+fn drop_stiffness(drop: &BallDrop, n: f64) -> f64 {
+    let k_h = drop.hertz_stiffness();
+    let d_h = hertz_max_penetration(1.0, 1.5, drop.mass(), drop.impact_velocity(), k_h);
+    k_h * d_h.powf(1.5 - n)
+}
+
+fn drop(a: &DropArgs) -> Result<(), CliError> {
+    let drop = BallDrop::new(a.radius, a.youngs_modulus, a.poisson, a.density, a.height)?;
+    let n = a.model.n.unwrap_or(a.model.model.info().default_n);
+    let s = contact(&a.model, drop_stiffness(&drop, n.max(f64::MIN_POSITIVE)))?;
+    let setup = drop.setup();
+    let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
+    let opts = ImpactOptions {
+        history: a.history.is_some(),
+        ..ImpactOptions::default()
+    };
+    let r = simulate(&law, s.tension(), &setup, &opts)?;
+    let mut rep = Report::default();
+    describe(&mut rep, &s, p);
+    rep.add("radius", num(a.radius), "m")
+        .add("youngs_modulus", num(a.youngs_modulus), "Pa")
+        .add("poisson", num(a.poisson), "")
+        .add("density", num(a.density), "kg/m^3")
+        .add("height", num(a.height), "m")
+        .add("mass", num(setup.mass), "kg")
+        .add("hertz_stiffness", num(drop.hertz_stiffness()), "N/m^1.5")
+        .add("v_i", num(setup.v_i), "m/s");
+    results(&mut rep, &s, &r, None);
+    save_history(a.history.as_deref(), &r)?;
+    rep.print(a.json);
+    Ok(())
+}
+
+fn models(json: bool) -> Result<(), CliError> {
+    if json {
+        let list: Vec<Value> = MODELS
+            .iter()
+            .map(|i| {
+                json!({
+                    "name": i.name, "family": i.family, "default_n": i.default_n, "tension": i.tension,
+                    "restitution_damped": i.restitution_damped, "force_law": i.force_law,
+                    "damping_formula": i.damping_formula, "parameter": i.parameter, "source": i.source,
+                })
+            })
+            .collect();
+        println!("{}", json!({ "models": list }));
+        return Ok(());
+    }
+    println!("Contact models (d penetration in m, v = d' in m/s, v_i impact velocity, k in N/m^n, m effective mass in kg)\n");
+    for i in &MODELS {
+        println!(
+            "{}  (n = {}, tension: {}{})",
+            i.name,
+            i.default_n,
+            tension_name(i.tension),
+            i.parameter.map_or(String::new(), |p| format!(", exact calibration adjusts {p}"))
+        );
+        println!("    force:   {}", i.force_law);
+        println!("    damping: {}", i.damping_formula);
+        println!("    source:  {}", i.source);
+    }
+    Ok(())
+}
+
+fn table1(json: bool) -> Result<(), CliError> {
+    let rows = pounding::paper::table1()?;
+    if json {
+        println!(
+            "{}",
+            json!({
+                "quantity": "mean |e_pre - e_post| / e_pre * 100, percent",
+                "protocol": "ideal single impacts, formula damping from e_pre; e_post by the exact relations \
+                             (event-located integration for jankowski); grids e = 0.1..1.0 step 0.1 and 0.10..1.00 step 0.01",
+                "rows": rows.iter().map(|r| json!({
+                    "label": r.label, "model": r.model,
+                    "grid_0.1": {"all": num(r.coarse_all), "mid": num(r.coarse_mid)},
+                    "grid_0.01": {"all": num(r.fine_all), "mid": num(r.fine_mid)},
+                    "published": r.published.map(|(a, m)| json!({"all": a, "mid": m})),
+                })).collect::<Vec<_>>(),
+            })
+        );
+        return Ok(());
+    }
+    println!("Seed Table 1: mean |e_pre - e_post| / e_pre * 100 (%) over 0.1 <= e <= 1 (all) and 0.5 <= e <= 0.8 (mid)");
+    println!("Ideal single impacts with each model's published damping; e_post exact (integrated for Jankowski).\n");
+    println!(
+        "{:<48} {:>16} {:>16} {:>16}",
+        "model", "grid 0.1", "grid 0.01", "published"
+    );
+    println!(
+        "{:<48} {:>8}{:>8} {:>8}{:>8} {:>8}{:>8}",
+        "", "all", "mid", "all", "mid", "all", "mid"
+    );
+    let f = |x: f64| format!("{x:.2}");
+    for r in &rows {
+        let (pa, pm) = r
+            .published
+            .map_or(("".into(), "".into()), |(a, m)| (f(a), f(m)));
+        println!(
+            "{:<48} {:>8}{:>8} {:>8}{:>8} {:>8}{:>8}",
+            r.label,
+            f(r.coarse_all),
+            f(r.coarse_mid),
+            f(r.fine_all),
+            f(r.fine_mid),
+            pa,
+            pm
+        );
+    }
+    println!("\nThe seed's figures for Papi (3.68 / 0.68) are shown beside each of its variants.");
+    println!("See docs/paper-reproduction.md for the protocol and the differences.");
+    Ok(())
+}
+
+/// The documented concrete ball-drop example of `docs/paper-reproduction.md`.
+pub const TABLE2_EXAMPLE: (f64, f64, f64, f64, f64, f64) = (0.1, 30.0e9, 0.2, 2400.0, 0.5, 0.65);
+
+fn table2(json: bool) -> Result<(), CliError> {
+    let (radius, youngs, nu, rho, height, e) = TABLE2_EXAMPLE;
+    let drop = BallDrop::new(radius, youngs, nu, rho, height)?;
+    let setup = drop.setup();
+    let mut rows = Vec::new();
+    let mut variants: Vec<(Model, Tension)> = Model::all().map(|m| (m, m.info().tension)).collect();
+    variants.insert(3, (Model::KelvinVoigt, Tension::Clamp));
+    for (model, tension) in variants {
+        let n = model.info().default_n;
+        let k = drop_stiffness(&drop, n);
+        let run = |damping: Damping| -> Result<Option<ImpactResult>, CliError> {
+            if damping == Damping::Exact && !model.is_damped() {
+                return Ok(None);
+            }
+            let s = ContactModel::new(model, k, e)?
+                .with_damping(damping)
+                .with_tension(tension);
+            let (law, _) = s.prepare()?.law(setup.mass, setup.v_i)?;
+            Ok(Some(simulate(&law, tension, &setup, &ImpactOptions::default())?))
+        };
+        let formula = run(Damping::Formula)?.expect("formula damping always runs");
+        let exact = run(Damping::Exact)?;
+        rows.push((model, tension, n, k, formula, exact));
+    }
+    let hertz_peak = rows
+        .iter()
+        .find(|r| r.0 == Model::Hertz)
+        .map(|r| r.4.peak_force)
+        .unwrap_or(f64::NAN);
+    if json {
+        println!(
+            "{}",
+            json!({
+                "example": {"radius_m": radius, "youngs_modulus_Pa": youngs, "poisson": nu, "density_kg_per_m3": rho,
+                            "height_m": height, "e": e, "mass_kg": num(setup.mass), "v_i_m_per_s": num(setup.v_i),
+                            "hertz_stiffness_N_per_m1.5": num(drop.hertz_stiffness())},
+                "rows": rows.iter().map(|(m, t, n, k, f, x)| json!({
+                    "model": m.name(), "tension": tension_name(*t), "n": n, "k": num(*k),
+                    "peak_force_N": num(f.peak_force), "e_post": num(f.e_post),
+                    "peak_force_exact_damping_N": x.as_ref().map_or(Value::Null, |r| num(r.peak_force)),
+                })).collect::<Vec<_>>(),
+            })
+        );
+        return Ok(());
+    }
+    println!(
+        "Concrete ball on a concrete slab: R = {radius} m, E = {youngs:e} Pa, nu = {nu}, rho = {rho} kg/m^3, h = {height} m, e = {e}"
+    );
+    println!(
+        "mass {} kg, v_i {} m/s, k_h {} N/m^1.5; linear models use k_h d_h^(1/2) with d_h the elastic Hertz penetration\n",
+        fmt_num(setup.mass),
+        fmt_num(setup.v_i),
+        fmt_num(drop.hertz_stiffness())
+    );
+    println!(
+        "{:<22} {:>7} {:>4} {:>14} {:>10} {:>14} {:>10}",
+        "model", "tension", "n", "peak_force_N", "e_post", "exact_damp_N", "vs_hertz_%"
+    );
+    for (m, t, n, _, f, x) in &rows {
+        println!(
+            "{:<22} {:>7} {:>4} {:>14.6e} {:>10.6} {:>14} {:>10.2}",
+            m.name(),
+            tension_name(*t),
+            n,
+            f.peak_force,
+            f.e_post,
+            x.as_ref().map_or("-".to_string(), |r| format!("{:.6e}", r.peak_force)),
+            (f.peak_force / hertz_peak - 1.0) * 100.0
+        );
+    }
+    println!("\nThe seed's Table 2 compares against an experiment whose inputs it does not give; see docs/paper-reproduction.md.");
+    Ok(())
+}

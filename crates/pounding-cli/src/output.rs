@@ -1,0 +1,130 @@
+//! Presentation: key-value reports printed as aligned text or as one JSON object, and atomic file writes.
+
+use serde_json::{Map, Value};
+use std::io::Write;
+use std::path::Path;
+
+/// An ordered list of named values with units, rendered as text or JSON from the same source.
+#[derive(Default)]
+pub struct Report {
+    rows: Vec<(String, Value, &'static str)>,
+    text: Vec<Option<String>>,
+}
+
+impl Report {
+    /// Adds `key = value` with `unit` (shown in text output; the JSON key carries no unit, documented).
+    pub fn add(&mut self, key: &str, value: impl Into<Value>, unit: &'static str) -> &mut Self {
+        self.rows.push((key.to_string(), value.into(), unit));
+        self.text.push(None);
+        self
+    }
+
+    /// Adds a value shown as `text` in text output and as `value` in JSON.
+    pub fn add_shown(&mut self, key: &str, value: Value, text: String, unit: &'static str) -> &mut Self {
+        self.add(key, value, unit);
+        *self.text.last_mut().expect("just pushed") = Some(text);
+        self
+    }
+
+    /// The report as one JSON object (keys in insertion order).
+    pub fn json(&self) -> Value {
+        Value::Object(self.rows.iter().map(|(k, v, _)| (k.clone(), v.clone())).collect::<Map<_, _>>())
+    }
+
+    /// Prints the report on stdout: JSON, or one aligned line per value.
+    pub fn print(&self, json: bool) {
+        if json {
+            println!("{}", self.json());
+            return;
+        }
+        let width = self.rows.iter().map(|r| r.0.len()).max().unwrap_or(0);
+        for ((k, v, unit), shown) in self.rows.iter().zip(&self.text) {
+            let text = match v {
+                _ if shown.is_some() => shown.clone().unwrap_or_default(),
+                Value::String(s) => s.clone(),
+                Value::Null => "-".to_string(),
+                Value::Number(n) => match n.as_f64() {
+                    Some(x) if n.is_f64() => fmt_num(x),
+                    _ => n.to_string(),
+                },
+                other => other.to_string(),
+            };
+            if unit.is_empty() {
+                println!("{k:width$}  {text}");
+            } else {
+                println!("{k:width$}  {text} {unit}");
+            }
+        }
+    }
+}
+
+/// A number with 12 significant digits, in scientific notation when very large or small.
+pub fn fmt_num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || (1e-3..1e6).contains(&a) {
+        let digits = 11 - a.log10().floor().max(-3.0) as i32;
+        let s = format!("{:.*}", digits.clamp(0, 15) as usize, x);
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        let s = format!("{x:.11e}");
+        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        format!("{mantissa}e{exp}")
+    }
+}
+
+/// A finite number as JSON, or null (JSON has no infinity or NaN).
+pub fn num(x: f64) -> Value {
+    serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
+}
+
+/// Writes `contents` to `path` atomically: a temporary file in the same folder, flushed, then renamed.
+pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("output");
+    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(contents)?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+/// The time history of one impact as CSV with units in the header.
+pub fn history_csv(h: &pounding::impact::History) -> String {
+    let mut s = String::from("t_s,penetration_m,rate_m_per_s,force_N\n");
+    for i in 0..h.t.len() {
+        s.push_str(&format!("{},{},{},{}\n", h.t[i], h.penetration[i], h.rate[i], h.force[i]));
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_keep_twelve_significant_digits() {
+        assert_eq!(fmt_num(0.65), "0.65");
+        assert_eq!(fmt_num(0.6499999999873285), "0.649999999987");
+        assert_eq!(fmt_num(1.0e7), "1e7");
+        assert_eq!(fmt_num(9.782715214245265e6), "9.78271521425e6");
+        assert_eq!(fmt_num(123.456), "123.456");
+    }
+}
