@@ -55,14 +55,17 @@ pub fn hc_e_post(chi: f64, chi_r: f64) -> f64 {
     } else {
         s + 1.0
     };
-    for _ in 0..100 {
+    // Stop when the step no longer shrinks (round-off reached) or is below a few ulps.
+    let mut last = f64::INFINITY;
+    for _ in 0..60 {
         let f = g_u(u) - s;
         let df = -(-u).exp_m1();
         let du = f / df;
         u -= du;
-        if du.abs() <= 1e-16 * u {
+        if du.abs() <= 4.0 * f64::EPSILON * u || du.abs() >= last {
             break;
         }
+        last = du.abs();
     }
     -(-u).exp_m1() / chi_r
 }
