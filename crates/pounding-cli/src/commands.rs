@@ -4,8 +4,8 @@ use crate::args::{CalibrateArgs, Command, DropArgs, ImpactArgs, ModelArgs, Paper
 use crate::output::{fmt_num, history_csv, num, write_atomic, Report};
 use crate::CliError;
 use pounding::contact::{
-    hertz_max_penetration, AlphaRule, ContactModel, Damping, DampingParameter, Model, Reading, Tension,
-    MODELS,
+    hertz_max_penetration, AlphaRule, ContactModel, Damping, DampingParameter, Model, Reading,
+    Tension, MODELS,
 };
 use pounding::impact::{
     delivered_e, exact, simulate, BallDrop, ImpactOptions, ImpactResult, ImpactSetup, TwoBodies,
@@ -35,7 +35,10 @@ fn input(msg: impl Into<String>) -> CliError {
 fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
     let papi = a.model == Model::Papi;
     if a.alpha.is_some() && !papi {
-        return Err(input(format!("--alpha applies to papi only, not to {}", a.model)));
+        return Err(input(format!(
+            "--alpha applies to papi only, not to {}",
+            a.model
+        )));
     }
     if matches!(a.alpha, Some(AlphaRule::Given(_) | AlphaRule::Eq8))
         && matches!(a.damping, crate::args::DampingArg::Exact)
@@ -282,7 +285,9 @@ fn models(json: bool) -> Result<(), CliError> {
             i.name,
             i.default_n,
             tension_name(i.tension),
-            i.parameter.map_or(String::new(), |p| format!(", exact calibration adjusts {p}"))
+            i.parameter.map_or(String::new(), |p| format!(
+                ", exact calibration adjusts {p}"
+            ))
         );
         println!("    force:   {}", i.force_law);
         println!("    damping: {}", i.damping_formula);
@@ -362,7 +367,12 @@ fn table2(json: bool) -> Result<(), CliError> {
                 .with_damping(damping)
                 .with_tension(tension);
             let (law, _) = s.prepare()?.law(setup.mass, setup.v_i)?;
-            Ok(Some(simulate(&law, tension, &setup, &ImpactOptions::default())?))
+            Ok(Some(simulate(
+                &law,
+                tension,
+                &setup,
+                &ImpactOptions::default(),
+            )?))
         };
         let formula = run(Damping::Formula)?.expect("formula damping always runs");
         let exact = run(Damping::Exact)?;
@@ -410,7 +420,8 @@ fn table2(json: bool) -> Result<(), CliError> {
             n,
             f.peak_force,
             f.e_post,
-            x.as_ref().map_or("-".to_string(), |r| format!("{:.6e}", r.peak_force)),
+            x.as_ref()
+                .map_or("-".to_string(), |r| format!("{:.6e}", r.peak_force)),
             (f.peak_force / hertz_peak - 1.0) * 100.0
         );
     }

@@ -49,7 +49,11 @@ fn main() -> ExitCode {
             // (A missing-argument error lists the arguments on the indented lines that follow.)
             let text = e.render().to_string();
             let mut lines = text.lines();
-            let mut line = lines.next().unwrap_or("error: invalid arguments").trim_end().to_string();
+            let mut line = lines
+                .next()
+                .unwrap_or("error: invalid arguments")
+                .trim_end()
+                .to_string();
             for more in lines.take_while(|l| l.starts_with("  ")) {
                 line.push(' ');
                 line.push_str(more.trim());

@@ -20,7 +20,13 @@ impl Report {
     }
 
     /// Adds a value shown as `text` in text output and as `value` in JSON.
-    pub fn add_shown(&mut self, key: &str, value: Value, text: String, unit: &'static str) -> &mut Self {
+    pub fn add_shown(
+        &mut self,
+        key: &str,
+        value: Value,
+        text: String,
+        unit: &'static str,
+    ) -> &mut Self {
         self.add(key, value, unit);
         *self.text.last_mut().expect("just pushed") = Some(text);
         self
@@ -28,7 +34,12 @@ impl Report {
 
     /// The report as one JSON object (keys in insertion order).
     pub fn json(&self) -> Value {
-        Value::Object(self.rows.iter().map(|(k, v, _)| (k.clone(), v.clone())).collect::<Map<_, _>>())
+        Value::Object(
+            self.rows
+                .iter()
+                .map(|(k, v, _)| (k.clone(), v.clone()))
+                .collect::<Map<_, _>>(),
+        )
     }
 
     /// Prints the report on stdout: JSON, or one aligned line per value.
@@ -92,7 +103,10 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => std::path::PathBuf::from("."),
     };
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("output");
+    let name = path
+        .file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or("output");
     let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
@@ -110,7 +124,10 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
 pub fn history_csv(h: &pounding::impact::History) -> String {
     let mut s = String::from("t_s,penetration_m,rate_m_per_s,force_N\n");
     for i in 0..h.t.len() {
-        s.push_str(&format!("{},{},{},{}\n", h.t[i], h.penetration[i], h.rate[i], h.force[i]));
+        s.push_str(&format!(
+            "{},{},{},{}\n",
+            h.t[i], h.penetration[i], h.rate[i], h.force[i]
+        ));
     }
     s
 }

@@ -6,19 +6,28 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 
 fn pounding(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pounding")).args(args).output().expect("runs")
+    Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .output()
+        .expect("runs")
 }
 
 fn json(args: &[&str]) -> Value {
     let mut a = args.to_vec();
     a.push("--json");
     let out = pounding(&a);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).expect("one JSON object")
 }
 
 fn f(v: &Value, key: &str) -> f64 {
-    v[key].as_f64().unwrap_or_else(|| panic!("{key} missing in {v}"))
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} missing in {v}"))
 }
 
 fn tmp(name: &str) -> PathBuf {
@@ -30,7 +39,16 @@ fn tmp(name: &str) -> PathBuf {
 #[test]
 fn default_papi_impact_works_and_delivers_e() {
     let v = json(&["impact", "--model", "papi", "--e", "0.65"]);
-    for key in ["model", "e_pre", "e_post", "peak_force", "max_penetration", "contact_duration", "dissipated_energy", "alpha"] {
+    for key in [
+        "model",
+        "e_pre",
+        "e_post",
+        "peak_force",
+        "max_penetration",
+        "contact_duration",
+        "dissipated_energy",
+        "alpha",
+    ] {
         assert!(!v[key].is_null(), "{key}");
     }
     // Calibrated alpha delivers e (design page: alpha = 0.45989 for e = 0.65, energy-split).
@@ -42,17 +60,42 @@ fn default_papi_impact_works_and_delivers_e() {
 
 #[test]
 fn two_finite_masses_conserve_momentum() {
-    let v = json(&["impact", "--model", "hertzdamp", "--e", "0.5", "--m1", "3", "--m2", "7", "--v", "2"]);
+    let v = json(&[
+        "impact",
+        "--model",
+        "hertzdamp",
+        "--e",
+        "0.5",
+        "--m1",
+        "3",
+        "--m2",
+        "7",
+        "--v",
+        "2",
+    ]);
     let p = 3.0 * f(&v, "velocity_1_after") + 7.0 * f(&v, "velocity_2_after");
     assert!((p - 6.0).abs() < 1e-9);
 }
 
 #[test]
 fn calibrate_reports_parameter_by_name() {
-    let v = json(&["calibrate", "--model", "papi", "--e", "0.3", "--reading", "same-damping"]);
+    let v = json(&[
+        "calibrate",
+        "--model",
+        "papi",
+        "--e",
+        "0.3",
+        "--reading",
+        "same-damping",
+    ]);
     assert!((f(&v, "alpha") - 0.35217).abs() < 0.5e-5);
     assert!((f(&v, "e_post") - 0.3).abs() < 1e-10);
-    for (model, key) in [("kelvin-voigt", "zeta"), ("flores", "chi"), ("jankowski", "xi"), ("impact-material", "e_design")] {
+    for (model, key) in [
+        ("kelvin-voigt", "zeta"),
+        ("flores", "chi"),
+        ("jankowski", "xi"),
+        ("impact-material", "e_design"),
+    ] {
         let v = json(&["calibrate", "--model", model, "--e", "0.7"]);
         assert!(f(&v, key) > 0.0, "{model}");
         assert!((f(&v, "e_post") - 0.7).abs() < 1e-10, "{model}");
@@ -63,12 +106,22 @@ fn calibrate_reports_parameter_by_name() {
 fn history_is_written_atomically_and_tension_free_forces_are_not_negative() {
     let dir = tmp("history");
     let path = dir.join("h.csv");
-    let out = pounding(&["impact", "--model", "papi", "--e", "0.4", "--history", path.to_str().unwrap()]);
+    let out = pounding(&[
+        "impact",
+        "--model",
+        "papi",
+        "--e",
+        "0.4",
+        "--history",
+        path.to_str().unwrap(),
+    ]);
     assert!(out.status.success());
     let text = std::fs::read_to_string(&path).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next(), Some("t_s,penetration_m,rate_m_per_s,force_N"));
-    let forces: Vec<f64> = lines.map(|l| l.split(',').nth(3).unwrap().parse().unwrap()).collect();
+    let forces: Vec<f64> = lines
+        .map(|l| l.split(',').nth(3).unwrap().parse().unwrap())
+        .collect();
     assert!(forces.len() > 20 && forces.iter().all(|&x| x >= 0.0));
     // No temporary file left beside it.
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
@@ -80,19 +133,80 @@ fn bad_input_gets_one_line_exit_2_and_no_file() {
     let path = dir.join("h.csv");
     let p = path.to_str().unwrap();
     let cases: &[(&[&str], &str)] = &[
-        (&["impact", "--model", "papi", "--e", "1.5", "--history", p], "--e"),
-        (&["impact", "--model", "papi", "--e", "0", "--history", p], "--e"),
+        (
+            &["impact", "--model", "papi", "--e", "1.5", "--history", p],
+            "--e",
+        ),
+        (
+            &["impact", "--model", "papi", "--e", "0", "--history", p],
+            "--e",
+        ),
         (&["impact", "--model", "papi", "--e", "NaN"], "--e"),
-        (&["impact", "--model", "papi", "--e", "0.5", "--k", "-1"], "--k"),
-        (&["impact", "--model", "papi", "--e", "0.5", "--m1", "0"], "--m1"),
-        (&["impact", "--model", "papi", "--e", "0.5", "--m2", "NaN"], "--m2"),
-        (&["impact", "--model", "papi", "--e", "0.5", "--v", "-2"], "--v"),
+        (
+            &["impact", "--model", "papi", "--e", "0.5", "--k", "-1"],
+            "--k",
+        ),
+        (
+            &["impact", "--model", "papi", "--e", "0.5", "--m1", "0"],
+            "--m1",
+        ),
+        (
+            &["impact", "--model", "papi", "--e", "0.5", "--m2", "NaN"],
+            "--m2",
+        ),
+        (
+            &["impact", "--model", "papi", "--e", "0.5", "--v", "-2"],
+            "--v",
+        ),
         (&["impact", "--model", "nope", "--e", "0.5"], "--model"),
-        (&["impact", "--model", "papi", "--e", "0.5", "--wat"], "--wat"),
-        (&["impact", "--model", "papi", "--e", "0.5", "--alpha", "-1"], "--alpha"),
-        (&["impact", "--model", "papi", "--e", "0.5", "--reading", "x"], "--reading"),
-        (&["drop", "--model", "papi", "--e", "0.5", "--radius", "0", "--youngs-modulus", "3e10", "--poisson", "0.2", "--height", "1"], "--radius"),
-        (&["drop", "--model", "papi", "--e", "0.5", "--radius", "0.1", "--youngs-modulus", "3e10", "--poisson", "0.2", "--height", "-1"], "--height"),
+        (
+            &["impact", "--model", "papi", "--e", "0.5", "--wat"],
+            "--wat",
+        ),
+        (
+            &["impact", "--model", "papi", "--e", "0.5", "--alpha", "-1"],
+            "--alpha",
+        ),
+        (
+            &["impact", "--model", "papi", "--e", "0.5", "--reading", "x"],
+            "--reading",
+        ),
+        (
+            &[
+                "drop",
+                "--model",
+                "papi",
+                "--e",
+                "0.5",
+                "--radius",
+                "0",
+                "--youngs-modulus",
+                "3e10",
+                "--poisson",
+                "0.2",
+                "--height",
+                "1",
+            ],
+            "--radius",
+        ),
+        (
+            &[
+                "drop",
+                "--model",
+                "papi",
+                "--e",
+                "0.5",
+                "--radius",
+                "0.1",
+                "--youngs-modulus",
+                "3e10",
+                "--poisson",
+                "0.2",
+                "--height",
+                "-1",
+            ],
+            "--height",
+        ),
         (&["calibrate", "--model", "hooke", "--e", "0.5"], "hooke"),
     ];
     for (args, names) in cases {
@@ -100,7 +214,10 @@ fn bad_input_gets_one_line_exit_2_and_no_file() {
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
         assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
-        assert!(err.starts_with("error:") && err.contains(names), "{args:?}: {err}");
+        assert!(
+            err.starts_with("error:") && err.contains(names),
+            "{args:?}: {err}"
+        );
         assert!(!err.contains("panicked"));
     }
     assert!(!path.exists());
@@ -110,7 +227,10 @@ fn bad_input_gets_one_line_exit_2_and_no_file() {
 fn table1_reproduces_the_clamped_anagnostopoulos_figure() {
     let v = json(&["paper", "table1"]);
     let rows = v["rows"].as_array().unwrap();
-    let clamped = rows.iter().find(|r| r["label"].as_str().unwrap().contains("clamped")).unwrap();
+    let clamped = rows
+        .iter()
+        .find(|r| r["label"].as_str().unwrap().contains("clamped"))
+        .unwrap();
     // Design page, section 5: 28.48 % on the 0.1 grid.
     assert!((clamped["grid_0.1"]["all"].as_f64().unwrap() - 28.48).abs() < 0.005);
     assert_eq!(clamped["published"]["all"].as_f64(), Some(28.76));
@@ -126,7 +246,21 @@ fn models_lists_every_model() {
 fn drop_uses_hertz_stiffness_and_gravity() {
     // Elastic Hertz drop: peak force k_h d^(3/2), d = (5 m v^2 / (4 k_h))^(2/5), up to gravity's share
     // (m g against a peak force of ~1e5 N: below 1e-3 relative).
-    let v = json(&["drop", "--model", "hertz", "--e", "1", "--radius", "0.1", "--youngs-modulus", "3e10", "--poisson", "0.2", "--height", "0.5"]);
+    let v = json(&[
+        "drop",
+        "--model",
+        "hertz",
+        "--e",
+        "1",
+        "--radius",
+        "0.1",
+        "--youngs-modulus",
+        "3e10",
+        "--poisson",
+        "0.2",
+        "--height",
+        "0.5",
+    ]);
     let (m, k, vi) = (f(&v, "mass"), f(&v, "hertz_stiffness"), f(&v, "v_i"));
     let d = (5.0 * m * vi * vi / (4.0 * k)).powf(0.4);
     assert!((f(&v, "peak_force") / (k * d.powf(1.5)) - 1.0).abs() < 1e-3);

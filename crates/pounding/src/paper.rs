@@ -149,8 +149,11 @@ fn errors(variant: &Variant) -> Result<Vec<(u32, f64)>, Error> {
 }
 
 fn mean(errors: &[(u32, f64)], keep: impl Fn(u32) -> bool) -> f64 {
-    let picked: Vec<f64> = errors.iter().filter(|(i, _)| keep(*i)).map(|p| p.1).collect();
-    picked.iter().sum::<f64>() / picked.len() as f64
+    let (sum, count) = errors
+        .iter()
+        .filter(|(i, _)| keep(*i))
+        .fold((0.0, 0u32), |(s, c), p| (s + p.1, c + 1));
+    sum / f64::from(count)
 }
 
 /// Reproduces Table 1 for every variant of [`variants`].

@@ -26,7 +26,10 @@ fn coarse(e_post: impl Fn(f64) -> f64) -> (f64, f64) {
         let e = f64::from(i) / 10.0;
         (e - e_post(e)).abs() / e * 100.0
     };
-    ((1..=10).map(err).sum::<f64>() / 10.0, (5..=8).map(err).sum::<f64>() / 4.0)
+    (
+        (1..=10).map(err).sum::<f64>() / 10.0,
+        (5..=8).map(err).sum::<f64>() / 4.0,
+    )
 }
 
 fn papi_e(e: f64, alpha: f64, reading: pounding::contact::Reading) -> f64 {
@@ -39,7 +42,10 @@ fn figures_quoted_in_the_reproduction_discussion() {
     use pounding::contact::Reading::{EnergySplit, SameDamping};
     // docs/paper-reproduction.md: alpha = e^2 (energy-split) gives 0.96 / 0.21 %.
     let (all, mid) = coarse(|e| papi_e(e, e * e, EnergySplit));
-    assert!((all - 0.96).abs() < 0.005 && (mid - 0.21).abs() < 0.005, "{all} {mid}");
+    assert!(
+        (all - 0.96).abs() < 0.005 && (mid - 0.21).abs() < 0.005,
+        "{all} {mid}"
+    );
     // Best alpha on a 0.1 grid of alpha: 2.36 / 0.07 % (energy-split), 5.81 / 1.00 % (same-damping).
     for (reading, expect) in [(EnergySplit, (2.36, 0.07)), (SameDamping, (5.81, 1.00))] {
         let best = |e: f64| {
@@ -49,6 +55,9 @@ fn figures_quoted_in_the_reproduction_discussion() {
                 .unwrap()
         };
         let (all, mid) = coarse(best);
-        assert!((all - expect.0).abs() < 0.005 && (mid - expect.1).abs() < 0.005, "{reading:?}: {all} {mid}");
+        assert!(
+            (all - expect.0).abs() < 0.005 && (mid - expect.1).abs() < 0.005,
+            "{reading:?}: {all} {mid}"
+        );
     }
 }
