@@ -94,6 +94,22 @@ fn reading_name(r: Reading) -> &'static str {
     }
 }
 
+/// Adds the damping parameter by its name (for papi: alpha and the factors chi, chi_r).
+fn parameter(rep: &mut Report, p: DampingParameter) {
+    match p {
+        DampingParameter::Papi { alpha, chi, chi_r } => {
+            rep.add("alpha", num(alpha), "")
+                .add("chi", num(chi), "")
+                .add("chi_r", num(chi_r), "");
+        }
+        other => {
+            if let Some((name, v)) = other.named() {
+                rep.add(name, num(v), "");
+            }
+        }
+    }
+}
+
 /// Adds the model description and its damping parameter to a report.
 fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
     rep.add("model", s.model().name(), "")
@@ -110,18 +126,7 @@ fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
         rep.add("reading", reading_name(s.reading()), "")
             .add("alpha_rule", rule, "");
     }
-    match p {
-        DampingParameter::Papi { alpha, chi, chi_r } => {
-            rep.add("alpha", num(alpha), "")
-                .add("chi", num(chi), "")
-                .add("chi_r", num(chi_r), "");
-        }
-        other => {
-            if let Some((name, v)) = other.named() {
-                rep.add(name, num(v), "");
-            }
-        }
-    }
+    parameter(rep, p);
 }
 
 /// Adds the results of one impact to a report.
@@ -210,18 +215,7 @@ fn calibrate(a: &CalibrateArgs) -> Result<(), CliError> {
     if s.model() == Model::Papi {
         rep.add("reading", reading_name(s.reading()), "");
     }
-    match p {
-        DampingParameter::Papi { alpha, chi, chi_r } => {
-            rep.add("alpha", num(alpha), "")
-                .add("chi", num(chi), "")
-                .add("chi_r", num(chi_r), "");
-        }
-        other => {
-            if let Some((name, v)) = other.named() {
-                rep.add(name, num(v), "");
-            }
-        }
-    }
+    parameter(&mut rep, p);
     rep.add("e_post", num(e_post), "")
         .add("e_post_integrated", num(integrated), "");
     rep.print(a.json);

@@ -124,8 +124,9 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
 pub fn history_csv(h: &pounding::impact::History) -> String {
     let mut s = String::from("t_s,penetration_m,rate_m_per_s,force_N\n");
     for i in 0..h.t.len() {
+        // Shortest round-trip scientific notation: exact, and compact for tiny times near touch.
         s.push_str(&format!(
-            "{},{},{},{}\n",
+            "{:e},{:e},{:e},{:e}\n",
             h.t[i], h.penetration[i], h.rate[i], h.force[i]
         ));
     }
