@@ -208,6 +208,12 @@ fn bad_input_gets_one_line_exit_2_and_no_file() {
             "--height",
         ),
         (&["calibrate", "--model", "hooke", "--e", "0.5"], "hooke"),
+        (
+            &[
+                "impact", "--model", "papi", "--e", "0.5", "--m1", "1e300", "--v", "1e-300",
+            ],
+            "floating-point",
+        ),
     ];
     for (args, names) in cases {
         let out = pounding(args);

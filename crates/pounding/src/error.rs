@@ -29,6 +29,14 @@ pub enum Error {
         /// Time reached, s.
         t: f64,
     },
+    /// The impact's scales of length, time, momentum or energy leave the range of `f64`.
+    #[error("an impact with effective mass {mass:e} kg, v_i = {v_i:e} m/s and this stiffness has length, time or energy scales outside the range of floating-point numbers")]
+    ScaleOutOfRange {
+        /// Effective mass, kg.
+        mass: f64,
+        /// Impact velocity, m/s.
+        v_i: f64,
+    },
     /// The contact never ended (for example a supercritically damped contact that may pull).
     #[error(
         "the contact had not ended at t = {t:e} s: the bodies do not separate with this damping"

@@ -168,6 +168,13 @@ pub fn simulate(
     let (m, v_i) = (setup.mass, setup.v_i);
     let len = law.length_scale(m, v_i);
     let tau = len / v_i;
+    let rtol_floor = 1e-14; // the tightest relative tolerance used below
+    if [len, tau, m * v_i, m * v_i * v_i]
+        .iter()
+        .any(|s| !(s * rtol_floor).is_normal() || !(s / rtol_floor).is_finite())
+    {
+        return Err(Error::ScaleOutOfRange { mass: m, v_i });
+    }
     // A law that is not smooth at touch starts with a step so small that the singular start contributes
     // below 1e-14 of the velocity, and is integrated 100 times tighter: its error estimate is pessimistic
     // by a constant factor while steps are as long as the time since touch (measured: 2e-9 at 1e-11).
