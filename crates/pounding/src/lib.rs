@@ -10,6 +10,7 @@
 //! - [`impact`]: one impact (two bodies, or a ball dropped on a slab), integrated with located events, and
 //!   the exact relations it must agree with.
 //! - [`integrate`]: the adaptive Dormand–Prince stepper with dense output and Brent's root finder.
+//! - [`ground_motion`]: records (AT2, time/acceleration, values; built-in El Centro 1940), PGA/PGV/PGD.
 //! - [`paper`]: the reproduction of the seed's comparison (its Table 1).
 //!
 //! The library does no file or terminal I/O; the `pounding` command-line tool does.
@@ -17,6 +18,7 @@
 mod error;
 
 pub mod contact;
+pub mod ground_motion;
 pub mod impact;
 pub mod integrate;
 pub mod paper;

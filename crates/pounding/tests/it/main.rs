@@ -4,6 +4,7 @@
 
 mod calibration;
 mod exact_relations;
+mod ground_motion;
 mod integrated;
 mod paper;
 

@@ -1,0 +1,292 @@
+//! Ground-motion records: uniform-step accelerations in m/s^2, parsed from text (PEER AT2, two-column
+//! time/acceleration, one value per line), the built-in 1940 El Centro N-S record, and peak ground
+//! acceleration, velocity and displacement.
+//!
+//! The library reads text, never files: the caller passes the file's contents.
+
+pub mod parse;
+
+use crate::contact::check;
+use crate::Error;
+
+/// Units of the accelerations in a file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Units {
+    /// Multiples of standard gravity, 9.80665 m/s^2.
+    G,
+    /// m/s^2.
+    MPerS2,
+    /// cm/s^2 (gal).
+    CmPerS2,
+}
+
+impl Units {
+    /// The factor to m/s^2.
+    pub fn to_m_per_s2(self) -> f64 {
+        match self {
+            Units::G => crate::impact::STANDARD_GRAVITY,
+            Units::MPerS2 => 1.0,
+            Units::CmPerS2 => 0.01,
+        }
+    }
+}
+
+/// A text record that could not be read: the 1-based line and what is wrong.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("line {line}: {message}")]
+pub struct ParseError {
+    /// 1-based line number (0 if it concerns the whole file).
+    pub line: usize,
+    /// What is wrong, and what is expected.
+    pub message: String,
+}
+
+/// Text formats of ground-motion records.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Format {
+    /// PEER AT2: header with NPTS and DT, then values.
+    At2,
+    /// Two columns: time (s) and acceleration; uniform steps.
+    TimeAcc,
+    /// Acceleration values only, with the given time step (s).
+    Values {
+        /// Time step, s.
+        dt: f64,
+    },
+}
+
+/// A uniformly sampled ground acceleration: `acc[k]` (m/s^2) at time `t0 + k dt` (s). The ground is at
+/// rest at `t = 0`; before `t0` the acceleration ramps linearly from 0, and after the last sample it is 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Record {
+    name: String,
+    dt: f64,
+    t0: f64,
+    acc: Vec<f64>,
+}
+
+/// Peak values of a record.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Peaks {
+    /// Peak ground acceleration (absolute value), m/s^2.
+    pub pga: f64,
+    /// Signed acceleration at the peak, m/s^2.
+    pub pga_signed: f64,
+    /// Time of the peak acceleration, s.
+    pub pga_time: f64,
+    /// Peak ground velocity after linear baseline correction, m/s.
+    pub pgv: f64,
+    /// Peak ground displacement after linear baseline correction, m.
+    pub pgd: f64,
+}
+
+const EL_CENTRO_CSV: &str = include_str!("../../../../data/ground-motions/elcentro1940_ns.csv");
+
+impl Record {
+    /// A record named `name` with time step `dt` (s, > 0), first sample time `t0` (s, >= 0) and accelerations
+    /// in m/s^2 (at least one, all finite).
+    pub fn new(name: impl Into<String>, dt: f64, t0: f64, acc: Vec<f64>) -> Result<Self, Error> {
+        check("dt", dt, dt > 0.0, "dt > 0 (s)")?;
+        check("t0", t0, t0 >= 0.0, "t0 >= 0 (s)")?;
+        if acc.is_empty() {
+            return Err(Error::Parameter {
+                name: "npts",
+                value: 0.0,
+                allowed: "at least one acceleration value",
+            });
+        }
+        if let Some(bad) = acc.iter().find(|a| !a.is_finite()) {
+            return Err(Error::Parameter {
+                name: "acceleration",
+                value: *bad,
+                allowed: "finite values (m/s^2)",
+            });
+        }
+        Ok(Self {
+            name: name.into(),
+            dt,
+            t0,
+            acc,
+        })
+    }
+
+    /// Parses `text` in `format`, with accelerations in `units`.
+    pub fn parse(
+        name: &str,
+        text: &str,
+        format: Format,
+        units: Units,
+    ) -> Result<Self, RecordError> {
+        let f = units.to_m_per_s2();
+        let (t0, dt, values) = match format {
+            Format::At2 => {
+                let (dt, v) = parse::at2(text)?;
+                (dt, dt, v)
+            }
+            Format::TimeAcc => parse::time_acc(text)?,
+            Format::Values { dt } => {
+                check("dt", dt, dt > 0.0, "dt > 0 (s)")?;
+                (dt, dt, parse::values(text)?)
+            }
+        };
+        // AT2 and value files start one step after rest, so t0 = dt; a time column gives its own t0.
+        Ok(Self::new(
+            name,
+            dt,
+            t0,
+            values.into_iter().map(|a| a * f).collect(),
+        )?)
+    }
+
+    /// The 1940 El Centro N-S record shipped with the tool (Chopra's version; see
+    /// `data/ground-motions/PROVENANCE.md`): 1559 samples at 0.02 s from t = 0.02 s, PGA 0.3188 g.
+    pub fn el_centro_1940() -> Self {
+        let mut r = Self::parse("el-centro-1940", EL_CENTRO_CSV, Format::TimeAcc, Units::G)
+            .expect("the built-in record parses");
+        // The file adds a row (t = 0, a = 0) for the ground at rest; the record proper starts after it.
+        r.acc.remove(0);
+        r.t0 += r.dt;
+        r
+    }
+
+    /// A built-in record by name (`el-centro-1940`).
+    pub fn builtin(name: &str) -> Option<Self> {
+        (name == "el-centro-1940").then(Self::el_centro_1940)
+    }
+
+    /// The same record with accelerations multiplied by `scale` (finite).
+    pub fn scaled(mut self, scale: f64) -> Result<Self, Error> {
+        check("scale", scale, true, "a finite scale factor")?;
+        self.acc.iter_mut().for_each(|a| *a *= scale);
+        Ok(self)
+    }
+
+    /// Name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// Time step, s.
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+    /// Time of the first sample, s.
+    pub fn t0(&self) -> f64 {
+        self.t0
+    }
+    /// Number of samples.
+    pub fn npts(&self) -> usize {
+        self.acc.len()
+    }
+    /// Time of the last sample, s.
+    pub fn duration(&self) -> f64 {
+        self.t0 + (self.acc.len() - 1) as f64 * self.dt
+    }
+    /// Accelerations, m/s^2.
+    pub fn accelerations(&self) -> &[f64] {
+        &self.acc
+    }
+
+    /// Ground acceleration at time `t` (s), m/s^2: linear between samples, a ramp from rest before `t0`,
+    /// zero after the last sample.
+    pub fn at(&self, t: f64) -> f64 {
+        if t <= 0.0 || t > self.duration() {
+            return 0.0;
+        }
+        if t < self.t0 {
+            return self.acc[0] * t / self.t0;
+        }
+        let x = (t - self.t0) / self.dt;
+        let k = (x.floor() as usize).min(self.acc.len() - 1);
+        if k + 1 >= self.acc.len() {
+            return self.acc[k];
+        }
+        let f = x - k as f64;
+        self.acc[k] * (1.0 - f) + self.acc[k + 1] * f
+    }
+
+    /// Peak acceleration, and peak velocity and displacement after a linear baseline correction: a straight
+    /// line `c0 + c1 t`, fitted by least squares to the acceleration samples, is subtracted before integrating
+    /// from rest. Integration is exact for the piecewise-linear acceleration between samples. The correction
+    /// is for reporting only; analyses use the record as given.
+    pub fn peaks(&self) -> Peaks {
+        let n = self.acc.len();
+        let times = |k: usize| self.t0 + k as f64 * self.dt;
+        let (k_max, a_max) = self
+            .acc
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+            .map(|(k, a)| (k, *a))
+            .expect("a record has samples");
+        // Least-squares line through (t_k, a_k).
+        let nf = n as f64;
+        let (st, sa) = (0..n).fold((0.0, 0.0), |(st, sa), k| (st + times(k), sa + self.acc[k]));
+        let (mt, ma) = (st / nf, sa / nf);
+        let (sxx, sxy) = (0..n).fold((0.0, 0.0), |(sxx, sxy), k| {
+            let dt = times(k) - mt;
+            (sxx + dt * dt, sxy + dt * (self.acc[k] - ma))
+        });
+        let c1 = if sxx > 0.0 { sxy / sxx } else { 0.0 };
+        let c0 = ma - c1 * mt;
+        let corr = |k: usize| self.acc[k] - (c0 + c1 * times(k));
+        // From rest at t = 0: the ramp to the first sample, then the samples.
+        let (mut v, mut d, mut pgv, mut pgd) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        // Over a step of length h the acceleration is linear, the velocity quadratic and the displacement
+        // cubic: their extrema inside the step are where a = 0 and where v = 0.
+        let mut step = |a0: f64, a1: f64, h: f64| {
+            let j = (a1 - a0) / h;
+            let vel = |s: f64| v + a0 * s + j * s * s / 2.0;
+            let disp = |s: f64| d + v * s + a0 * s * s / 2.0 + j * s * s * s / 6.0;
+            if a0 * a1 < 0.0 {
+                pgv = pgv.max(vel(a0 / (a0 - a1) * h).abs());
+            }
+            // Roots of v + a0 s + j s^2 / 2 = 0 in (0, h).
+            let roots: [f64; 2] = if j == 0.0 {
+                [if a0 != 0.0 { -v / a0 } else { -1.0 }, -1.0]
+            } else {
+                let disc = a0 * a0 - 2.0 * j * v;
+                if disc < 0.0 {
+                    [-1.0, -1.0]
+                } else {
+                    let r = disc.sqrt();
+                    [(-a0 + r) / j, (-a0 - r) / j]
+                }
+            };
+            for s in roots {
+                if s > 0.0 && s < h {
+                    pgd = pgd.max(disp(s).abs());
+                }
+            }
+            let (v1, d1) = (vel(h), disp(h));
+            v = v1;
+            d = d1;
+            pgv = pgv.max(v.abs());
+            pgd = pgd.max(d.abs());
+        };
+        if self.t0 > 0.0 {
+            step(0.0, corr(0), self.t0);
+        }
+        for k in 1..n {
+            step(corr(k - 1), corr(k), self.dt);
+        }
+        Peaks {
+            pga: a_max.abs(),
+            pga_signed: a_max,
+            pga_time: times(k_max),
+            pgv,
+            pgd,
+        }
+    }
+}
+
+/// Why a record could not be built from text.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RecordError {
+    /// The text is malformed.
+    #[error(transparent)]
+    Parse(#[from] ParseError),
+    /// A value is out of range.
+    #[error(transparent)]
+    Value(#[from] Error),
+}
