@@ -160,7 +160,7 @@ pub fn time_acc(text: &str) -> Result<(f64, f64, Vec<f64>), ParseError> {
         return Err(err(text.lines().count().max(1), "fewer than 2 data rows"));
     }
     let dt = t[1] - t[0];
-    if !(dt > 0.0) {
+    if dt.is_nan() || dt <= 0.0 {
         return Err(err(
             line_of[1],
             format!("the time step {dt} s is not positive"),
