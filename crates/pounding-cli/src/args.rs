@@ -25,11 +25,62 @@ pub enum Command {
     Calibrate(CalibrateArgs),
     /// A ball dropped from a height onto a rigid slab of the same material (gravity acts during contact).
     Drop(DropArgs),
+    /// Ground-motion records.
+    Record {
+        #[command(subcommand)]
+        cmd: RecordCmd,
+    },
     /// Reproductions of the seed paper's tables.
     Paper {
         #[command(subcommand)]
         table: PaperTable,
     },
+}
+
+#[derive(Subcommand, Debug)]
+pub enum RecordCmd {
+    /// npts, dt, duration, PGA, PGV and PGD (PGV, PGD after a linear baseline correction) of a record.
+    Info(RecordArgs),
+}
+
+/// Where a ground motion comes from and how to read it.
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct RecordArgs {
+    /// A record file, or a built-in record: el-centro-1940.
+    pub file: String,
+    /// File format [default: at2 for *.at2 files, time-acc otherwise].
+    #[arg(long, value_enum)]
+    pub format: Option<FormatArg>,
+    /// Time step of a `values` file, s.
+    #[arg(long)]
+    pub dt: Option<f64>,
+    /// Units of the accelerations in the file.
+    #[arg(long, value_enum, default_value_t = UnitsArg::G)]
+    pub units: UnitsArg,
+    /// Scale factor applied to the accelerations.
+    #[arg(long, default_value_t = 1.0)]
+    pub scale: f64,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum FormatArg {
+    At2,
+    TimeAcc,
+    Values,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum UnitsArg {
+    #[value(name = "g")]
+    G,
+    #[value(name = "m/s2")]
+    MPerS2,
+    #[value(name = "cm/s2")]
+    CmPerS2,
 }
 
 #[derive(Subcommand, Debug)]

@@ -1,12 +1,16 @@
 //! The commands: validated inputs in, library calls, reports out.
 
-use crate::args::{CalibrateArgs, Command, DropArgs, ImpactArgs, ModelArgs, PaperTable};
+use crate::args::{
+    CalibrateArgs, Command, DropArgs, FormatArg, ImpactArgs, ModelArgs, PaperTable, RecordArgs,
+    RecordCmd, UnitsArg,
+};
 use crate::output::{fmt_num, history_csv, num, write_atomic, Report};
 use crate::CliError;
 use pounding::contact::{
     hertz_max_penetration, AlphaRule, ContactModel, Damping, DampingParameter, Model, Reading,
     Tension, MODELS,
 };
+use pounding::ground_motion::{Format, Record, Units};
 use pounding::impact::{
     delivered_e, exact, simulate, BallDrop, ImpactOptions, ImpactResult, ImpactSetup, TwoBodies,
 };
@@ -20,6 +24,9 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Impact(a) => impact(&a),
         Command::Calibrate(a) => calibrate(&a),
         Command::Drop(a) => drop(&a),
+        Command::Record {
+            cmd: RecordCmd::Info(a),
+        } => record_info(&a),
         Command::Paper { table } => match table {
             PaperTable::Table1 { json } => table1(json),
             PaperTable::Table2 { json } => table2(json),
@@ -420,5 +427,80 @@ fn table2(json: bool) -> Result<(), CliError> {
         );
     }
     println!("\nThe seed's Table 2 compares against an experiment whose inputs it does not give; see docs/paper-reproduction.md.");
+    Ok(())
+}
+
+/// Loads the ground motion `a` describes: a built-in record by name, or a file in the given format.
+pub fn load_record(a: &RecordArgs) -> Result<Record, CliError> {
+    let record = match Record::builtin(&a.file) {
+        Some(r) => r,
+        None => {
+            let path = Path::new(&a.file);
+            let text = std::fs::read_to_string(path).map_err(|e| {
+                input(format!(
+                    "cannot read record file {}: {e} (built-in records: el-centro-1940)",
+                    path.display()
+                ))
+            })?;
+            let is_at2 = path
+                .extension()
+                .is_some_and(|x| x.eq_ignore_ascii_case("at2"));
+            let format = match (a.format, a.dt) {
+                (Some(FormatArg::Values), Some(dt)) => Format::Values { dt },
+                (Some(FormatArg::Values), None) => {
+                    return Err(input("--format values needs --dt (the time step, s)"))
+                }
+                (Some(FormatArg::At2), _) => Format::At2,
+                (Some(FormatArg::TimeAcc), _) => Format::TimeAcc,
+                (None, _) if is_at2 => Format::At2,
+                (None, _) => Format::TimeAcc,
+            };
+            if a.dt.is_some() && !matches!(format, Format::Values { .. }) {
+                return Err(input(
+                    "--dt applies to --format values only (other formats carry their time step)",
+                ));
+            }
+            let units = match a.units {
+                UnitsArg::G => Units::G,
+                UnitsArg::MPerS2 => Units::MPerS2,
+                UnitsArg::CmPerS2 => Units::CmPerS2,
+            };
+            let name = path
+                .file_stem()
+                .and_then(|s| s.to_str())
+                .unwrap_or("record");
+            Record::parse(name, &text, format, units).map_err(|e| match e {
+                pounding::ground_motion::RecordError::Parse(p) => {
+                    input(format!("{}: {p}", path.display()))
+                }
+                pounding::ground_motion::RecordError::Value(v) => CliError::from(v),
+            })?
+        }
+    };
+    Ok(record.scaled(a.scale)?)
+}
+
+fn record_info(a: &RecordArgs) -> Result<(), CliError> {
+    let r = load_record(a)?;
+    let p = r.peaks();
+    let g = pounding::impact::STANDARD_GRAVITY;
+    let mut rep = Report::default();
+    rep.add("record", r.name(), "")
+        .add("npts", r.npts(), "")
+        .add("dt", num(r.dt()), "s")
+        .add("t0", num(r.t0()), "s")
+        .add("duration", num(r.duration()), "s")
+        .add("pga", num(p.pga), "m/s^2")
+        .add("pga_g", num(p.pga / g), "g")
+        .add("pga_signed", num(p.pga_signed), "m/s^2")
+        .add("pga_time", num(p.pga_time), "s")
+        .add("pgv", num(p.pgv), "m/s")
+        .add("pgd", num(p.pgd), "m")
+        .add(
+            "baseline_correction",
+            "least-squares line removed from the acceleration before integrating (PGV, PGD only)",
+            "",
+        );
+    rep.print(a.json);
     Ok(())
 }

@@ -274,3 +274,21 @@ fn drop_uses_hertz_stiffness_and_gravity() {
     let table = json(&["paper", "table2"]);
     assert_eq!(table["rows"].as_array().unwrap().len(), 17);
 }
+
+#[test]
+fn record_info_of_the_builtin_and_of_bad_files() {
+    // PROVENANCE.md: 1559 samples at 0.02 s, PGA 0.3188 g at 2.04 s.
+    let v = json(&["record", "info", "el-centro-1940"]);
+    assert_eq!(v["npts"].as_u64(), Some(1559));
+    assert!((f(&v, "pga_g") - 0.3188).abs() < 5e-5 && (f(&v, "pga_time") - 2.04).abs() < 1e-9);
+    let dir = tmp("record");
+    let bad = dir.join("uneven.csv");
+    std::fs::write(&bad, "t,a\n0,0\n0.02,0.1\n0.05,0.2\n").unwrap();
+    let out = pounding(&["record", "info", bad.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        err.contains("uneven.csv: line 4: uneven time step") && err.trim_end().lines().count() == 1,
+        "{err}"
+    );
+}
