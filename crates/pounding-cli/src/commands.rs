@@ -7,8 +7,7 @@ use crate::args::{
 use crate::output::{fmt_num, history_csv, num, write_atomic, Report};
 use crate::CliError;
 use pounding::contact::{
-    hertz_max_penetration, AlphaRule, ContactModel, Damping, DampingParameter, Model, Reading,
-    Tension, MODELS,
+    AlphaRule, ContactModel, Damping, DampingParameter, Model, Reading, Tension, MODELS,
 };
 use pounding::ground_motion::{Format, Record, Units};
 use pounding::impact::{
@@ -229,18 +228,13 @@ fn calibrate(a: &CalibrateArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Stiffness for a drop: the Hertz `k_h` for `n = 3/2`; otherwise `k_h d_h^(3/2 - n)`, equal to the Hertz
-/// force at the elastic Hertz penetration `d_h` (for `n = 1` this is Muthukumar & DesRoches' `K_eff`).
-fn drop_stiffness(drop: &BallDrop, n: f64) -> f64 {
-    let k_h = drop.hertz_stiffness();
-    let d_h = hertz_max_penetration(1.0, 1.5, drop.mass(), drop.impact_velocity(), k_h);
-    k_h * d_h.powf(1.5 - n)
-}
-
 fn drop(a: &DropArgs) -> Result<(), CliError> {
     let drop = BallDrop::new(a.radius, a.youngs_modulus, a.poisson, a.density, a.height)?;
     let n = a.model.n.unwrap_or(a.model.model.info().default_n);
-    let s = contact(&a.model, drop_stiffness(&drop, n.max(f64::MIN_POSITIVE)))?;
+    let s = contact(
+        &a.model,
+        drop.equivalent_stiffness(n.max(f64::MIN_POSITIVE)),
+    )?;
     let setup = drop.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
@@ -348,10 +342,33 @@ fn table1(json: bool) -> Result<(), CliError> {
 }
 
 /// The documented concrete ball-drop example of `docs/paper-reproduction.md`.
-pub const TABLE2_EXAMPLE: (f64, f64, f64, f64, f64, f64) = (0.1, 30.0e9, 0.2, 2400.0, 0.5, 0.65);
+struct DropExample {
+    radius_m: f64,
+    youngs_modulus_pa: f64,
+    poisson: f64,
+    density_kg_per_m3: f64,
+    height_m: f64,
+    e: f64,
+}
+
+const TABLE2_EXAMPLE: DropExample = DropExample {
+    radius_m: 0.1,
+    youngs_modulus_pa: 30.0e9,
+    poisson: 0.2,
+    density_kg_per_m3: 2400.0,
+    height_m: 0.5,
+    e: 0.65,
+};
 
 fn table2(json: bool) -> Result<(), CliError> {
-    let (radius, youngs, nu, rho, height, e) = TABLE2_EXAMPLE;
+    let DropExample {
+        radius_m: radius,
+        youngs_modulus_pa: youngs,
+        poisson: nu,
+        density_kg_per_m3: rho,
+        height_m: height,
+        e,
+    } = TABLE2_EXAMPLE;
     let drop = BallDrop::new(radius, youngs, nu, rho, height)?;
     let setup = drop.setup();
     let mut rows = Vec::new();
@@ -359,7 +376,7 @@ fn table2(json: bool) -> Result<(), CliError> {
     variants.insert(3, (Model::KelvinVoigt, Tension::Clamp));
     for (model, tension) in variants {
         let n = model.info().default_n;
-        let k = drop_stiffness(&drop, n);
+        let k = drop.equivalent_stiffness(n);
         let run = |damping: Damping| -> Result<Option<ImpactResult>, CliError> {
             if damping == Damping::Exact && !model.is_damped() {
                 return Ok(None);

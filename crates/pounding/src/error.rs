@@ -46,3 +46,22 @@ pub enum Error {
         t: f64,
     },
 }
+
+/// `Ok(value)` if `ok` holds and `value` is finite, else a [`Error::Parameter`] naming it: the one
+/// validation used at the library's edges.
+pub(crate) fn check(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    allowed: &'static str,
+) -> Result<f64, Error> {
+    if ok && value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::Parameter {
+            name,
+            value,
+            allowed,
+        })
+    }
+}

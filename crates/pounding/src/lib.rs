@@ -15,7 +15,7 @@
 //!
 //! The library does no file or terminal I/O; the `pounding` command-line tool does.
 
-mod error;
+pub(crate) mod error;
 
 pub mod contact;
 pub mod ground_motion;

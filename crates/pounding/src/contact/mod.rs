@@ -25,6 +25,7 @@ mod model;
 pub use law::{ForceLaw, Phase, Turn};
 pub use model::{Family, Formula, Model, ModelInfo, MODELS};
 
+use crate::error::check;
 use crate::Error;
 
 /// May the contact force become tensile (attractive) late in restitution?
@@ -131,23 +132,6 @@ pub struct ContactModel {
     tension: Tension,
     max_penetration: Option<f64>,
     yield_ratio: f64,
-}
-
-pub(crate) fn check(
-    name: &'static str,
-    value: f64,
-    ok: bool,
-    allowed: &'static str,
-) -> Result<f64, Error> {
-    if ok && value.is_finite() {
-        Ok(value)
-    } else {
-        Err(Error::Parameter {
-            name,
-            value,
-            allowed,
-        })
-    }
 }
 
 impl ContactModel {

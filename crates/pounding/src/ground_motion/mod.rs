@@ -6,7 +6,7 @@
 
 pub mod parse;
 
-use crate::contact::check;
+use crate::error::check;
 use crate::Error;
 
 /// Units of the accelerations in a file.

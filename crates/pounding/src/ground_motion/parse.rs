@@ -150,9 +150,8 @@ pub fn time_acc(text: &str) -> Result<(f64, f64, Vec<f64>), ParseError> {
                     ),
                 ))
             }
-            Err(e) if t.is_empty() && toks.iter().all(|s| s.parse::<f64>().is_err()) => {
-                let _ = e; // a header line before the data
-            }
+            // A line with no number at all, before the data, is a header.
+            Err(_) if t.is_empty() && toks.iter().all(|s| s.parse::<f64>().is_err()) => {}
             Err(e) => return Err(e),
         }
     }

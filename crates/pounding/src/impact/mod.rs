@@ -11,7 +11,7 @@ mod simulate;
 
 pub use simulate::simulate;
 
-use crate::contact::check;
+use crate::error::check;
 use crate::Error;
 
 /// Standard gravity, m/s^2.
@@ -147,6 +147,22 @@ impl BallDrop {
     pub fn hertz_stiffness(&self) -> f64 {
         let e_star = self.youngs_modulus / (2.0 * (1.0 - self.poisson * self.poisson));
         4.0 / 3.0 * e_star * self.radius.sqrt()
+    }
+
+    /// Stiffness (N/m^n) of a force law of exponent `n` equivalent to the Hertz contact: `k_h` for `n = 3/2`,
+    /// otherwise `k_h d_h^(3/2 - n)`, the same force as Hertz at the elastic Hertz penetration `d_h` (for
+    /// `n = 1` this is Muthukumar & DesRoches' effective stiffness `K_eff`). Our choice: the seed does not say
+    /// which linear stiffness it used.
+    pub fn equivalent_stiffness(&self, n: f64) -> f64 {
+        let k_h = self.hertz_stiffness();
+        let d_h = crate::contact::hertz_max_penetration(
+            1.0,
+            1.5,
+            self.mass(),
+            self.impact_velocity(),
+            k_h,
+        );
+        k_h * d_h.powf(1.5 - n)
     }
 
     /// Impact velocity `sqrt(2 g h)`, m/s.

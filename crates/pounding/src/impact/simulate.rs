@@ -297,8 +297,7 @@ pub fn simulate(
                 dp.reset(&ode, te, &ye, h);
             }
             Some(Event::Separation | Event::ZeroForce) => {
-                let (_, peak_force) = peak.finish(law);
-                let time_of_peak_force = peak.best.0;
+                let (time_of_peak_force, peak_force) = peak.finish(law);
                 return Ok(ImpactResult {
                     e_post: -ye[1] / v_i,
                     peak_force,
