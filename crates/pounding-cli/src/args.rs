@@ -25,6 +25,8 @@ pub enum Command {
     Calibrate(CalibrateArgs),
     /// A ball dropped from a height onto a rigid slab of the same material (gravity acts during contact).
     Drop(DropArgs),
+    /// Time-history analysis of pounding between adjacent buildings, as described by a scenario file.
+    Run(RunArgs),
     /// Ground-motion records.
     Record {
         #[command(subcommand)]
@@ -35,6 +37,24 @@ pub enum Command {
         #[command(subcommand)]
         table: PaperTable,
     },
+}
+
+#[derive(Args, Debug)]
+pub struct RunArgs {
+    /// Scenario file (TOML): ground motion, buildings left to right, contacts. See examples/.
+    pub scenario: std::path::PathBuf,
+    /// Folder for summary.json, response.csv, impacts.csv and energy.csv (created if missing).
+    #[arg(long, value_name = "DIR")]
+    pub out: std::path::PathBuf,
+    /// Relative tolerance of the integration, 1e-12 to 1e-3 (overrides [analysis] tolerance).
+    #[arg(long)]
+    pub tolerance: Option<f64>,
+    /// No progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Print the summary as JSON on stdout.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -253,14 +273,14 @@ impl From<TensionArg> for Tension {
     }
 }
 
-fn parse_model(s: &str) -> Result<Model, String> {
+pub fn parse_model(s: &str) -> Result<Model, String> {
     Model::from_name(s).ok_or_else(|| {
         let names: Vec<_> = Model::all().map(Model::name).collect();
         format!("unknown model; allowed: {}", names.join(", "))
     })
 }
 
-fn parse_alpha(s: &str) -> Result<AlphaRule, String> {
+pub fn parse_alpha(s: &str) -> Result<AlphaRule, String> {
     match s {
         "eq8" => Ok(AlphaRule::Eq8),
         "calibrate" => Ok(AlphaRule::Calibrate),

@@ -23,6 +23,7 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Impact(a) => impact(&a),
         Command::Calibrate(a) => calibrate(&a),
         Command::Drop(a) => drop(&a),
+        Command::Run(a) => crate::run::run(&a),
         Command::Record {
             cmd: RecordCmd::Info(a),
         } => record_info(&a),
@@ -33,50 +34,124 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
     }
 }
 
-fn input(msg: impl Into<String>) -> CliError {
+pub fn input(msg: impl Into<String>) -> CliError {
     CliError::Input(msg.into())
 }
 
-/// The contact specification of `a` with stiffness `k` (N/m^n).
-fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
+/// How options are spelled in messages: `--alpha 2` on the command line, `alpha = 2` in a scenario file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// Command-line options.
+    Flag,
+    /// Keys of a scenario file.
+    Key,
+}
+
+impl Style {
+    /// The option `key` (written with dashes).
+    pub fn name(self, key: &str) -> String {
+        match self {
+            Style::Flag => format!("--{key}"),
+            Style::Key => key.replace('-', "_"),
+        }
+    }
+
+    /// A library error in these words.
+    pub fn error(self, e: pounding::Error) -> CliError {
+        match (self, e) {
+            (
+                Style::Key,
+                pounding::Error::Parameter {
+                    name,
+                    value,
+                    allowed,
+                },
+            ) => input(format!("{name} = {value} is not allowed: {allowed}")),
+            (_, e) => CliError::from(e),
+        }
+    }
+}
+
+/// The contact specification of `a` with stiffness `k` (N/m^n), with messages in `style`.
+pub fn contact(a: &ModelArgs, k: f64, style: Style) -> Result<ContactModel, CliError> {
+    let name = |key: &str| style.name(key);
+    let lib = |e| style.error(e);
     let papi = a.model == Model::Papi;
     if a.alpha.is_some() && !papi {
         return Err(input(format!(
-            "--alpha applies to papi only, not to {}",
+            "{} applies to papi only, not to {}",
+            name("alpha"),
             a.model
         )));
     }
     if matches!(a.alpha, Some(AlphaRule::Given(_) | AlphaRule::Eq8))
         && matches!(a.damping, crate::args::DampingArg::Exact)
     {
-        return Err(input(
-            "--alpha conflicts with --damping exact (exact damping calibrates alpha); drop one",
-        ));
+        return Err(input(format!(
+            "{} conflicts with {} exact (exact damping calibrates alpha); drop one",
+            name("alpha"),
+            name("damping")
+        )));
     }
     if a.max_penetration.is_some() && a.model != Model::ImpactMaterial {
         return Err(input(format!(
-            "--max-penetration applies to impact-material only, not to {}",
+            "{} applies to impact-material only, not to {}",
+            name("max-penetration"),
             a.model
         )));
     }
-    let mut s = ContactModel::new(a.model, k, a.e)?;
+    let mut s = ContactModel::new(a.model, k, a.e).map_err(lib)?;
     if let Some(n) = a.n {
-        s = s.with_exponent(n)?;
+        s = s.with_exponent(n).map_err(lib)?;
     }
     s = s
         .with_damping(a.damping.into())
         .with_reading(a.reading.into())
-        .with_yield_ratio(a.yield_ratio)?;
+        .with_yield_ratio(a.yield_ratio)
+        .map_err(lib)?;
     if let Some(alpha) = a.alpha {
-        s = s.with_alpha(alpha)?;
+        s = s.with_alpha(alpha).map_err(lib)?;
     }
     if let Some(t) = a.tension {
         s = s.with_tension(t.into());
     }
     if let Some(d_m) = a.max_penetration {
-        s = s.with_max_penetration(d_m)?;
+        s = s.with_max_penetration(d_m).map_err(lib)?;
     }
     Ok(s)
+}
+
+/// One line describing a contact model and its damping: `papi, k = 2e9 N/m^1, e = 0.65, ...`.
+pub fn contact_label(s: &ContactModel, p: Option<DampingParameter>) -> String {
+    let mut text = format!(
+        "{}, k = {} N/m^{}, e = {}",
+        s.model().name(),
+        fmt_num(s.stiffness()),
+        fmt_num(s.exponent()),
+        fmt_num(s.restitution())
+    );
+    if s.model().is_damped() {
+        text.push_str(&format!(", damping {}", damping_name(s.damping())));
+        if s.model() == Model::Papi {
+            text.push_str(&format!(", {} reading", reading_name(s.reading())));
+        }
+        match p {
+            Some(DampingParameter::Papi { alpha, chi, chi_r }) => text.push_str(&format!(
+                " (alpha = {}, chi = {}, chi_r = {})",
+                fmt_num(alpha),
+                fmt_num(chi),
+                fmt_num(chi_r)
+            )),
+            Some(other) => {
+                if let Some((name, v)) = other.named() {
+                    text.push_str(&format!(" ({name} = {})", fmt_num(v)));
+                }
+            }
+            None => text.push_str(" (set per impact)"),
+        }
+    }
+    text.push_str(&format!(", tension {}", tension_name(s.tension())));
+    text
 }
 
 fn tension_name(t: Tension) -> &'static str {
@@ -168,7 +243,7 @@ fn m2_text(m2: f64) -> String {
 
 fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     let bodies = TwoBodies::new(a.m1, a.m2, a.v)?;
-    let s = contact(&a.model, a.k)?;
+    let s = contact(&a.model, a.k, Style::Flag)?;
     let setup = bodies.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
@@ -234,6 +309,7 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
     let s = contact(
         &a.model,
         drop.equivalent_stiffness(n.max(f64::MIN_POSITIVE)),
+        Style::Flag,
     )?;
     let setup = drop.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
@@ -449,10 +525,24 @@ fn table2(json: bool) -> Result<(), CliError> {
 
 /// Loads the ground motion `a` describes: a built-in record by name, or a file in the given format.
 pub fn load_record(a: &RecordArgs) -> Result<Record, CliError> {
-    let record = match Record::builtin(&a.file) {
+    load_record_from(&a.file, a.format, a.dt, a.units, a.scale, Style::Flag)
+}
+
+/// Loads a built-in record called `source`, or the file at `source` in `format` (default: at2 for
+/// `*.at2`, time-acc otherwise), with values in `units` multiplied by `scale`.
+pub fn load_record_from(
+    source: &str,
+    format: Option<FormatArg>,
+    dt: Option<f64>,
+    units: UnitsArg,
+    scale: f64,
+    style: Style,
+) -> Result<Record, CliError> {
+    let name = |k: &str| style.name(k);
+    let record = match Record::builtin(source) {
         Some(r) => r,
         None => {
-            let path = Path::new(&a.file);
+            let path = Path::new(source);
             let text = std::fs::read_to_string(path).map_err(|e| {
                 input(format!(
                     "cannot read record file {}: {e} (built-in records: el-centro-1940)",
@@ -462,39 +552,45 @@ pub fn load_record(a: &RecordArgs) -> Result<Record, CliError> {
             let is_at2 = path
                 .extension()
                 .is_some_and(|x| x.eq_ignore_ascii_case("at2"));
-            let format = match (a.format, a.dt) {
+            let format = match (format, dt) {
                 (Some(FormatArg::Values), Some(dt)) => Format::Values { dt },
                 (Some(FormatArg::Values), None) => {
-                    return Err(input("--format values needs --dt (the time step, s)"))
+                    return Err(input(format!(
+                        "{} values needs {} (the time step, s)",
+                        name("format"),
+                        name("dt")
+                    )))
                 }
                 (Some(FormatArg::At2), _) => Format::At2,
                 (Some(FormatArg::TimeAcc), _) => Format::TimeAcc,
                 (None, _) if is_at2 => Format::At2,
                 (None, _) => Format::TimeAcc,
             };
-            if a.dt.is_some() && !matches!(format, Format::Values { .. }) {
-                return Err(input(
-                    "--dt applies to --format values only (other formats carry their time step)",
-                ));
+            if dt.is_some() && !matches!(format, Format::Values { .. }) {
+                return Err(input(format!(
+                    "{} applies to {} values only (other formats carry their time step)",
+                    name("dt"),
+                    name("format")
+                )));
             }
-            let units = match a.units {
+            let units = match units {
                 UnitsArg::G => Units::G,
                 UnitsArg::MPerS2 => Units::MPerS2,
                 UnitsArg::CmPerS2 => Units::CmPerS2,
             };
-            let name = path
+            let stem = path
                 .file_stem()
                 .and_then(|s| s.to_str())
                 .unwrap_or("record");
-            Record::parse(name, &text, format, units).map_err(|e| match e {
+            Record::parse(stem, &text, format, units).map_err(|e| match e {
                 pounding::ground_motion::RecordError::Parse(p) => {
                     input(format!("{}: {p}", path.display()))
                 }
-                pounding::ground_motion::RecordError::Value(v) => CliError::from(v),
+                pounding::ground_motion::RecordError::Value(v) => style.error(v),
             })?
         }
     };
-    Ok(record.scaled(a.scale)?)
+    record.scaled(scale).map_err(|e| style.error(e))
 }
 
 fn record_info(a: &RecordArgs) -> Result<(), CliError> {

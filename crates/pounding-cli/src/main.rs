@@ -3,6 +3,8 @@
 mod args;
 mod commands;
 mod output;
+mod run;
+mod scenario;
 
 use clap::Parser;
 use std::process::ExitCode;

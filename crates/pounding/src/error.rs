@@ -13,6 +13,26 @@ pub enum Error {
         /// What is allowed, with the unit.
         allowed: &'static str,
     },
+    /// A named choice that is not one of those allowed (an unknown building, a floor that does not exist).
+    #[error("{name} = {value} is not allowed: {allowed}")]
+    Choice {
+        /// Parameter name.
+        name: &'static str,
+        /// Value given.
+        value: String,
+        /// What is allowed.
+        allowed: String,
+    },
+    /// A list whose length must match another's.
+    #[error("{name} has {len} values, but there are {expected} floors: give one per floor")]
+    Length {
+        /// Name of the list.
+        name: &'static str,
+        /// Its length.
+        len: usize,
+        /// The length required.
+        expected: usize,
+    },
     /// Exact calibration failed.
     #[error("cannot calibrate {what} for e = {e}: {reason}")]
     Calibration {

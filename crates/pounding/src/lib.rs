@@ -11,16 +11,20 @@
 //!   the exact relations it must agree with.
 //! - [`integrate`]: the adaptive Dormand–Prince stepper with dense output and Brent's root finder.
 //! - [`ground_motion`]: records (AT2, time/acceleration, values; built-in El Centro 1940), PGA/PGV/PGD.
+//! - [`structure`]: lumped-mass shear buildings, their modes and Rayleigh damping.
+//! - [`analysis`]: time-history analysis of pounding between adjacent buildings under a ground motion.
 //! - [`paper`]: the reproduction of the seed's comparison (its Table 1).
 //!
 //! The library does no file or terminal I/O; the `pounding` command-line tool does.
 
 pub(crate) mod error;
 
+pub mod analysis;
 pub mod contact;
 pub mod ground_motion;
 pub mod impact;
 pub mod integrate;
 pub mod paper;
+pub mod structure;
 
 pub use error::Error;

@@ -106,6 +106,20 @@ impl Dense {
         }
     }
 
+    /// Interpolated component `i` at time `t` (in the step): the cheap form of [`Self::eval`] when only a
+    /// few components are needed.
+    #[inline]
+    pub fn component(&self, t: f64, i: usize) -> f64 {
+        let th = if self.h == 0.0 {
+            0.0
+        } else {
+            (t - self.t0) / self.h
+        };
+        let th1 = 1.0 - th;
+        self.r[0][i]
+            + th * (self.r[1][i] + th1 * (self.r[2][i] + th * (self.r[3][i] + th1 * self.r[4][i])))
+    }
+
     /// Copies another interpolant into this one without allocating.
     pub fn copy_from(&mut self, other: &Dense) {
         self.t0 = other.t0;
@@ -214,9 +228,20 @@ impl DormandPrince {
     /// Takes one accepted step (retrying with smaller steps as needed). Afterwards [`Self::t`],
     /// [`Self::y`] and [`Self::dense`] describe the end of the step.
     pub fn step<S: OdeSystem>(&mut self, sys: &S) -> Result<(), Error> {
+        self.step_until(sys, f64::INFINITY)
+    }
+
+    /// Like [`Self::step`], but never steps past `t_stop`: a step that would reach it (or stop just short
+    /// of it) ends exactly at `t_stop`. Used at breakpoints where the right-hand side has a kink, such as the
+    /// samples of a piecewise-linear ground motion, so that no step straddles one. The step size proposed
+    /// before the cut is kept for the next step.
+    pub fn step_until<S: OdeSystem>(&mut self, sys: &S, t_stop: f64) -> Result<(), Error> {
         let (t, n) = (self.t, self.n);
+        let h_wanted = self.h;
         loop {
-            let h = self.h;
+            // Within 1 % of a step of the stop, take it in one go instead of leaving a sliver.
+            let cut = t + 1.01 * self.h >= t_stop;
+            let h = if cut { t_stop - t } else { self.h };
             if !(h.is_finite() && h > 0.0) || t + h == t {
                 return Err(Error::StepSizeUnderflow { t });
             }
@@ -294,11 +319,14 @@ impl DormandPrince {
                             + D6 * k[5][i]
                             + D7 * k[6][i]);
                 }
-                self.t = t + h;
+                self.t = if cut { t_stop } else { t + h };
                 std::mem::swap(&mut self.y, &mut self.ynew);
                 // First-same-as-last: the last stage is the first of the next step.
                 self.k.swap(0, 6);
                 self.h = (h * fac).min(self.h_max);
+                if cut {
+                    self.h = self.h.max(h_wanted.min(self.h_max));
+                }
                 self.accepted += 1;
                 return Ok(());
             }

@@ -1,0 +1,386 @@
+//! `pounding run`: a scenario file in; modal properties and a summary on the terminal; summary.json,
+//! response.csv, impacts.csv and energy.csv in the output folder.
+
+use crate::args::RunArgs;
+use crate::commands::{contact_label, input};
+use crate::output::{fmt_num, num, write_atomic};
+use crate::scenario::{load, Loaded};
+use crate::CliError;
+use pounding::analysis::{Results, Scenario};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::io::IsTerminal;
+use std::path::Path;
+
+pub fn run(a: &RunArgs) -> Result<(), CliError> {
+    let Loaded {
+        mut scenario,
+        record_source,
+        scale,
+    } = load(&a.scenario)?;
+    if let Some(t) = a.tolerance {
+        scenario = scenario
+            .with_tolerance(t)
+            .map_err(|e| crate::commands::Style::Flag.error(e))?;
+    }
+    if a.out.is_file() {
+        return Err(input(format!(
+            "--out {} is a file; give a folder (it is created if missing)",
+            a.out.display()
+        )));
+    }
+    if !a.json {
+        print_setup(&scenario, &a.scenario, &record_source, scale);
+    }
+
+    let bar = (!a.quiet && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(1000);
+        b.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{spinner} [{bar:40}] t = {msg} ({elapsed}, about {eta} left)",
+            )
+            .expect("a valid template")
+            .progress_chars("=> "),
+        );
+        b
+    });
+    let results = scenario.run_with(&mut |p| {
+        if let Some(b) = &bar {
+            b.set_position((1000.0 * p.t / p.duration) as u64);
+            b.set_message(format!("{:.2} s, {} impacts", p.t, p.impacts));
+        }
+    });
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let results = results.map_err(|e| CliError::Input(format!("analysis failed: {e}")))?;
+
+    let summary = summary_json(&scenario, &results, &a.scenario, &record_source, scale);
+    // Everything is formatted before the first file is written.
+    let files = [
+        (
+            "summary.json",
+            serde_json::to_string_pretty(&summary).expect("JSON") + "\n",
+        ),
+        ("response.csv", response_csv(&scenario, &results)),
+        ("impacts.csv", impacts_csv(&scenario, &results)),
+        ("energy.csv", energy_csv(&results)),
+    ];
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
+    for (name, text) in &files {
+        let p = a.out.join(name);
+        write_atomic(&p, text.as_bytes())
+            .map_err(|e| CliError::Io(format!("cannot write {}: {e}", p.display())))?;
+    }
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&summary).expect("JSON"));
+    } else {
+        print_results(&scenario, &results);
+        println!(
+            "\nwrote {}: summary.json, response.csv, impacts.csv, energy.csv",
+            a.out.display()
+        );
+    }
+    Ok(())
+}
+
+fn link_name(s: &Scenario, l: usize) -> String {
+    let link = &s.links()[l];
+    format!(
+        "{}|{}",
+        s.buildings()[link.left].name,
+        s.buildings()[link.right].name
+    )
+}
+
+fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
+    let rec = s.record();
+    let p = rec.peaks();
+    println!("scenario  {}", file.display());
+    println!(
+        "record    {source} x {scale}: {} samples at {} s, PGA {} m/s^2 ({} g) at {} s",
+        rec.npts(),
+        fmt_num(rec.dt()),
+        fmt_num(round(p.pga, 4)),
+        fmt_num(round(p.pga / pounding::impact::STANDARD_GRAVITY, 4)),
+        fmt_num(p.pga_time)
+    );
+    println!(
+        "analysis  {} s, output every {} s, tolerance {:e}",
+        fmt_num(s.duration()),
+        fmt_num(s.output_dt()),
+        s.tolerance()
+    );
+    for b in s.buildings() {
+        let st = &b.structure;
+        let modes = st.modes();
+        let part = modes.participation(st.masses());
+        let m_tot = st.total_mass();
+        println!(
+            "\nbuilding {:?}: {} storeys, {} kg, height {} m, damping {} % (Rayleigh, modes 1 and 2)",
+            b.name,
+            st.storeys(),
+            fmt_num(m_tot),
+            fmt_num(st.elevations().last().copied().unwrap_or(0.0)),
+            fmt_num(100.0 * st.damping_ratio())
+        );
+        println!("  mode  period_s  damping_%  mass_%  shape (floor 1 up, roof = 1)");
+        let shapes = modes.shapes_roof_normalised();
+        for (r, t) in modes.periods().iter().enumerate().take(6) {
+            let shape: Vec<String> = shapes[r].iter().map(|x| format!("{x:.3}")).collect();
+            println!(
+                "  {:>4}  {:>8.4}  {:>9.2}  {:>6.1}  {}",
+                r + 1,
+                t,
+                100.0 * st.modal_damping(modes.omega[r]),
+                100.0 * part[r].1 / m_tot,
+                shape.join(" ")
+            );
+        }
+        if st.storeys() > 6 {
+            println!("  (modes 7 to {} in summary.json)", st.storeys());
+        }
+    }
+    for (l, link) in s.links().iter().enumerate() {
+        let floors: Vec<String> = link
+            .floors
+            .iter()
+            .map(|(i, j)| format!("{i}-{j}"))
+            .collect();
+        println!(
+            "\ncontact {}: gap {} m at floors {}, {}",
+            link_name(s, l),
+            fmt_num(link.gap),
+            floors.join(", "),
+            contact_label(link.contact.spec(), link.contact.parameter())
+        );
+    }
+    println!();
+}
+
+fn round(x: f64, digits: i32) -> f64 {
+    let f = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
+    (x * f).round() / f
+}
+
+fn print_results(s: &Scenario, r: &Results) {
+    println!(
+        "building    floor  peak_displacement_m  at_s     storey  peak_drift_m  drift_ratio_%"
+    );
+    for (b, resp) in s.buildings().iter().zip(&r.buildings) {
+        let h = b.structure.heights();
+        for (f, h_f) in h.iter().enumerate() {
+            println!(
+                "{:<10}  {:>5}  {:>19.6}  {:>7.3}  {:>6}  {:>12.6}  {:>13.3}",
+                b.name,
+                f + 1,
+                resp.peak_displacement[f],
+                resp.time_of_peak_displacement[f],
+                f + 1,
+                resp.peak_drift[f],
+                100.0 * resp.peak_drift[f] / h_f
+            );
+        }
+    }
+    if !s.links().is_empty() {
+        println!(
+            "\ncontact              impacts  peak_force_N  max_penetration_m  dissipated_energy_J"
+        );
+        for (l, lr) in r.links.iter().enumerate() {
+            println!(
+                "{:<20} {:>7}  {:>12.5e}  {:>17.4e}  {:>19.5e}",
+                link_name(s, l),
+                lr.impacts,
+                lr.peak_force,
+                lr.max_penetration,
+                lr.dissipated_energy
+            );
+        }
+        let ended: Vec<f64> = r.impacts.iter().filter_map(|i| i.e_post).collect();
+        if !ended.is_empty() {
+            let (lo, hi) = ended
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), e| {
+                    (a.min(*e), b.max(*e))
+                });
+            println!("e_post of the impacts: {lo:.4} to {hi:.4} (see impacts.csv)");
+        }
+    }
+    let e = &r.energy;
+    println!(
+        "\nenergy at the end, J: input {:.6e} = kinetic {:.4e} + strain {:.4e} + damping {:.6e} + contact {:.6e}",
+        e.input, e.kinetic, e.strain, e.damping, e.contact
+    );
+    println!(
+        "energy balance error: {:.2e} (largest over the run, relative to the largest energy)",
+        e.relative_error
+    );
+    println!(
+        "integration: {} steps ({} rejected), {} contact events",
+        r.statistics.steps, r.statistics.rejected, r.statistics.events
+    );
+}
+
+fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64) -> Value {
+    let rec = s.record();
+    let pk = rec.peaks();
+    let buildings: Vec<Value> = s
+        .buildings()
+        .iter()
+        .zip(&r.buildings)
+        .map(|(b, resp)| {
+            let st = &b.structure;
+            let modes = st.modes();
+            let part = modes.participation(st.masses());
+            json!({
+                "name": b.name,
+                "storeys": st.storeys(),
+                "periods": modes.periods().into_iter().map(num).collect::<Vec<_>>(),
+                "modal_damping_ratios": modes.omega.iter().map(|w| num(st.modal_damping(*w))).collect::<Vec<_>>(),
+                "mode_shapes": modes.shapes_roof_normalised().into_iter().map(|s| s.into_iter().map(num).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                "effective_modal_mass_ratios": part.iter().map(|p| num(p.1 / st.total_mass())).collect::<Vec<_>>(),
+                "peak_displacement": resp.peak_displacement.iter().copied().map(num).collect::<Vec<_>>(),
+                "time_of_peak_displacement": resp.time_of_peak_displacement.iter().copied().map(num).collect::<Vec<_>>(),
+                "peak_drift": resp.peak_drift.iter().copied().map(num).collect::<Vec<_>>(),
+                "peak_drift_ratio": resp.peak_drift.iter().zip(st.heights()).map(|(d, h)| num(d / h)).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    let contacts: Vec<Value> = s
+        .links()
+        .iter()
+        .zip(&r.links)
+        .map(|(link, lr)| {
+            let spec = link.contact.spec();
+            let param = link.contact.parameter().and_then(|p| p.named());
+            json!({
+                "between": [s.buildings()[link.left].name, s.buildings()[link.right].name],
+                "gap": num(link.gap),
+                "floors": link.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
+                "model": spec.model().name(),
+                "e": num(spec.restitution()),
+                "stiffness": num(spec.stiffness()),
+                "exponent": num(spec.exponent()),
+                "damping_parameter": param.map(|(n, v)| json!({ "name": n, "value": num(v) })),
+                "impacts": lr.impacts,
+                "peak_force": num(lr.peak_force),
+                "max_penetration": num(lr.max_penetration),
+                "dissipated_energy": num(lr.dissipated_energy),
+            })
+        })
+        .collect();
+    let e = &r.energy;
+    json!({
+        "scenario": file.display().to_string(),
+        "record": {
+            "source": source,
+            "scale": num(scale),
+            "npts": rec.npts(),
+            "dt": num(rec.dt()),
+            "pga": num(pk.pga),
+        },
+        "duration": num(s.duration()),
+        "output_dt": num(s.output_dt()),
+        "tolerance": num(s.tolerance()),
+        "buildings": buildings,
+        "contacts": contacts,
+        "energy": {
+            "input": num(e.input),
+            "kinetic": num(e.kinetic),
+            "strain": num(e.strain),
+            "structural_damping": num(e.damping),
+            "contact": num(e.contact),
+        },
+        "energy_balance_error": num(e.relative_error),
+        "statistics": {
+            "steps": r.statistics.steps,
+            "rejected_steps": r.statistics.rejected,
+            "contact_events": r.statistics.events,
+        },
+        "units": {
+            "periods": "s", "mode_shapes": "roof = 1", "peak_displacement": "m", "time_of_peak_displacement": "s",
+            "peak_drift": "m", "peak_drift_ratio": "drift / storey height", "gap": "m", "stiffness": "N/m^exponent",
+            "peak_force": "N", "max_penetration": "m", "dissipated_energy": "J", "energy": "J",
+            "energy_balance_error": "max |input - kinetic - strain - damping - contact| / max energy",
+            "duration": "s", "output_dt": "s", "record.dt": "s", "record.pga": "m/s^2",
+        },
+    })
+}
+
+fn response_csv(s: &Scenario, r: &Results) -> String {
+    let h = &r.histories;
+    let mut out = String::from("time_s,ground_acceleration_m_per_s2");
+    for b in s.buildings() {
+        for f in 1..=b.structure.storeys() {
+            let _ = write!(out, ",{}_floor{f}_displacement_m", b.name);
+        }
+    }
+    for (l, link) in s.links().iter().enumerate() {
+        for (i, j) in &link.floors {
+            let _ = write!(out, ",{}_floors{i}-{j}_force_N", link_name(s, l));
+        }
+    }
+    out.push('\n');
+    for k in 0..h.t.len() {
+        let _ = write!(out, "{},{:e}", fmt_num(h.t[k]), h.ground_acceleration[k]);
+        for b in &h.displacement {
+            for col in b {
+                let _ = write!(out, ",{:e}", col[k]);
+            }
+        }
+        for l in &h.force {
+            for col in l {
+                let _ = write!(out, ",{:e}", col[k]);
+            }
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn impacts_csv(s: &Scenario, r: &Results) -> String {
+    let mut out = String::from(
+        "time_s,contact,floor_left,floor_right,v_i_m_per_s,e_post,peak_force_N,duration_s,dissipated_energy_J,max_penetration_m,ended\n",
+    );
+    for i in &r.impacts {
+        let _ = writeln!(
+            out,
+            "{:e},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{}",
+            i.time,
+            link_name(s, i.link),
+            i.floors.0,
+            i.floors.1,
+            i.v_i,
+            i.e_post.map_or(String::new(), |e| format!("{e:e}")),
+            i.peak_force,
+            i.duration,
+            i.dissipated_energy,
+            i.max_penetration,
+            i.e_post.is_some()
+        );
+    }
+    out
+}
+
+fn energy_csv(r: &Results) -> String {
+    let h = &r.histories;
+    let mut out = String::from(
+        "time_s,input_J,kinetic_J,strain_J,structural_damping_J,contact_J,balance_error_J\n",
+    );
+    for k in 0..h.t.len() {
+        let e: Vec<f64> = h.energy.iter().map(|c| c[k]).collect();
+        let _ = writeln!(
+            out,
+            "{},{:e},{:e},{:e},{:e},{:e},{:e}",
+            fmt_num(h.t[k]),
+            e[0],
+            e[1],
+            e[2],
+            e[3],
+            e[4],
+            e[0] - e[1] - e[2] - e[3] - e[4]
+        );
+    }
+    out
+}

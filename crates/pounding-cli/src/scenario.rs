@@ -1,0 +1,374 @@
+//! Scenario files (TOML): parsed with serde, then validated once into the library's types. Every error is
+//! one line that names the file, the line of the entry and the key.
+
+use crate::args::{parse_alpha, parse_model, DampingArg, FormatArg, ModelArgs, ReadingArg};
+use crate::args::{TensionArg, UnitsArg};
+use crate::commands::{contact, load_record_from, Style};
+use crate::CliError;
+use clap::ValueEnum;
+use pounding::analysis::{Building, Scenario};
+use pounding::structure::ShearBuilding;
+use serde::Deserialize;
+use std::path::Path;
+use toml::Spanned;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct File {
+    ground_motion: Spanned<GroundMotion>,
+    #[serde(default)]
+    analysis: Option<Spanned<Analysis>>,
+    #[serde(default)]
+    building: Vec<Spanned<BuildingEntry>>,
+    #[serde(default)]
+    contact: Vec<Spanned<ContactEntry>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct GroundMotion {
+    record: Option<String>,
+    file: Option<String>,
+    format: Option<String>,
+    dt: Option<f64>,
+    #[serde(default = "default_units")]
+    units: String,
+    #[serde(default = "one")]
+    scale: f64,
+}
+
+fn default_units() -> String {
+    "g".into()
+}
+fn one() -> f64 {
+    1.0
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct Analysis {
+    duration: Option<f64>,
+    output_dt: Option<f64>,
+    tolerance: Option<f64>,
+    min_impact_velocity: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BuildingEntry {
+    name: String,
+    masses: Vec<f64>,
+    stiffnesses: Vec<f64>,
+    heights: Vec<f64>,
+    #[serde(default = "five_percent")]
+    damping_ratio: f64,
+}
+
+fn five_percent() -> f64 {
+    0.05
+}
+
+/// Alpha is a number or a word.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum Alpha {
+    Number(f64),
+    Word(String),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ContactEntry {
+    between: Vec<String>,
+    gap: f64,
+    #[serde(default = "papi")]
+    model: String,
+    #[serde(default = "concrete_e")]
+    e: f64,
+    stiffness: f64,
+    exponent: Option<f64>,
+    damping: Option<String>,
+    alpha: Option<Alpha>,
+    reading: Option<String>,
+    tension: Option<String>,
+    floors: Option<Vec<Vec<usize>>>,
+    max_penetration: Option<f64>,
+    yield_ratio: Option<f64>,
+}
+
+fn papi() -> String {
+    "papi".into()
+}
+fn concrete_e() -> f64 {
+    0.65
+}
+
+/// A loaded scenario, with what the report needs to say where it came from.
+pub struct Loaded {
+    pub scenario: Scenario,
+    /// The ground-motion source as given (built-in name or path).
+    pub record_source: String,
+    pub scale: f64,
+}
+
+/// Where in the file: `path:line`.
+struct At<'a> {
+    path: &'a Path,
+    text: &'a str,
+}
+
+impl At<'_> {
+    fn line(&self, span: std::ops::Range<usize>) -> usize {
+        self.text[..span.start.min(self.text.len())]
+            .bytes()
+            .filter(|b| *b == b'\n')
+            .count()
+            + 1
+    }
+    fn err(&self, span: std::ops::Range<usize>, msg: impl std::fmt::Display) -> CliError {
+        CliError::Input(format!(
+            "{}:{}: {msg}",
+            self.path.display(),
+            self.line(span)
+        ))
+    }
+    /// A library error about the entry at `span`, in the file's words (`key = value`).
+    fn lib(&self, span: std::ops::Range<usize>, e: pounding::Error) -> CliError {
+        self.lib_in(span, "", e)
+    }
+    /// The same, naming the entry (`what: ...`).
+    fn lib_in(&self, span: std::ops::Range<usize>, what: &str, e: pounding::Error) -> CliError {
+        let msg = match e {
+            pounding::Error::Parameter {
+                name,
+                value,
+                allowed,
+            } => format!("{name} = {value} is not allowed: {allowed}"),
+            other => other.to_string(),
+        };
+        if what.is_empty() {
+            self.err(span, msg)
+        } else {
+            self.err(span, format!("{what}: {msg}"))
+        }
+    }
+}
+
+fn word<T: ValueEnum>(
+    at: &At,
+    span: std::ops::Range<usize>,
+    key: &str,
+    v: &str,
+) -> Result<T, CliError> {
+    T::from_str(v, false).map_err(|_| {
+        let allowed: Vec<String> = T::value_variants()
+            .iter()
+            .filter_map(|x| x.to_possible_value().map(|p| p.get_name().to_string()))
+            .collect();
+        at.err(
+            span,
+            format!(
+                "{key} = {v:?} is not allowed: one of {}",
+                allowed.join(", ")
+            ),
+        )
+    })
+}
+
+/// Reads and validates the scenario file at `path`.
+pub fn load(path: &Path) -> Result<Loaded, CliError> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        CliError::Input(format!("cannot read scenario file {}: {e}", path.display()))
+    })?;
+    let at = At { path, text: &text };
+    let file: File = toml::from_str(&text).map_err(|e| {
+        let msg = e.message().trim().replace('\n', " ");
+        match e.span() {
+            Some(span) => at.err(span, msg),
+            None => CliError::Input(format!("{}: {msg}", path.display())),
+        }
+    })?;
+
+    // Ground motion; a file is relative to the scenario's folder.
+    let gm_span = file.ground_motion.span();
+    let gm = file.ground_motion.into_inner();
+    let source = match (&gm.record, &gm.file) {
+        (Some(r), None) => r.clone(),
+        (None, Some(f)) => {
+            let p = Path::new(f);
+            if p.is_relative() {
+                path.parent()
+                    .unwrap_or(Path::new("."))
+                    .join(p)
+                    .to_string_lossy()
+                    .into_owned()
+            } else {
+                f.clone()
+            }
+        }
+        _ => return Err(at.err(
+            gm_span,
+            "[ground_motion] needs exactly one of record = \"el-centro-1940\" or file = \"path\"",
+        )),
+    };
+    if gm.record.is_some() && (gm.format.is_some() || gm.dt.is_some()) {
+        return Err(at.err(
+            gm_span,
+            "format and dt apply to a record file (file = ...), not to a built-in record",
+        ));
+    }
+    let format: Option<FormatArg> = gm
+        .format
+        .as_deref()
+        .map(|f| word(&at, gm_span.clone(), "format", f))
+        .transpose()?;
+    let units: UnitsArg = word(&at, gm_span.clone(), "units", &gm.units)?;
+    let record = load_record_from(&source, format, gm.dt, units, gm.scale, Style::Key)
+        .map_err(|e| match e {
+            CliError::Input(m) => {
+                if gm.record.is_some() && pounding::ground_motion::Record::builtin(&source).is_none()
+                {
+                    at.err(
+                        gm_span.clone(),
+                        format!("record = {source:?} is not a built-in record: el-centro-1940 (for a file, use file = \"path\")"),
+                    )
+                } else {
+                    at.err(gm_span.clone(), format!("[ground_motion] {m}"))
+                }
+            }
+            other => other,
+        })?;
+
+    // Buildings.
+    if file.building.is_empty() {
+        return Err(CliError::Input(format!(
+            "{}: no [[building]] entries: a scenario needs at least one building",
+            path.display()
+        )));
+    }
+    let mut buildings = Vec::new();
+    let mut spans = Vec::new();
+    for b in file.building {
+        let span = b.span();
+        let b = b.into_inner();
+        if b.name.is_empty() || b.name.contains([',', '"', '\n', '|']) {
+            return Err(at.err(
+                span,
+                format!(
+                    "name = {:?} is not allowed: a non-empty name without commas, quotes or |",
+                    b.name
+                ),
+            ));
+        }
+        let structure = ShearBuilding::new(b.masses, b.stiffnesses, b.heights, b.damping_ratio)
+            .map_err(|e| at.lib_in(span.clone(), &format!("building {:?}", b.name), e))?;
+        spans.push(span);
+        buildings.push(Building {
+            name: b.name,
+            structure,
+        });
+    }
+    let mut scenario = Scenario::new(buildings, record).map_err(|e| {
+        let span = spans.last().cloned().unwrap_or(0..0);
+        at.lib(span, e)
+    })?;
+
+    // Settings.
+    if let Some(a) = file.analysis {
+        let span = a.span();
+        let a = a.into_inner();
+        let lib = |e| at.lib(span.clone(), e);
+        if let Some(d) = a.duration {
+            scenario = scenario.with_duration(d).map_err(lib)?;
+        }
+        if let Some(d) = a.output_dt {
+            scenario = scenario.with_output_dt(d).map_err(lib)?;
+        }
+        if let Some(t) = a.tolerance {
+            scenario = scenario.with_tolerance(t).map_err(lib)?;
+        }
+        if let Some(v) = a.min_impact_velocity {
+            scenario = scenario.with_min_impact_velocity(v).map_err(lib)?;
+        }
+    }
+    if scenario.output_samples() > 10_000_000 {
+        return Err(CliError::Input(format!(
+            "{}: duration / output_dt = {} output samples; allowed: at most 1e7 (raise output_dt)",
+            path.display(),
+            scenario.output_samples()
+        )));
+    }
+
+    // Contacts.
+    for c in file.contact {
+        let span = c.span();
+        let c = c.into_inner();
+        let lib = |e| at.lib(span.clone(), e);
+        let e_at = |m: String| at.err(span.clone(), m);
+        let [a, b] = <[String; 2]>::try_from(c.between.clone()).map_err(|_| {
+            e_at(format!(
+                "between = {:?} is not allowed: two building names, [\"left\", \"right\"]",
+                c.between
+            ))
+        })?;
+        let model =
+            parse_model(&c.model).map_err(|m| e_at(format!("model = {:?}: {m}", c.model)))?;
+        let alpha = match &c.alpha {
+            None => None,
+            Some(Alpha::Number(x)) => Some(pounding::contact::AlphaRule::Given(*x)),
+            Some(Alpha::Word(w)) => {
+                Some(parse_alpha(w).map_err(|m| e_at(format!("alpha = {w:?}: {m}")))?)
+            }
+        };
+        let args = ModelArgs {
+            model,
+            e: c.e,
+            n: c.exponent,
+            damping: c
+                .damping
+                .as_deref()
+                .map(|d| word::<DampingArg>(&at, span.clone(), "damping", d))
+                .transpose()?
+                .unwrap_or(DampingArg::Formula),
+            alpha,
+            reading: c
+                .reading
+                .as_deref()
+                .map(|r| word::<ReadingArg>(&at, span.clone(), "reading", r))
+                .transpose()?
+                .unwrap_or(ReadingArg::EnergySplit),
+            tension: c
+                .tension
+                .as_deref()
+                .map(|t| word::<TensionArg>(&at, span.clone(), "tension", t))
+                .transpose()?,
+            max_penetration: c.max_penetration,
+            yield_ratio: c.yield_ratio.unwrap_or(0.1),
+        };
+        let spec = contact(&args, c.stiffness, Style::Key).map_err(|e| match e {
+            CliError::Input(m) => e_at(format!("contact {a:?}-{b:?}: {m}")),
+            other => other,
+        })?;
+        let floors = match c.floors {
+            None => None,
+            Some(f) => Some(
+                f.iter()
+                    .map(|p| match p.as_slice() {
+                        [i, j] => Ok((*i, *j)),
+                        _ => Err(e_at(format!(
+                            "floors entry {p:?} is not allowed: pairs [floor of left, floor of right], from 1"
+                        ))),
+                    })
+                    .collect::<Result<Vec<_>, _>>()?,
+            ),
+        };
+        scenario = scenario
+            .with_link(&a, &b, c.gap, &spec, floors)
+            .map_err(lib)?;
+    }
+    Ok(Loaded {
+        record_source: source,
+        scale: gm.scale,
+        scenario,
+    })
+}

@@ -1,0 +1,422 @@
+//! Time-history analysis of pounding between adjacent buildings under a uniform base excitation.
+//!
+//! Buildings stand in a row, listed left to right; positive displacement points right. Displacements are
+//! relative to the moving ground, so each floor obeys `M u'' + C u' + K u = -M 1 a_g(t) + F_contact`
+//! ([`crate::structure`] gives `M`, `C`, `K`). A [`Link`] joins two neighbours: at every pair of floors it
+//! names (by default every pair at the same height) a contact element closes when `u_L - u_R` exceeds the
+//! gap, so its penetration is `d = u_L - u_R - gap` and its rate `v = d'`.
+//!
+//! Each impact is one touch of one element. Its onset is located as an event on the integrator's
+//! interpolant, so `v_i` is the relative velocity at the moment of touch, and the element's law is built
+//! afresh for it with [`PreparedContact::law`] (effective mass `m_L m_R / (m_L + m_R)` of the two floors):
+//! every impact resets the contact's state. Within an impact the phase follows the rate (approach while
+//! `v > 0`, restitution after each turning point), as in OpenSees' impact materials; a bilinear law reloads
+//! elastically up to its last turning point. The impact ends when `d` returns to 0, or, for a law whose
+//! force is clamped, when the force first reaches 0 in restitution; the contact then carries no force until
+//! `d` returns to 0 (if the floors approach again before that, the same impact resumes).
+//!
+//! Integration is adaptive Dormand–Prince 5(4) ([`crate::integrate`]) with steps that end at every sample
+//! of the record (the ground acceleration has a kink there) and restart at every contact event (touch,
+//! turn, kink, zero force, separation). One relative tolerance sets the accuracy of everything.
+//!
+//! The energy balance is integrated with the motion: input `E_I = -int a_g 1^T M u' dt`, kinetic
+//! `u'^T M u' / 2`, strain `u^T K u / 2`, structural damping `int u'^T C u' dt` and contact work
+//! `int F d' dt` (equal to the energy dissipated by the contacts once every impact has ended).
+
+mod dynamics;
+mod run;
+
+use crate::contact::{ContactModel, PreparedContact};
+use crate::error::check;
+use crate::ground_motion::Record;
+use crate::structure::ShearBuilding;
+use crate::Error;
+
+pub use run::Progress;
+
+/// A building of the row, with its name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Building {
+    /// Name, unique in the scenario.
+    pub name: String,
+    /// The structure.
+    pub structure: ShearBuilding,
+}
+
+/// Contact elements between two adjacent buildings (`left` is the one listed first).
+#[derive(Clone, Debug)]
+pub struct Link {
+    /// Index of the left building.
+    pub left: usize,
+    /// Index of the right building (`left + 1`).
+    pub right: usize,
+    /// Gap at rest, m.
+    pub gap: f64,
+    /// Floor pairs `(floor of left, floor of right)`, numbered from 1 at the lowest floor.
+    pub floors: Vec<(usize, usize)>,
+    /// The contact model of every element of the link.
+    pub contact: PreparedContact,
+}
+
+/// A pounding analysis: buildings, links, ground motion and settings.
+#[derive(Clone, Debug)]
+pub struct Scenario {
+    buildings: Vec<Building>,
+    links: Vec<Link>,
+    record: Record,
+    duration: f64,
+    output_dt: f64,
+    tolerance: f64,
+    min_impact_velocity: f64,
+}
+
+/// Default floor of the impact velocity used to build a contact law, m/s (see
+/// [`Scenario::with_min_impact_velocity`]).
+pub const DEFAULT_MIN_IMPACT_VELOCITY: f64 = 1e-3;
+
+/// Default relative tolerance of the integration (see `docs/verification.md` for the convergence study).
+pub const DEFAULT_TOLERANCE: f64 = 1e-7;
+
+impl Scenario {
+    /// A scenario with the buildings (left to right; at least one, unique names) under `record`, for the
+    /// record's duration, output every 0.005 s, at [`DEFAULT_TOLERANCE`].
+    pub fn new(buildings: Vec<Building>, record: Record) -> Result<Self, Error> {
+        if buildings.is_empty() {
+            return Err(Error::Choice {
+                name: "building",
+                value: "none".into(),
+                allowed: "at least one building".into(),
+            });
+        }
+        for (i, b) in buildings.iter().enumerate() {
+            if buildings[..i].iter().any(|o| o.name == b.name) {
+                return Err(Error::Choice {
+                    name: "name",
+                    value: format!("{:?}", b.name),
+                    allowed: "a name used by one building only".into(),
+                });
+            }
+        }
+        let duration = record.duration();
+        Ok(Self {
+            buildings,
+            links: Vec::new(),
+            record,
+            duration,
+            output_dt: 0.005,
+            tolerance: DEFAULT_TOLERANCE,
+            min_impact_velocity: DEFAULT_MIN_IMPACT_VELOCITY,
+        })
+    }
+
+    /// Index of the building called `name`.
+    pub fn building_index(&self, name: &str) -> Result<usize, Error> {
+        self.buildings
+            .iter()
+            .position(|b| b.name == name)
+            .ok_or_else(|| Error::Choice {
+                name: "between",
+                value: format!("{name:?}"),
+                allowed: format!(
+                    "one of the buildings: {}",
+                    self.buildings
+                        .iter()
+                        .map(|b| format!("{:?}", b.name))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            })
+    }
+
+    /// Adds contact elements between the adjacent buildings `a` and `b` (in either order), with gap `gap`
+    /// (m, >= 0) at rest and `contact` at every floor pair of `floors` (`(floor of the left building, floor
+    /// of the right)`, from 1), or by default at every pair of floors at the same height (within 1 mm).
+    pub fn with_link(
+        mut self,
+        a: &str,
+        b: &str,
+        gap: f64,
+        contact: &ContactModel,
+        floors: Option<Vec<(usize, usize)>>,
+    ) -> Result<Self, Error> {
+        let (ia, ib) = (self.building_index(a)?, self.building_index(b)?);
+        let (left, right) = (ia.min(ib), ia.max(ib));
+        if right != left + 1 {
+            return Err(Error::Choice {
+                name: "between",
+                value: format!("[{a:?}, {b:?}]"),
+                allowed: "two buildings next to each other in the row (as listed, left to right)"
+                    .into(),
+            });
+        }
+        if self
+            .links
+            .iter()
+            .any(|l| l.left == left && l.right == right)
+        {
+            return Err(Error::Choice {
+                name: "between",
+                value: format!("[{a:?}, {b:?}]"),
+                allowed: "one contact entry per pair of buildings".into(),
+            });
+        }
+        check("gap", gap, gap >= 0.0, "gap >= 0 (m)")?;
+        let (sl, sr) = (
+            &self.buildings[left].structure,
+            &self.buildings[right].structure,
+        );
+        let floors = match floors {
+            Some(f) => {
+                if f.is_empty() {
+                    return Err(Error::Choice {
+                        name: "floors",
+                        value: "[]".into(),
+                        allowed: "at least one pair [floor of left, floor of right]".into(),
+                    });
+                }
+                for &(i, j) in &f {
+                    if !(1..=sl.storeys()).contains(&i) || !(1..=sr.storeys()).contains(&j) {
+                        return Err(Error::Choice {
+                            name: "floors",
+                            value: format!("[{i}, {j}]"),
+                            allowed: format!(
+                                "floors 1..={} of {:?} and 1..={} of {:?}",
+                                sl.storeys(),
+                                self.buildings[left].name,
+                                sr.storeys(),
+                                self.buildings[right].name
+                            ),
+                        });
+                    }
+                }
+                f
+            }
+            None => {
+                let (zl, zr) = (sl.elevations(), sr.elevations());
+                let pairs: Vec<(usize, usize)> = zl
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(i, z)| {
+                        zr.iter()
+                            .position(|w| (w - z).abs() <= 1e-3)
+                            .map(|j| (i + 1, j + 1))
+                    })
+                    .collect();
+                if pairs.is_empty() {
+                    return Err(Error::Choice {
+                        name: "floors",
+                        value: "(default)".into(),
+                        allowed: format!(
+                            "no floors of {:?} and {:?} are at the same height; list them, as floors = [[1, 1]]",
+                            self.buildings[left].name, self.buildings[right].name
+                        ),
+                    });
+                }
+                pairs
+            }
+        };
+        let contact = contact.prepare()?;
+        self.links.push(Link {
+            left,
+            right,
+            gap,
+            floors,
+            contact,
+        });
+        self.links.sort_by_key(|l| l.left);
+        Ok(self)
+    }
+
+    /// Sets the analysed duration, s (> 0; may exceed the record, which is followed by free vibration).
+    pub fn with_duration(mut self, duration: f64) -> Result<Self, Error> {
+        self.duration = check("duration", duration, duration > 0.0, "duration > 0 (s)")?;
+        Ok(self)
+    }
+
+    /// Sets the interval of the output histories, s (> 0).
+    pub fn with_output_dt(mut self, dt: f64) -> Result<Self, Error> {
+        self.output_dt = check("output_dt", dt, dt > 0.0, "output_dt > 0 (s)")?;
+        Ok(self)
+    }
+
+    /// Sets the relative tolerance of the integration, in `[1e-12, 1e-3]`.
+    pub fn with_tolerance(mut self, rtol: f64) -> Result<Self, Error> {
+        self.tolerance = check(
+            "tolerance",
+            rtol,
+            (1e-12..=1e-3).contains(&rtol),
+            "1e-12 <= tolerance <= 1e-3",
+        )?;
+        Ok(self)
+    }
+
+    /// Sets the smallest impact velocity used to build a contact law, m/s (> 0). Slower impacts (a touch at
+    /// a turning point of the relative motion, or the last bounces before floors come to rest against each
+    /// other) build their law with this velocity. Hunt–Crossley-type laws divide their damping by `v_i`, so
+    /// without a floor a touch at `v_i -> 0` makes the damping unbounded and the equations infinitely
+    /// stiff. Impacts below 1 mm/s carry a millionth of the energy of a 1 m/s impact. The reported `v_i`
+    /// and `e_post` are always the measured ones.
+    pub fn with_min_impact_velocity(mut self, v: f64) -> Result<Self, Error> {
+        self.min_impact_velocity = check(
+            "min_impact_velocity",
+            v,
+            v > 0.0,
+            "min_impact_velocity > 0 (m/s)",
+        )?;
+        Ok(self)
+    }
+
+    /// Smallest impact velocity used to build a contact law, m/s.
+    pub fn min_impact_velocity(&self) -> f64 {
+        self.min_impact_velocity
+    }
+
+    /// The buildings, left to right.
+    pub fn buildings(&self) -> &[Building] {
+        &self.buildings
+    }
+    /// The links, ordered left to right.
+    pub fn links(&self) -> &[Link] {
+        &self.links
+    }
+    /// The ground motion.
+    pub fn record(&self) -> &Record {
+        &self.record
+    }
+    /// Analysed duration, s.
+    pub fn duration(&self) -> f64 {
+        self.duration
+    }
+    /// Output interval, s.
+    pub fn output_dt(&self) -> f64 {
+        self.output_dt
+    }
+    /// Relative tolerance of the integration.
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+    /// Number of output samples in the histories.
+    pub fn output_samples(&self) -> usize {
+        (self.duration / self.output_dt * (1.0 + 1e-12)).floor() as usize + 1
+    }
+
+    /// Runs the analysis.
+    pub fn run(&self) -> Result<Results, Error> {
+        run::run(self, &mut |_| {})
+    }
+
+    /// Runs the analysis, telling `progress` how far it has got (for progress bars).
+    pub fn run_with(&self, progress: &mut dyn FnMut(Progress)) -> Result<Results, Error> {
+        run::run(self, progress)
+    }
+}
+
+/// One impact of one contact element.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Impact {
+    /// Index of the link in [`Scenario::links`].
+    pub link: usize,
+    /// Floor pair `(left, right)`, from 1.
+    pub floors: (usize, usize),
+    /// Time of touch, s.
+    pub time: f64,
+    /// Relative velocity at touch, m/s.
+    pub v_i: f64,
+    /// Relative velocity when the impact ended, m/s (negative: separating); `None` if it had not ended.
+    pub v_out: Option<f64>,
+    /// Delivered coefficient of restitution `-v_out / v_i`; `None` if the impact had not ended.
+    pub e_post: Option<f64>,
+    /// Largest contact force, N.
+    pub peak_force: f64,
+    /// Largest penetration, m.
+    pub max_penetration: f64,
+    /// Duration of contact, s (to the end of the analysis if it had not ended).
+    pub duration: f64,
+    /// Work of the contact force on the relative motion over the impact, J (the energy dissipated).
+    pub dissipated_energy: f64,
+}
+
+/// Peak response of one building.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BuildingResponse {
+    /// Largest |displacement| of each floor relative to the ground, m.
+    pub peak_displacement: Vec<f64>,
+    /// Time of each, s.
+    pub time_of_peak_displacement: Vec<f64>,
+    /// Largest |inter-storey drift| of each storey, m.
+    pub peak_drift: Vec<f64>,
+}
+
+/// Totals of one link (all its elements).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinkResponse {
+    /// Number of impacts.
+    pub impacts: usize,
+    /// Largest contact force of any element, N.
+    pub peak_force: f64,
+    /// Energy dissipated by the link's contacts, J.
+    pub dissipated_energy: f64,
+    /// Largest penetration of any element, m.
+    pub max_penetration: f64,
+}
+
+/// Energies at the end of the analysis, J, and the worst relative error of the balance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EnergyBalance {
+    /// Input energy `-int a_g 1^T M u' dt`, J.
+    pub input: f64,
+    /// Kinetic energy (relative motion), J.
+    pub kinetic: f64,
+    /// Strain energy of the storeys, J.
+    pub strain: f64,
+    /// Energy dissipated by structural damping, J.
+    pub damping: f64,
+    /// Work of the contact forces, J (dissipated energy, plus what the contacts hold at the end).
+    pub contact: f64,
+    /// Largest `|input - kinetic - strain - damping - contact|` over the run, divided by the largest of
+    /// `kinetic + strain + damping + |contact|` (dimensionless).
+    pub relative_error: f64,
+}
+
+/// Time histories at the output interval.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Histories {
+    /// Times, s.
+    pub t: Vec<f64>,
+    /// Ground acceleration, m/s^2.
+    pub ground_acceleration: Vec<f64>,
+    /// `displacement[building][floor][sample]`, m, relative to the ground.
+    pub displacement: Vec<Vec<Vec<f64>>>,
+    /// `force[link][element][sample]`, N (elements in the order of [`Link::floors`]).
+    pub force: Vec<Vec<Vec<f64>>>,
+    /// Energies, J: input, kinetic, strain, damping, contact work (`energy[0..5][sample]`).
+    pub energy: [Vec<f64>; 5],
+}
+
+/// Counts of the integration.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Statistics {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Contact events located (touch, turn, kink, zero force, separation, resume).
+    pub events: usize,
+}
+
+/// Everything a run produces.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Results {
+    /// Peak response of each building.
+    pub buildings: Vec<BuildingResponse>,
+    /// Totals of each link.
+    pub links: Vec<LinkResponse>,
+    /// Every impact, in order of touch.
+    pub impacts: Vec<Impact>,
+    /// Energy balance.
+    pub energy: EnergyBalance,
+    /// Time histories.
+    pub histories: Histories,
+    /// Integration counts.
+    pub statistics: Statistics,
+}

@@ -1,0 +1,284 @@
+//! Lumped-mass shear buildings: assembly, natural modes and Rayleigh damping.
+//!
+//! A building of `n` storeys has one horizontal degree of freedom per floor (floor 1 is the lowest, the
+//! ground does not move relative to itself). Storey `j` joins floor `j - 1` (the ground for `j = 1`) and floor
+//! `j` with a spring of stiffness `k_j` (N/m), so the stiffness matrix is tridiagonal:
+//! `(K u)_i = k_i (u_i - u_{i-1}) - k_{i+1} (u_{i+1} - u_i)` (Chopra, *Dynamics of Structures*, section 9.2).
+//! Damping is classical: `C = a0 M + a1 K` with the ratio `zeta` on modes 1 and 2,
+//! `a0 = 2 zeta w1 w2 / (w1 + w2)`, `a1 = 2 zeta / (w1 + w2)` (Chopra, eq 11.4.9); a single storey gets
+//! `c = 2 zeta sqrt(k m)`, which is the same formula with `w2 = w1`.
+
+mod eigen;
+
+use crate::error::check;
+use crate::Error;
+
+/// A lumped-mass shear building.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ShearBuilding {
+    masses: Vec<f64>,
+    stiffnesses: Vec<f64>,
+    heights: Vec<f64>,
+    damping_ratio: f64,
+}
+
+/// Natural modes of a [`ShearBuilding`], lowest first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Modes {
+    /// Circular frequencies, rad/s.
+    pub omega: Vec<f64>,
+    /// Mass-normalised mode shapes (`phi^T M phi = 1`, in 1/sqrt(kg)); `shapes[r][i]` is floor `i + 1` of
+    /// mode `r + 1`, with the top floor's component positive.
+    pub shapes: Vec<Vec<f64>>,
+}
+
+impl Modes {
+    /// Natural periods, s.
+    pub fn periods(&self) -> Vec<f64> {
+        self.omega
+            .iter()
+            .map(|w| 2.0 * std::f64::consts::PI / w)
+            .collect()
+    }
+
+    /// Mode shapes scaled so that the top floor is 1 (dimensionless).
+    pub fn shapes_roof_normalised(&self) -> Vec<Vec<f64>> {
+        self.shapes
+            .iter()
+            .map(|s| {
+                let top = *s.last().expect("a building has a floor");
+                s.iter().map(|x| x / top).collect()
+            })
+            .collect()
+    }
+
+    /// Participation factor of each mode for a uniform base excitation, `Gamma = phi^T M 1` (sqrt(kg), with
+    /// the mass-normalised shapes), and the effective modal mass `Gamma^2` (kg).
+    pub fn participation(&self, masses: &[f64]) -> Vec<(f64, f64)> {
+        self.shapes
+            .iter()
+            .map(|s| {
+                let g: f64 = s.iter().zip(masses).map(|(p, m)| p * m).sum();
+                (g, g * g)
+            })
+            .collect()
+    }
+}
+
+impl ShearBuilding {
+    /// A building with floor masses (kg, floor 1 upwards), storey stiffnesses (N/m, storey 1 upwards), storey
+    /// heights (m) and a damping ratio `zeta` in `[0, 1)` on modes 1 and 2. All three lists must have the same
+    /// length, at least 1, with positive finite values.
+    pub fn new(
+        masses: Vec<f64>,
+        stiffnesses: Vec<f64>,
+        heights: Vec<f64>,
+        damping_ratio: f64,
+    ) -> Result<Self, Error> {
+        if masses.is_empty() {
+            return Err(Error::Parameter {
+                name: "masses",
+                value: 0.0,
+                allowed: "at least one floor mass (kg)",
+            });
+        }
+        for (name, list) in [("stiffnesses", &stiffnesses), ("heights", &heights)] {
+            if list.len() != masses.len() {
+                return Err(Error::Length {
+                    name,
+                    len: list.len(),
+                    expected: masses.len(),
+                });
+            }
+        }
+        for &m in &masses {
+            check("mass", m, m > 0.0, "floor masses > 0 (kg)")?;
+        }
+        for &k in &stiffnesses {
+            check("stiffness", k, k > 0.0, "storey stiffnesses > 0 (N/m)")?;
+        }
+        for &h in &heights {
+            check("height", h, h > 0.0, "storey heights > 0 (m)")?;
+        }
+        check(
+            "damping_ratio",
+            damping_ratio,
+            (0.0..1.0).contains(&damping_ratio),
+            "0 <= damping_ratio < 1",
+        )?;
+        Ok(Self {
+            masses,
+            stiffnesses,
+            heights,
+            damping_ratio,
+        })
+    }
+
+    /// Number of storeys (= floors).
+    pub fn storeys(&self) -> usize {
+        self.masses.len()
+    }
+    /// Floor masses, kg, floor 1 upwards.
+    pub fn masses(&self) -> &[f64] {
+        &self.masses
+    }
+    /// Storey stiffnesses, N/m, storey 1 upwards.
+    pub fn stiffnesses(&self) -> &[f64] {
+        &self.stiffnesses
+    }
+    /// Storey heights, m.
+    pub fn heights(&self) -> &[f64] {
+        &self.heights
+    }
+    /// Damping ratio of modes 1 and 2 (dimensionless).
+    pub fn damping_ratio(&self) -> f64 {
+        self.damping_ratio
+    }
+    /// Total mass, kg.
+    pub fn total_mass(&self) -> f64 {
+        self.masses.iter().sum()
+    }
+
+    /// Elevation of each floor above the ground, m.
+    pub fn elevations(&self) -> Vec<f64> {
+        self.heights
+            .iter()
+            .scan(0.0, |z, h| {
+                *z += h;
+                Some(*z)
+            })
+            .collect()
+    }
+
+    /// Natural modes: `K phi = w^2 M phi`, solved as the symmetric problem
+    /// `M^(-1/2) K M^(-1/2) x = w^2 x` by cyclic Jacobi rotations (accurate to rounding for the small
+    /// matrices of shear buildings).
+    pub fn modes(&self) -> Modes {
+        let n = self.storeys();
+        let s: Vec<f64> = self.masses.iter().map(|m| 1.0 / m.sqrt()).collect();
+        let mut a = vec![0.0; n * n];
+        for i in 0..n {
+            let k_below = self.stiffnesses[i];
+            let k_above = self.stiffnesses.get(i + 1).copied().unwrap_or(0.0);
+            a[i * n + i] = (k_below + k_above) * s[i] * s[i];
+            if i + 1 < n {
+                let off = -k_above * s[i] * s[i + 1];
+                a[i * n + i + 1] = off;
+                a[(i + 1) * n + i] = off;
+            }
+        }
+        let (values, vectors) = eigen::symmetric(&mut a, n);
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by(|&i, &j| values[i].total_cmp(&values[j]));
+        let omega = order.iter().map(|&r| values[r].max(0.0).sqrt()).collect();
+        let shapes = order
+            .iter()
+            .map(|&r| {
+                let mut phi: Vec<f64> = (0..n).map(|i| vectors[i * n + r] * s[i]).collect();
+                if phi[n - 1] < 0.0 {
+                    phi.iter_mut().for_each(|x| *x = -*x);
+                }
+                phi
+            })
+            .collect();
+        Modes { omega, shapes }
+    }
+
+    /// Rayleigh coefficients `(a0, a1)` of `C = a0 M + a1 K` (a0 in 1/s, a1 in s) giving the damping ratio
+    /// on modes 1 and 2 (mode 1 alone for a single storey).
+    pub fn rayleigh(&self) -> (f64, f64) {
+        let w = self.modes().omega;
+        let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
+        let z = self.damping_ratio;
+        (2.0 * z * w1 * w2 / (w1 + w2), 2.0 * z / (w1 + w2))
+    }
+
+    /// Damping ratio of a mode of circular frequency `w` (rad/s) under this building's Rayleigh damping:
+    /// `a0 / (2 w) + a1 w / 2`.
+    pub fn modal_damping(&self, w: f64) -> f64 {
+        let (a0, a1) = self.rayleigh();
+        a0 / (2.0 * w) + a1 * w / 2.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn single_storey_period_and_damping() {
+        let b = ShearBuilding::new(vec![5.0e5], vec![7.8957e7], vec![3.0], 0.05).unwrap();
+        let t = b.modes().periods()[0];
+        assert!((t - 2.0 * PI * (5.0e5f64 / 7.8957e7).sqrt()).abs() < 1e-14);
+        let (a0, a1) = b.rayleigh();
+        let c = a0 * 5.0e5 + a1 * 7.8957e7;
+        assert!((c / (2.0 * 0.05 * (7.8957e7f64 * 5.0e5).sqrt()) - 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn uniform_building_matches_closed_form() {
+        // Equal masses m and stiffnesses k, free top: w_r = 2 sqrt(k/m) sin((2r - 1) pi / (2 (2n + 1)))
+        // (the fixed-free chain; Chopra, Dynamics of Structures, problem 10.x).
+        let (n, m, k) = (12, 3.0e5, 2.0e8);
+        let b = ShearBuilding::new(vec![m; n], vec![k; n], vec![3.0; n], 0.05).unwrap();
+        let modes = b.modes();
+        for (r, w) in modes.omega.iter().enumerate() {
+            let exact =
+                2.0 * (k / m).sqrt() * ((2 * r + 1) as f64 * PI / (2.0 * (2 * n + 1) as f64)).sin();
+            assert!(
+                (w / exact - 1.0).abs() < 1e-12,
+                "mode {}: {w} vs {exact}",
+                r + 1
+            );
+        }
+        // Shapes: phi_i ∝ sin(i (2r - 1) pi / (2n + 1)), mass-normalised.
+        for (r, phi) in modes.shapes.iter().enumerate() {
+            let g = |i: usize| ((i as f64) * (2 * r + 1) as f64 * PI / (2 * n + 1) as f64).sin();
+            let norm: f64 = (1..=n).map(|i| m * g(i) * g(i)).sum::<f64>().sqrt();
+            let sign = g(n).signum();
+            for (i, p) in phi.iter().enumerate() {
+                assert!((p - sign * g(i + 1) / norm).abs() < 1e-12 / m.sqrt());
+            }
+        }
+        // Rayleigh damping: exactly zeta on modes 1 and 2.
+        for w in &modes.omega[..2] {
+            assert!((b.modal_damping(*w) - 0.05).abs() < 1e-14);
+        }
+        // Effective modal masses sum to the total mass.
+        let sum: f64 = modes.participation(b.masses()).iter().map(|p| p.1).sum();
+        assert!((sum / b.total_mass() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn two_storey_closed_form() {
+        // m1 = 2m, m2 = m, k1 = 2k, k2 = k: w^2 = k/(2m) and 2k/m (Chopra, example 10.4).
+        let (m, k) = (1.0e5, 5.0e7);
+        let b =
+            ShearBuilding::new(vec![2.0 * m, m], vec![2.0 * k, k], vec![3.0, 3.0], 0.0).unwrap();
+        let w = b.modes().omega;
+        assert!((w[0] * w[0] / (k / (2.0 * m)) - 1.0).abs() < 1e-13);
+        assert!((w[1] * w[1] / (2.0 * k / m) - 1.0).abs() < 1e-13);
+        let shapes = b.modes().shapes_roof_normalised();
+        assert!((shapes[0][0] - 0.5).abs() < 1e-13 && (shapes[1][0] + 1.0).abs() < 1e-13);
+    }
+
+    #[test]
+    fn invalid_buildings_are_refused() {
+        let ok = |m: Vec<f64>, k: Vec<f64>, h: Vec<f64>, z: f64| ShearBuilding::new(m, k, h, z);
+        assert!(matches!(
+            ok(vec![1.0, 1.0], vec![1.0], vec![3.0, 3.0], 0.05),
+            Err(Error::Length {
+                name: "stiffnesses",
+                len: 1,
+                expected: 2
+            })
+        ));
+        assert!(ok(vec![0.0], vec![1.0], vec![3.0], 0.05).is_err());
+        assert!(ok(vec![1.0], vec![-1.0], vec![3.0], 0.05).is_err());
+        assert!(ok(vec![1.0], vec![1.0], vec![f64::NAN], 0.05).is_err());
+        assert!(ok(vec![1.0], vec![1.0], vec![3.0], 1.0).is_err());
+        assert!(ok(vec![], vec![], vec![], 0.05).is_err());
+    }
+}
