@@ -125,6 +125,21 @@ impl At<'_> {
             .count()
             + 1
     }
+    /// The line of `key` (or its plural, the list it belongs to) inside the entry at `span`, else the
+    /// entry's own line.
+    fn key_span(&self, span: std::ops::Range<usize>, key: &str) -> std::ops::Range<usize> {
+        let body = &self.text[span.start.min(self.text.len())..span.end.min(self.text.len())];
+        let mut offset = span.start;
+        for line in body.split_inclusive('\n') {
+            let t = line.trim_start();
+            let k = t.split(['=', ' ']).next().unwrap_or("");
+            if k == key || k == format!("{key}s") || k == format!("{key}es") {
+                return offset..offset;
+            }
+            offset += line.len();
+        }
+        span
+    }
     fn err(&self, span: std::ops::Range<usize>, msg: impl std::fmt::Display) -> CliError {
         CliError::Input(format!(
             "{}:{}: {msg}",
@@ -138,6 +153,14 @@ impl At<'_> {
     }
     /// The same, naming the entry (`what: ...`).
     fn lib_in(&self, span: std::ops::Range<usize>, what: &str, e: pounding::Error) -> CliError {
+        let key = match &e {
+            pounding::Error::Parameter { name, .. } | pounding::Error::Length { name, .. } => {
+                Some(*name)
+            }
+            pounding::Error::Choice { name, .. } => Some(*name),
+            _ => None,
+        };
+        let span = key.map_or(span.clone(), |k| self.key_span(span, k));
         let msg = match e {
             pounding::Error::Parameter {
                 name,
@@ -346,7 +369,14 @@ pub fn load(path: &Path) -> Result<Loaded, CliError> {
             yield_ratio: c.yield_ratio.unwrap_or(0.1),
         };
         let spec = contact(&args, c.stiffness, Style::Key).map_err(|e| match e {
-            CliError::Input(m) => e_at(format!("contact {a:?}-{b:?}: {m}")),
+            CliError::Input(m) => {
+                // Messages start with the key (`e = 1.5 is not allowed ...`): point at its line.
+                let key = m.split([' ', '=']).next().unwrap_or("");
+                at.err(
+                    at.key_span(span.clone(), key),
+                    format!("contact {a:?}-{b:?}: {m}"),
+                )
+            }
             other => other,
         })?;
         let floors = match c.floors {

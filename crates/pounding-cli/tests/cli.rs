@@ -292,3 +292,224 @@ fn record_info_of_the_builtin_and_of_bad_files() {
         "{err}"
     );
 }
+
+/// The repository's example scenario `name`.
+fn example(name: &str) -> String {
+    format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn run_writes_the_four_outputs_with_units_and_a_consistent_summary() {
+    let dir = tmp("run-two-sdof");
+    let out = dir.join("out");
+    let o = pounding(&[
+        "run",
+        &example("two-sdof.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let on_disk: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s, on_disk);
+    // Periods of the two oscillators: T = 2 pi sqrt(m / k) with the file's m and k.
+    let t = |b: usize| s["buildings"][b]["periods"][0].as_f64().unwrap();
+    assert!((t(0) - 2.0 * std::f64::consts::PI * (5.0e5f64 / 7.8957e7).sqrt()).abs() < 1e-12);
+    assert!((t(1) - 2.0 * std::f64::consts::PI * (5.0e5f64 / 1.9739e7).sqrt()).abs() < 1e-12);
+    assert!(s["energy_balance_error"].as_f64().unwrap() < 1e-4);
+
+    // impacts.csv: one row per impact, as many as the summary counts; the largest peak force is the
+    // contact's; every finished impact has an e_post and the dissipated energies add up to the contact's.
+    let impacts = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    let mut lines = impacts.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    for col in [
+        "time_s",
+        "v_i_m_per_s",
+        "e_post",
+        "peak_force_N",
+        "duration_s",
+        "dissipated_energy_J",
+    ] {
+        assert!(header.contains(&col), "{col} in {header:?}");
+    }
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<String>> = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    let contact = &s["contacts"][0];
+    assert_eq!(rows.len() as u64, contact["impacts"].as_u64().unwrap());
+    assert!(rows.len() > 5);
+    let peak = rows
+        .iter()
+        .map(|r| r[col("peak_force_N")].parse::<f64>().unwrap())
+        .fold(0.0, f64::max);
+    assert_eq!(peak, contact["peak_force"].as_f64().unwrap());
+    let dissipated: f64 = rows
+        .iter()
+        .map(|r| r[col("dissipated_energy_J")].parse::<f64>().unwrap())
+        .sum();
+    assert!((dissipated / contact["dissipated_energy"].as_f64().unwrap() - 1.0).abs() < 1e-9);
+
+    // response.csv: units in every header, samples every output_dt, no NaN; peak |u| of the samples
+    // never exceeds the located peak (which lies between samples).
+    let response = std::fs::read_to_string(out.join("response.csv")).unwrap();
+    let mut lines = response.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert!(header.iter().all(|h| h.ends_with("_s")
+        || h.ends_with("_m")
+        || h.ends_with("_N")
+        || h.ends_with("_m_per_s2")));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), (31.18f64 / 0.005).floor() as usize + 1);
+    assert!(rows.iter().flatten().all(|x: &f64| x.is_finite()));
+    let u_left = rows.iter().map(|r| r[2].abs()).fold(0.0, f64::max);
+    let peak_left = s["buildings"][0]["peak_displacement"][0].as_f64().unwrap();
+    assert!(u_left <= peak_left && u_left > 0.99 * peak_left);
+    // Forces of a clamped model are never negative.
+    assert!(rows.iter().all(|r| r[4] >= 0.0));
+    let energy = std::fs::read_to_string(out.join("energy.csv")).unwrap();
+    assert!(energy.starts_with("time_s,input_J,"));
+}
+
+#[test]
+fn every_example_runs() {
+    for name in [
+        "two-sdof.toml",
+        "three-vs-eight-storey.toml",
+        "three-in-a-row.toml",
+    ] {
+        let out = tmp(&format!("example-{name}"));
+        let o = pounding(&["run", &example(name), "--out", out.to_str().unwrap(), "-q"]);
+        assert!(
+            o.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let text = String::from_utf8_lossy(&o.stdout);
+        assert!(text.contains("period_s") && text.contains("energy balance error"));
+    }
+}
+
+#[test]
+fn bad_scenarios_get_one_line_with_file_and_line_exit_2_and_no_output() {
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let dir = tmp("bad-scenarios");
+    std::fs::write(
+        dir.join("bad.at2"),
+        "PEER\nx\ny\nNPTS= 5, DT= .01 SEC\n0.1 0.2 0.3\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("comma.txt"), "0,01\n0,02\n").unwrap();
+    std::fs::write(dir.join("uneven.csv"), "0.0,0.1\n0.01,0.2\n0.03,0.1\n").unwrap();
+    // (scenario text, what the message must say, where: the text of the offending line, or a file name).
+    let cases: Vec<(String, &str, &str)> = vec![
+        (
+            base.replace("gap = 0.02", "gap = -0.02"),
+            "gap = -0.02",
+            "gap = -0.02",
+        ),
+        (
+            base.replacen("masses = [5.0e5]", "masses = [0.0]", 1),
+            "mass = 0",
+            "masses = [0.0]",
+        ),
+        (
+            base.replacen("stiffnesses = [7.8957e7]", "stiffnesses = [0.0]", 1),
+            "stiffness = 0",
+            "stiffnesses = [0.0]",
+        ),
+        (
+            base.replacen("heights = [3.0]", "heights = [3.0, 3.0]", 1),
+            "heights has 2 values",
+            "heights = [3.0, 3.0]",
+        ),
+        (
+            base.replace(
+                "between = [\"left\", \"right\"]",
+                "between = [\"left\", \"middle\"]",
+            ),
+            "\"middle\"",
+            "between =",
+        ),
+        (
+            base.replace("model = \"papi\"", "model = \"papy\""),
+            "unknown model",
+            "[[contact]]",
+        ),
+        (base.replace("e = 0.65 ", "e = 1.5 "), "e = 1.5", "e = 1.5"),
+        (
+            base.replace(
+                "damping_ratio = 0.05\n\n[[building]]",
+                "damping_ratio = 0.05\nmass = 3\n\n[[building]]",
+            ),
+            "unknown field `mass`",
+            "mass = 3",
+        ),
+        (
+            base.replace("record = \"el-centro-1940\"", "record = \"kobe\""),
+            "not a built-in record",
+            "[ground_motion]",
+        ),
+        (
+            base.replace(
+                "record = \"el-centro-1940\"",
+                "file = \"bad.at2\"\nformat = \"at2\"",
+            ),
+            "NPTS",
+            "bad.at2",
+        ),
+        (
+            base.replace(
+                "record = \"el-centro-1940\"",
+                "file = \"comma.txt\"\nformat = \"values\"\ndt = 0.01",
+            ),
+            "decimal comma",
+            "comma.txt",
+        ),
+        (
+            base.replace(
+                "record = \"el-centro-1940\"",
+                "file = \"uneven.csv\"\nformat = \"time-acc\"",
+            ),
+            "line 3",
+            "uneven.csv",
+        ),
+        (
+            base.replace("output_dt = 0.005", "output_dt = 0.0"),
+            "output_dt = 0",
+            "output_dt = 0.0",
+        ),
+        (
+            base.replace("scale = 1.0", "scale = \"big\""),
+            "invalid type",
+            "scale = \"big\"",
+        ),
+    ];
+    for (i, (text, needle, place)) in cases.iter().enumerate() {
+        let file = dir.join(format!("case{i}.toml"));
+        std::fs::write(&file, text).unwrap();
+        let out = dir.join(format!("out{i}"));
+        let o = pounding(&[
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {i}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
+        assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
+        let place = match text.lines().position(|l| l.contains(place)) {
+            Some(n) if !place.contains('.') || place.contains(' ') => format!(":{}:", n + 1),
+            _ => place.to_string(),
+        };
+        assert!(err.contains(&place), "case {i}: {err} lacks {place}");
+        assert!(!out.exists(), "case {i}: output written");
+        assert!(o.stdout.is_empty() || !String::from_utf8_lossy(&o.stdout).contains("wrote"));
+    }
+}

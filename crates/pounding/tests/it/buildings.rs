@@ -240,3 +240,50 @@ fn isolated_impact_delivers_the_single_impact_e() {
         }
     }
 }
+
+/// The two-SDOF example (examples/two-sdof.toml): T = 0.5 s and 1.0 s, 5 %, 20 mm, papi e = 0.65.
+fn two_sdof(model: Model, k: f64) -> Scenario {
+    Scenario::new(
+        vec![
+            building("left", &[5.0e5], &[7.8957e7], 0.05),
+            building("right", &[5.0e5], &[1.9739e7], 0.05),
+        ],
+        Record::el_centro_1940(),
+    )
+    .unwrap()
+    .with_link(
+        "left",
+        "right",
+        0.02,
+        &ContactModel::new(model, k, 0.65).unwrap(),
+        None,
+    )
+    .unwrap()
+}
+
+#[test]
+fn default_tolerance_is_within_a_tenth_of_a_percent_of_the_converged_run() {
+    // The accuracy contract of the default tolerance: peak displacements within 0.1 % of a run converged
+    // to 1e-11, with the same impact count (docs/verification.md shows the whole study).
+    for (model, k) in [
+        (Model::Papi, 2.0e9),
+        (Model::KelvinVoigt, 2.0e9),
+        (Model::Jankowski, 2.0e10),
+        (Model::Hertzdamp, 2.0e10),
+    ] {
+        let fine = two_sdof(model, k)
+            .with_tolerance(1e-11)
+            .unwrap()
+            .run()
+            .unwrap();
+        let default = two_sdof(model, k).run().unwrap();
+        assert_eq!(default.impacts.len(), fine.impacts.len(), "{model}");
+        assert!(fine.impacts.len() > 5);
+        for (a, b) in default.buildings.iter().zip(&fine.buildings) {
+            for (x, y) in a.peak_displacement.iter().zip(&b.peak_displacement) {
+                assert!((x / y - 1.0).abs() < 1e-3, "{model}: {x} vs {y}");
+            }
+        }
+        assert!(default.energy.relative_error < 1e-4, "{model}");
+    }
+}
