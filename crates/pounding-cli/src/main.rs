@@ -35,6 +35,20 @@ impl From<pounding::Error> for CliError {
 }
 
 fn main() -> ExitCode {
+    // A reader that stops early (`pounding ... | head`) closes stdout; `println!` then panics. End quietly
+    // with the status a shell expects from SIGPIPE instead.
+    let default_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let msg = info
+            .payload()
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .unwrap_or("");
+        if msg.contains("Broken pipe") {
+            std::process::exit(141);
+        }
+        default_hook(info);
+    }));
     let cli = match args::Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {
