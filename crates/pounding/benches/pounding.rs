@@ -95,5 +95,9 @@ fn benches(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(pounding_benches, benches);
-criterion_main!(pounding_benches);
+#[allow(missing_docs)]
+mod group {
+    use super::*;
+    criterion_group!(pounding_benches, benches);
+}
+criterion_main!(group::pounding_benches);
