@@ -66,10 +66,15 @@ impl Style {
                     value,
                     allowed,
                 },
-            ) => input(format!("{name} = {value} is not allowed: {allowed}")),
+            ) => input(key_message(name, value, allowed)),
             (_, e) => CliError::from(e),
         }
     }
+}
+
+/// A range error in a scenario file's words: `gap = -0.02 is not allowed: gap >= 0 (m)`.
+pub fn key_message(name: &str, value: f64, allowed: &str) -> String {
+    format!("{name} = {value} is not allowed: {allowed}")
 }
 
 /// The contact specification of `a` with stiffness `k` (N/m^n), with messages in `style`.

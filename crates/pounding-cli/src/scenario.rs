@@ -3,7 +3,7 @@
 
 use crate::args::{parse_alpha, parse_model, DampingArg, FormatArg, ModelArgs, ReadingArg};
 use crate::args::{TensionArg, UnitsArg};
-use crate::commands::{contact, load_record_from, Style};
+use crate::commands::{contact, key_message, load_record_from, Style};
 use crate::CliError;
 use clap::ValueEnum;
 use pounding::analysis::{Building, Scenario};
@@ -166,7 +166,7 @@ impl At<'_> {
                 name,
                 value,
                 allowed,
-            } => format!("{name} = {value} is not allowed: {allowed}"),
+            } => key_message(name, value, allowed),
             other => other.to_string(),
         };
         if what.is_empty() {

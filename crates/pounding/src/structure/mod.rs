@@ -21,6 +21,8 @@ pub struct ShearBuilding {
     stiffnesses: Vec<f64>,
     heights: Vec<f64>,
     damping_ratio: f64,
+    /// Rayleigh coefficients `(a0, a1)`, fixed by the modes at construction.
+    rayleigh: (f64, f64),
 }
 
 /// Natural modes of a [`ShearBuilding`], lowest first.
@@ -107,12 +109,20 @@ impl ShearBuilding {
             (0.0..1.0).contains(&damping_ratio),
             "0 <= damping_ratio < 1",
         )?;
-        Ok(Self {
+        let mut b = Self {
             masses,
             stiffnesses,
             heights,
             damping_ratio,
-        })
+            rayleigh: (0.0, 0.0),
+        };
+        let w = b.modes().omega;
+        let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
+        b.rayleigh = (
+            2.0 * damping_ratio * w1 * w2 / (w1 + w2),
+            2.0 * damping_ratio / (w1 + w2),
+        );
+        Ok(b)
     }
 
     /// Number of storeys (= floors).
@@ -188,10 +198,7 @@ impl ShearBuilding {
     /// Rayleigh coefficients `(a0, a1)` of `C = a0 M + a1 K` (a0 in 1/s, a1 in s) giving the damping ratio
     /// on modes 1 and 2 (mode 1 alone for a single storey).
     pub fn rayleigh(&self) -> (f64, f64) {
-        let w = self.modes().omega;
-        let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
-        let z = self.damping_ratio;
-        (2.0 * z * w1 * w2 / (w1 + w2), 2.0 * z / (w1 + w2))
+        self.rayleigh
     }
 
     /// Damping ratio of a mode of circular frequency `w` (rad/s) under this building's Rayleigh damping:
