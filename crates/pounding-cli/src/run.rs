@@ -341,12 +341,12 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
 
 fn impacts_csv(s: &Scenario, r: &Results) -> String {
     let mut out = String::from(
-        "time_s,contact,floor_left,floor_right,v_i_m_per_s,e_post,peak_force_N,duration_s,dissipated_energy_J,max_penetration_m,ended\n",
+        "time_s,contact,floor_left,floor_right,v_i_m_per_s,e_post,peak_force_N,time_of_peak_force_s,duration_s,dissipated_energy_J,max_penetration_m,ended\n",
     );
     for i in &r.impacts {
         let _ = writeln!(
             out,
-            "{:e},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{}",
+            "{:e},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{}",
             i.time,
             link_name(s, i.link),
             i.floors.0,
@@ -354,6 +354,7 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
             i.v_i,
             i.e_post.map_or(String::new(), |e| format!("{e:e}")),
             i.peak_force,
+            i.time_of_peak_force,
             i.duration,
             i.dissipated_energy,
             i.max_penetration,

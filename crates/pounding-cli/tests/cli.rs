@@ -352,6 +352,12 @@ fn run_writes_the_four_outputs_with_units_and_a_consistent_summary() {
         .map(|r| r[col("dissipated_energy_J")].parse::<f64>().unwrap())
         .sum();
     assert!((dissipated / contact["dissipated_energy"].as_f64().unwrap() - 1.0).abs() < 1e-9);
+    // The peak of each impact lies within its contact.
+    for r in &rows {
+        let t = |c: &str| r[col(c)].parse::<f64>().unwrap();
+        let t_pk = t("time_of_peak_force_s");
+        assert!(t("time_s") < t_pk && t_pk < t("time_s") + t("duration_s"), "{r:?}");
+    }
 
     // response.csv: units in every header, samples every output_dt, no NaN; peak |u| of the samples
     // never exceeds the located peak (which lies between samples).

@@ -328,6 +328,8 @@ pub struct Impact {
     pub e_post: Option<f64>,
     /// Largest contact force, N.
     pub peak_force: f64,
+    /// Time of the largest force, s.
+    pub time_of_peak_force: f64,
     /// Largest penetration, m.
     pub max_penetration: f64,
     /// Duration of contact, s (to the end of the analysis if it had not ended).

@@ -102,6 +102,7 @@ struct Tracker {
     v_i: f64,
     work0: f64,
     peak_force: f64,
+    time_of_peak_force: f64,
     max_penetration: f64,
     /// Index in the impact list once recorded (released, not yet re-armed).
     recorded: Option<usize>,
@@ -334,7 +335,7 @@ pub(super) fn run(s: &Scenario, progress: &mut dyn FnMut(Progress)) -> Result<Re
             if let (Some(tr), Engagement::Contact { law, phase, turn }) =
                 (tr.as_mut(), sys.elements[e].state)
             {
-                let (_, fmax) = golden_max(
+                let (t_max, fmax) = golden_max(
                     |t| {
                         let (d, v) = dv_at(&sys, e, dense, t);
                         law.force(d, v, phase, &turn)
@@ -343,7 +344,9 @@ pub(super) fn run(s: &Scenario, progress: &mut dyn FnMut(Progress)) -> Result<Re
                     te,
                     1e-12 * h.max(f64::MIN_POSITIVE),
                 );
-                tr.peak_force = tr.peak_force.max(fmax);
+                if fmax > tr.peak_force {
+                    (tr.peak_force, tr.time_of_peak_force) = (fmax, t_max);
+                }
                 tr.max_penetration = tr.max_penetration.max(sys.penetration(e, &ye).0);
             }
         }
@@ -407,6 +410,7 @@ pub(super) fn run(s: &Scenario, progress: &mut dyn FnMut(Progress)) -> Result<Re
                     v_out: Some(v),
                     e_post: (tr.v_i > 0.0).then(|| -v / tr.v_i),
                     peak_force: tr.peak_force,
+                    time_of_peak_force: tr.time_of_peak_force,
                     max_penetration: tr.max_penetration,
                     duration: te - tr.time,
                     dissipated_energy: work - tr.work0,
@@ -422,6 +426,7 @@ pub(super) fn run(s: &Scenario, progress: &mut dyn FnMut(Progress)) -> Result<Re
                         v_i: v,
                         work0: work,
                         peak_force: 0.0,
+                        time_of_peak_force: te,
                         max_penetration: 0.0,
                         recorded: None,
                     });
@@ -523,6 +528,7 @@ pub(super) fn run(s: &Scenario, progress: &mut dyn FnMut(Progress)) -> Result<Re
                 v_out: None,
                 e_post: None,
                 peak_force: tr.peak_force,
+                time_of_peak_force: tr.time_of_peak_force,
                 max_penetration: tr.max_penetration,
                 duration: t_end - tr.time,
                 dissipated_energy: y0[ei + 2 + e] - tr.work0,

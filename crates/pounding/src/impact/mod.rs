@@ -200,7 +200,8 @@ impl Default for ImpactOptions {
     }
 }
 
-/// Time history of one impact, at every accepted integration step and event.
+/// Time history of one impact, at every accepted integration step and event, and at the located peak of
+/// the force (so the largest force of the history is [`ImpactResult::peak_force`]).
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct History {

@@ -55,9 +55,10 @@ struct Segment {
 }
 
 impl Segment {
+    /// The largest force on the segment, `(t, F)`, with the state at `t` left in `buf`.
     fn peak(&self, law: &ForceLaw, buf: &mut [f64; DIM]) -> (f64, f64) {
         let tol = 1e-12 * (self.tb - self.ta).max(f64::MIN_POSITIVE);
-        golden_max(
+        let p = golden_max(
             |t| {
                 self.dense.eval(t, buf);
                 law.force(buf[0], buf[1], self.phase, &self.turn)
@@ -65,7 +66,9 @@ impl Segment {
             self.ta,
             self.tb,
             tol,
-        )
+        );
+        self.dense.eval(p.0, buf);
+        p
     }
 }
 
@@ -78,11 +81,13 @@ struct PeakTracker {
     f_prev: f64,
     f_node: f64,
     best: (f64, f64),
+    /// The state at the best time (for the history).
+    best_y: [f64; DIM],
     buf: [f64; DIM],
 }
 
 impl PeakTracker {
-    fn new(f0: f64) -> Self {
+    fn new(f0: f64, y0: [f64; DIM]) -> Self {
         let seg = || Segment {
             dense: Dense::zeros(DIM),
             ta: 0.0,
@@ -97,13 +102,15 @@ impl PeakTracker {
             f_prev: f64::NEG_INFINITY,
             f_node: f0,
             best: (0.0, f0),
+            best_y: y0,
             buf: [0.0; DIM],
         }
     }
 
-    fn consider(&mut self, p: (f64, f64)) {
+    fn consider(&mut self, p: (f64, f64), y: [f64; DIM]) {
         if p.1 > self.best.1 {
             self.best = p;
+            self.best_y = y;
         }
     }
 
@@ -114,20 +121,20 @@ impl PeakTracker {
         (ta, tb): (f64, f64),
         phase: Phase,
         turn: Turn,
-        f_end: f64,
+        (f_end, y_end): (f64, [f64; DIM]),
     ) {
         let s = &mut self.segs[self.cur];
         s.dense.copy_from(dense);
         (s.ta, s.tb, s.phase, s.turn) = (ta, tb, phase, turn);
         if self.f_node >= f_end && self.f_node >= self.f_prev {
             let p = self.segs[self.cur].peak(law, &mut self.buf);
-            self.consider(p);
+            self.consider(p, self.buf);
             if self.count > 0 {
                 let p = self.segs[1 - self.cur].peak(law, &mut self.buf);
-                self.consider(p);
+                self.consider(p, self.buf);
             }
         }
-        self.consider((tb, f_end));
+        self.consider((tb, f_end), y_end);
         self.f_prev = self.f_node;
         self.f_node = f_end;
         self.cur = 1 - self.cur;
@@ -137,7 +144,7 @@ impl PeakTracker {
     fn finish(&mut self, law: &ForceLaw) -> (f64, f64) {
         if self.count > 0 && self.f_node >= self.f_prev {
             let p = self.segs[1 - self.cur].peak(law, &mut self.buf);
-            self.consider(p);
+            self.consider(p, self.buf);
         }
         self.best
     }
@@ -210,7 +217,7 @@ pub fn simulate(
         }
     };
     record(&mut history, 0.0, &y0, clamp(f0));
-    let mut peak = PeakTracker::new(clamp(f0));
+    let mut peak = PeakTracker::new(clamp(f0), y0);
     let mut max_penetration = 0.0;
     dp.reset(&ode, 0.0, &y0, h0);
     let t_limit = 1e4 * tau;
@@ -278,7 +285,7 @@ pub fn simulate(
             }
         };
         let fe = ode.force(&ye);
-        peak.push(law, dense, (t0, te), phase, turn, clamp(fe));
+        peak.push(law, dense, (t0, te), phase, turn, (clamp(fe), ye));
         record(&mut history, te, &ye, clamp(fe));
         match event {
             None => {}
@@ -298,6 +305,17 @@ pub fn simulate(
             }
             Some(Event::Separation | Event::ZeroForce) => {
                 let (time_of_peak_force, peak_force) = peak.finish(law);
+                if let Some(h) = history.as_mut() {
+                    // The located peak joins the history, so that a plot of it shows the true peak force.
+                    let k = h.t.partition_point(|&t| t < time_of_peak_force);
+                    if h.t.get(k) != Some(&time_of_peak_force) {
+                        let y = peak.best_y;
+                        h.t.insert(k, time_of_peak_force);
+                        h.penetration.insert(k, y[0]);
+                        h.rate.insert(k, y[1]);
+                        h.force.insert(k, peak_force);
+                    }
+                }
                 return Ok(ImpactResult {
                     e_post: -ye[1] / v_i,
                     peak_force,

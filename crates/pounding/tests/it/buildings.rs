@@ -215,10 +215,24 @@ fn isolated_impact_delivers_the_single_impact_e() {
         let imp = &r.impacts[0];
         let law = spec.prepare().unwrap().law(m_eff, imp.v_i).unwrap().0;
         let setup = ImpactSetup::relative(m_eff, imp.v_i);
-        let e_single = simulate(&law, spec.tension(), &setup, &ImpactOptions::default())
-            .unwrap()
-            .e_post;
+        let single = simulate(&law, spec.tension(), &setup, &ImpactOptions::default()).unwrap();
+        let e_single = single.e_post;
         let e = imp.e_post.unwrap();
+        // Peak force and its instant (from touch), to the same order eps. (The instant of a smooth maximum
+        // is only defined to about sqrt(machine epsilon) of the contact time, hence the 1e-6 floor.)
+        assert!(
+            (imp.peak_force - single.peak_force).abs() <= (2.0 * eps + 1e-8) * single.peak_force,
+            "{model}: peak force {} vs single impact {}",
+            imp.peak_force,
+            single.peak_force
+        );
+        let t_peak = imp.time_of_peak_force - imp.time;
+        assert!(
+            (t_peak - single.time_of_peak_force).abs()
+                <= (2.0 * eps + 1e-6) * single.contact_duration,
+            "{model}: time of peak {t_peak} vs single impact {}",
+            single.time_of_peak_force
+        );
         eprintln!(
             "{model}: v_i {} e_post {e} single {e_single} eps {eps:e}",
             imp.v_i

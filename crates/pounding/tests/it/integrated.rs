@@ -1,7 +1,7 @@
 //! The event-located integration against the exact relations, closed forms and conservation laws.
 
 use crate::{damped_variants, formula, law, run};
-use pounding::contact::{ContactModel, Damping, ForceLaw, Model, Tension};
+use pounding::contact::{ContactModel, Damping, ForceLaw, Model, Phase, Tension, Turn};
 use pounding::impact::{exact, simulate, BallDrop, ImpactOptions, ImpactSetup, TwoBodies};
 use proptest::prelude::*;
 use std::f64::consts::PI;
@@ -158,4 +158,36 @@ fn bilinear_matches_its_parallelogram_closed_form() {
     .unwrap();
     let e = exact::bilinear_e_post(5e8, 1e8, 1e-3, 0.5 * 1e3 * 4.0);
     assert!((r.e_post - e).abs() < 1e-9 * e);
+}
+
+#[test]
+fn history_holds_the_located_peak_force() {
+    // A plot of the history must show the true peak: the largest force in it is `peak_force` itself, at
+    // `time_of_peak_force`, with the state there (the force law evaluated on it gives the same force).
+    for (model, tension) in damped_variants() {
+        let spec = formula(model, 1e9, 0.65).with_tension(tension);
+        let r = run(&spec, 1e4, 1.0);
+        let h = r.history.as_ref().unwrap();
+        assert!(
+            h.t.windows(2).all(|w| w[0] < w[1]),
+            "{model}: times not increasing"
+        );
+        let k = h.t.iter().position(|&t| t == r.time_of_peak_force).unwrap();
+        assert_eq!(h.force[k], r.peak_force, "{model}");
+        assert!(h.force.iter().all(|&f| f <= r.peak_force), "{model}");
+        // The state stored at a peak in approach gives the same force through the force law.
+        if h.rate[k] >= 0.0 {
+            let f = law(&spec, 1e4, 1.0).force(
+                h.penetration[k],
+                h.rate[k],
+                Phase::Approach,
+                &Turn::default(),
+            );
+            assert!(
+                (f - r.peak_force).abs() <= 1e-9 * r.peak_force,
+                "{model}: {f} vs {}",
+                r.peak_force
+            );
+        }
+    }
 }
