@@ -356,7 +356,10 @@ fn run_writes_the_four_outputs_with_units_and_a_consistent_summary() {
     for r in &rows {
         let t = |c: &str| r[col(c)].parse::<f64>().unwrap();
         let t_pk = t("time_of_peak_force_s");
-        assert!(t("time_s") < t_pk && t_pk < t("time_s") + t("duration_s"), "{r:?}");
+        assert!(
+            t("time_s") < t_pk && t_pk < t("time_s") + t("duration_s"),
+            "{r:?}"
+        );
     }
 
     // response.csv: units in every header, samples every output_dt, no NaN; peak |u| of the samples

@@ -149,20 +149,15 @@ impl BallDrop {
         4.0 / 3.0 * e_star * self.radius.sqrt()
     }
 
-    /// Stiffness (N/m^n) of a force law of exponent `n` equivalent to the Hertz contact: `k_h` for `n = 3/2`,
-    /// otherwise `k_h d_h^(3/2 - n)`, the same force as Hertz at the elastic Hertz penetration `d_h` (for
-    /// `n = 1` this is Muthukumar & DesRoches' effective stiffness `K_eff`). Our choice: the seed does not say
-    /// which linear stiffness it used.
+    /// Stiffness (N/m^n) of a force law of exponent `n` equivalent to this ball's Hertz contact; see
+    /// [`equivalent_stiffness`].
     pub fn equivalent_stiffness(&self, n: f64) -> f64 {
-        let k_h = self.hertz_stiffness();
-        let d_h = crate::contact::hertz_max_penetration(
-            1.0,
-            1.5,
+        equivalent_stiffness(
+            self.hertz_stiffness(),
             self.mass(),
             self.impact_velocity(),
-            k_h,
-        );
-        k_h * d_h.powf(1.5 - n)
+            n,
+        )
     }
 
     /// Impact velocity `sqrt(2 g h)`, m/s.
@@ -178,6 +173,24 @@ impl BallDrop {
             gravity: self.gravity,
         }
     }
+}
+
+/// Stiffness (N/m^n) of a force law of exponent `n` equivalent to a Hertz contact of stiffness `k_h`
+/// (N/m^1.5) for an impact of effective mass `mass` (kg) at `v_i` (m/s): `k_h` for `n = 3/2`, otherwise
+/// `k_h d_h^(3/2 - n)`, the same force as Hertz at the elastic Hertz penetration
+/// `d_h = (5 m v_i^2 / (4 k_h))^(2/5)`. Our choice, used to put models of different `n` on one impact (the
+/// seed does not say which linear stiffness it used).
+///
+/// ```
+/// // A linear spring equivalent to Hertz reaches the same force at d_h, F = k_h d_h^1.5.
+/// let (k_h, m, v) = (1.0e10_f64, 1.0e5_f64, 1.0_f64);
+/// let d_h = (5.0 * m * v * v / (4.0 * k_h)).powf(0.4);
+/// let k_1 = pounding::impact::equivalent_stiffness(k_h, m, v, 1.0);
+/// assert!((k_1 * d_h - k_h * d_h.powf(1.5)).abs() < 1e-9 * k_1 * d_h);
+/// ```
+pub fn equivalent_stiffness(k_h: f64, mass: f64, v_i: f64, n: f64) -> f64 {
+    let d_h = crate::contact::hertz_max_penetration(1.0, 1.5, mass, v_i, k_h);
+    k_h * d_h.powf(1.5 - n)
 }
 
 /// Accuracy and output options of [`simulate`].
