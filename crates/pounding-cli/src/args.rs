@@ -25,8 +25,12 @@ pub enum Command {
     Calibrate(CalibrateArgs),
     /// A ball dropped from a height onto a rigid slab of the same material (gravity acts during contact).
     Drop(DropArgs),
+    /// Several contact models on one impact: a table, and with --plots their force histories overlaid.
+    Compare(CompareArgs),
     /// Time-history analysis of pounding between adjacent buildings, as described by a scenario file.
     Run(RunArgs),
+    /// A self-contained HTML report (inline figures, no network access) of the output folder of a run.
+    Report(ReportArgs),
     /// Ground-motion records.
     Record {
         #[command(subcommand)]
@@ -55,6 +59,36 @@ pub struct RunArgs {
     /// Print the summary as JSON on stdout.
     #[arg(long)]
     pub json: bool,
+    /// Also write the figures (SVG) into the output folder: displacement, contact-force,
+    /// relative-displacement, energy.
+    #[arg(long)]
+    pub plots: bool,
+    /// Also write each figure as PNG (with --plots).
+    #[arg(long, requires = "plots")]
+    pub png: bool,
+    /// Also write report.html into the output folder (see `pounding report`).
+    #[arg(long)]
+    pub report: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct ReportArgs {
+    /// The output folder of `pounding run` (summary.json, response.csv, impacts.csv, energy.csv).
+    pub dir: std::path::PathBuf,
+    /// Where to write the report [default: DIR/report.html].
+    #[arg(long, value_name = "FILE.html")]
+    pub out: Option<std::path::PathBuf>,
+}
+
+/// Figures of a command: a folder for SVG files, and PNG copies on request.
+#[derive(Args, Debug, Clone)]
+pub struct PlotArgs {
+    /// Write the figures as SVG into this folder (created if missing).
+    #[arg(long, value_name = "DIR")]
+    pub plots: Option<std::path::PathBuf>,
+    /// Also write each figure as PNG (with --plots).
+    #[arg(long, requires = "plots")]
+    pub png: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -110,6 +144,9 @@ pub enum PaperTable {
         /// Print one JSON object on stdout.
         #[arg(long)]
         json: bool,
+        /// Figures: delivered against requested e (with the ideal line), and the error against e.
+        #[command(flatten)]
+        plots: PlotArgs,
     },
     /// Peak force of every model for the documented concrete ball-drop example (the seed's Table 2 needs
     /// experimental inputs it does not give).
@@ -175,6 +212,43 @@ pub struct ImpactArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
+    /// Figures: force against time and force against penetration.
+    #[command(flatten)]
+    pub plots: PlotArgs,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct CompareArgs {
+    /// Contact models, comma-separated (see `pounding models`).
+    #[arg(long, value_delimiter = ',', value_parser = parse_model, required = true)]
+    pub models: Vec<Model>,
+    /// Requested coefficient of restitution e_pre, 0 < e <= 1.
+    #[arg(long)]
+    pub e: f64,
+    /// Damping: the published formula, or the exact value that delivers e.
+    #[arg(long, value_enum, default_value_t = DampingArg::Formula)]
+    pub damping: DampingArg,
+    /// Hertz stiffness k_h, N/m^1.5, of the models with n = 1.5. A model with another n gets the
+    /// equivalent k_h d_h^(1.5 - n), d_h the elastic Hertz penetration, so all reach about the same
+    /// penetration.
+    #[arg(long, default_value_t = 1.0e10)]
+    pub k: f64,
+    /// Mass of the moving body, kg.
+    #[arg(long, default_value_t = 1.0e5)]
+    pub m1: f64,
+    /// Mass of the body at rest, kg, or inf for a rigid wall.
+    #[arg(long, default_value = "inf")]
+    pub m2: f64,
+    /// Approach velocity at first touch, m/s.
+    #[arg(long, default_value_t = 1.0)]
+    pub v: f64,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+    /// Figures: the models' force against time and force against penetration, overlaid.
+    #[command(flatten)]
+    pub plots: PlotArgs,
 }
 
 #[derive(Args, Debug)]
@@ -226,6 +300,9 @@ pub struct DropArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
+    /// Figures: force against time and force against penetration.
+    #[command(flatten)]
+    pub plots: PlotArgs,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]

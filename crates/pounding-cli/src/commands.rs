@@ -1,10 +1,11 @@
 //! The commands: validated inputs in, library calls, reports out.
 
 use crate::args::{
-    CalibrateArgs, Command, DropArgs, FormatArg, ImpactArgs, ModelArgs, PaperTable, RecordArgs,
-    RecordCmd, UnitsArg,
+    CalibrateArgs, Command, CompareArgs, DropArgs, FormatArg, ImpactArgs, ModelArgs, PaperTable,
+    PlotArgs, RecordArgs, RecordCmd, UnitsArg,
 };
-use crate::output::{fmt_num, history_csv, num, write_atomic, Report};
+use crate::output::{fmt_num, fmt_sig, history_csv, num, write_atomic, write_figures, Report};
+use crate::plot::figures::{self, Curve, ForceHistory};
 use crate::CliError;
 use pounding::contact::{
     AlphaRule, ContactModel, Damping, DampingParameter, Model, Reading, Tension, MODELS,
@@ -23,12 +24,14 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Impact(a) => impact(&a),
         Command::Calibrate(a) => calibrate(&a),
         Command::Drop(a) => drop(&a),
+        Command::Compare(a) => compare(&a),
         Command::Run(a) => crate::run::run(&a),
+        Command::Report(a) => crate::report::command(&a),
         Command::Record {
             cmd: RecordCmd::Info(a),
         } => record_info(&a),
         Command::Paper { table } => match table {
-            PaperTable::Table1 { json } => table1(json),
+            PaperTable::Table1 { json, plots } => table1(json, &plots),
             PaperTable::Table2 { json } => table2(json),
         },
     }
@@ -229,6 +232,58 @@ fn results(rep: &mut Report, s: &ContactModel, r: &ImpactResult, exact_e: Option
         .add("steps", r.steps, "");
 }
 
+/// Fails early (before any work or output) if `--plots` names a file.
+fn check_plots(p: &PlotArgs) -> Result<(), CliError> {
+    match &p.plots {
+        Some(dir) if dir.is_file() => Err(input(format!(
+            "--plots {} is a file; give a folder (it is created if missing)",
+            dir.display()
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// Writes `figs` if `--plots` was given; prints the files unless `quiet`.
+fn save_figures(p: &PlotArgs, figs: &[crate::plot::Figure], quiet: bool) -> Result<(), CliError> {
+    if let Some(dir) = &p.plots {
+        let names = write_figures(dir, figs, p.png)?;
+        if !quiet {
+            println!("\nwrote {}: {}", dir.display(), names.join(", "));
+        }
+    }
+    Ok(())
+}
+
+/// The figures of one integrated impact.
+fn impact_figures(
+    prefix: &str,
+    title: &str,
+    s: &ContactModel,
+    r: &ImpactResult,
+    inputs: &str,
+) -> Vec<crate::plot::Figure> {
+    let Some(h) = r.history.as_ref() else {
+        return Vec::new();
+    };
+    let subtitle = format!(
+        "{}; {inputs}: e_post = {}, peak force {} N",
+        contact_label(s, None).replace(" (set per impact)", ""),
+        fmt_sig(r.e_post, 6),
+        fmt_sig(r.peak_force, 5)
+    );
+    figures::impact(
+        prefix,
+        title,
+        &subtitle,
+        &[ForceHistory {
+            label: s.model().name().into(),
+            t: &h.t,
+            penetration: &h.penetration,
+            force: &h.force,
+        }],
+    )
+}
+
 fn save_history(path: Option<&Path>, r: &ImpactResult) -> Result<(), CliError> {
     if let (Some(path), Some(h)) = (path, r.history.as_ref()) {
         write_atomic(path, history_csv(h).as_bytes())
@@ -247,12 +302,13 @@ fn m2_text(m2: f64) -> String {
 }
 
 fn impact(a: &ImpactArgs) -> Result<(), CliError> {
+    check_plots(&a.plots)?;
     let bodies = TwoBodies::new(a.m1, a.m2, a.v)?;
     let s = contact(&a.model, a.k, Style::Flag)?;
     let setup = bodies.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
-        history: a.history.is_some(),
+        history: a.history.is_some() || a.plots.plots.is_some(),
         ..ImpactOptions::default()
     };
     let r = simulate(&law, s.tension(), &setup, &opts)?;
@@ -267,8 +323,26 @@ fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     results(&mut rep, &s, &r, exact_e);
     rep.add("velocity_1_after", num(v1), "m/s")
         .add("velocity_2_after", num(v2), "m/s");
+    let figs = if a.plots.plots.is_some() {
+        let inputs = format!(
+            "m1 = {} kg, m2 = {} kg, v = {} m/s",
+            fmt_num(a.m1),
+            m2_text(a.m2),
+            fmt_num(a.v)
+        );
+        impact_figures(
+            "impact",
+            &format!("Impact ({})", s.model().name()),
+            &s,
+            &r,
+            &inputs,
+        )
+    } else {
+        Vec::new()
+    };
     save_history(a.history.as_deref(), &r)?;
     rep.print(a.json);
+    save_figures(&a.plots, &figs, a.json)?;
     Ok(())
 }
 
@@ -309,6 +383,7 @@ fn calibrate(a: &CalibrateArgs) -> Result<(), CliError> {
 }
 
 fn drop(a: &DropArgs) -> Result<(), CliError> {
+    check_plots(&a.plots)?;
     let drop = BallDrop::new(a.radius, a.youngs_modulus, a.poisson, a.density, a.height)?;
     let n = a.model.n.unwrap_or(a.model.model.info().default_n);
     let s = contact(
@@ -319,7 +394,7 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
     let setup = drop.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
-        history: a.history.is_some(),
+        history: a.history.is_some() || a.plots.plots.is_some(),
         ..ImpactOptions::default()
     };
     let r = simulate(&law, s.tension(), &setup, &opts)?;
@@ -334,8 +409,143 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
         .add("hertz_stiffness", num(drop.hertz_stiffness()), "N/m^1.5")
         .add("v_i", num(setup.v_i), "m/s");
     results(&mut rep, &s, &r, None);
+    let figs = if a.plots.plots.is_some() {
+        let inputs = format!(
+            "ball R = {} m, E = {} Pa, h = {} m, v_i = {} m/s",
+            fmt_num(a.radius),
+            fmt_num(a.youngs_modulus),
+            fmt_num(a.height),
+            fmt_sig(setup.v_i, 6)
+        );
+        impact_figures(
+            "drop",
+            &format!("Ball drop ({})", s.model().name()),
+            &s,
+            &r,
+            &inputs,
+        )
+    } else {
+        Vec::new()
+    };
     save_history(a.history.as_deref(), &r)?;
     rep.print(a.json);
+    save_figures(&a.plots, &figs, a.json)?;
+    Ok(())
+}
+
+fn compare(a: &CompareArgs) -> Result<(), CliError> {
+    check_plots(&a.plots)?;
+    let bodies = TwoBodies::new(a.m1, a.m2, a.v)?;
+    if !(a.k.is_finite() && a.k > 0.0) {
+        return Err(input(format!(
+            "--k {} is not allowed: k > 0 (N/m^1.5)",
+            a.k
+        )));
+    }
+    let setup = bodies.setup();
+    let opts = ImpactOptions {
+        history: true,
+        ..ImpactOptions::default()
+    };
+    let mut runs = Vec::new();
+    for &model in &a.models {
+        let n = model.info().default_n;
+        let k = pounding::impact::equivalent_stiffness(a.k, setup.mass, setup.v_i, n);
+        let s = ContactModel::new(model, k, a.e)?.with_damping(a.damping.into());
+        let (law, _) = s.prepare()?.law(setup.mass, setup.v_i)?;
+        let r = simulate(&law, s.tension(), &setup, &opts)?;
+        runs.push((s, r));
+    }
+    let damping = damping_name(a.damping.into());
+    if a.json {
+        let rows: Vec<Value> = runs
+            .iter()
+            .map(|(s, r)| {
+                json!({
+                    "model": s.model().name(), "n": num(s.exponent()), "k": num(s.stiffness()),
+                    "e_post": num(r.e_post), "peak_force": num(r.peak_force),
+                    "time_of_peak_force": num(r.time_of_peak_force), "max_penetration": num(r.max_penetration),
+                    "contact_duration": num(r.contact_duration), "dissipated_energy": num(r.dissipated_energy),
+                })
+            })
+            .collect();
+        println!(
+            "{}",
+            json!({
+                "e_pre": num(a.e), "damping": damping, "k_hertz": num(a.k), "m1": num(a.m1),
+                "m2": if a.m2.is_finite() { num(a.m2) } else { Value::Null }, "v": num(a.v),
+                "effective_mass": num(setup.mass),
+                "units": {"k": "N/m^n", "k_hertz": "N/m^1.5", "peak_force": "N", "time_of_peak_force": "s",
+                          "max_penetration": "m", "contact_duration": "s", "dissipated_energy": "J",
+                          "m1": "kg", "m2": "kg (null: rigid)", "v": "m/s", "effective_mass": "kg"},
+                "models": rows,
+            })
+        );
+    } else {
+        println!(
+            "One impact: m1 = {} kg, m2 = {} kg, v = {} m/s, e_pre = {}, damping {damping}; k_h = {} N/m^1.5",
+            fmt_num(a.m1),
+            m2_text(a.m2),
+            fmt_num(a.v),
+            fmt_num(a.e),
+            fmt_num(a.k)
+        );
+        println!(
+            "(models with n != 1.5 use k_h d_h^(1.5 - n), d_h the elastic Hertz penetration)\n"
+        );
+        println!(
+            "{:<22} {:>4} {:>13} {:>10} {:>13} {:>12} {:>17} {:>19}",
+            "model",
+            "n",
+            "k_N_per_m^n",
+            "e_post",
+            "peak_force_N",
+            "duration_s",
+            "max_penetration_m",
+            "dissipated_energy_J"
+        );
+        for (s, r) in &runs {
+            println!(
+                "{:<22} {:>4} {:>13.5e} {:>10.6} {:>13.6e} {:>12.6e} {:>17.6e} {:>19.6e}",
+                s.model().name(),
+                s.exponent(),
+                s.stiffness(),
+                r.e_post,
+                r.peak_force,
+                r.contact_duration,
+                r.max_penetration,
+                r.dissipated_energy
+            );
+        }
+    }
+    if a.plots.plots.is_some() {
+        let histories: Vec<ForceHistory> = runs
+            .iter()
+            .filter_map(|(s, r)| {
+                r.history.as_ref().map(|h| ForceHistory {
+                    label: format!("{} (e_post {})", s.model().name(), fmt_sig(r.e_post, 4)),
+                    t: &h.t,
+                    penetration: &h.penetration,
+                    force: &h.force,
+                })
+            })
+            .collect();
+        let subtitle = format!(
+            "m1 = {} kg, m2 = {} kg, v = {} m/s, e_pre = {}, {damping} damping, k_h = {} N/m^1.5 (equivalent k for n \u{2260} 1.5)",
+            fmt_num(a.m1),
+            m2_text(a.m2),
+            fmt_num(a.v),
+            fmt_num(a.e),
+            fmt_num(a.k)
+        );
+        let figs = figures::impact(
+            "compare",
+            "Contact models on one impact",
+            &subtitle,
+            &histories,
+        );
+        save_figures(&a.plots, &figs, a.json)?;
+    }
     Ok(())
 }
 
@@ -372,8 +582,42 @@ fn models(json: bool) -> Result<(), CliError> {
     Ok(())
 }
 
-fn table1(json: bool) -> Result<(), CliError> {
+/// Delivered e of every Table 1 variant on the grid e = 0.10, 0.11, ..., 1.00, in two groups: the seed's
+/// models (those with published figures) and the other damped models.
+fn table1_curves() -> Result<Vec<(&'static str, Vec<Curve>)>, CliError> {
+    let mut seed = Vec::new();
+    let mut others = Vec::new();
+    for v in pounding::paper::variants() {
+        let e_pre: Vec<f64> = (10..=100).map(|i| f64::from(i) / 100.0).collect();
+        let e_post = e_pre
+            .iter()
+            .map(|&e| pounding::paper::e_post(&v, e))
+            .collect::<Result<Vec<_>, _>>()?;
+        let c = Curve {
+            label: v.label.into(),
+            e_pre,
+            e_post,
+        };
+        if v.published.is_some() {
+            seed.push(c);
+        } else {
+            others.push(c);
+        }
+    }
+    Ok(vec![
+        ("The seed's models", seed),
+        ("Other damped models of the library", others),
+    ])
+}
+
+fn table1(json: bool, plots: &PlotArgs) -> Result<(), CliError> {
+    check_plots(plots)?;
     let rows = pounding::paper::table1()?;
+    let figs = if plots.plots.is_some() {
+        figures::table1(&table1_curves()?)
+    } else {
+        Vec::new()
+    };
     if json {
         println!(
             "{}",
@@ -389,7 +633,7 @@ fn table1(json: bool) -> Result<(), CliError> {
                 })).collect::<Vec<_>>(),
             })
         );
-        return Ok(());
+        return save_figures(plots, &figs, true);
     }
     println!("Seed Table 1: mean |e_pre - e_post| / e_pre * 100 (%) over 0.1 <= e <= 1 (all) and 0.5 <= e <= 0.8 (mid)");
     println!("Ideal single impacts with each model's published damping; e_post exact (integrated for Jankowski).\n");
@@ -419,7 +663,7 @@ fn table1(json: bool) -> Result<(), CliError> {
     }
     println!("\nThe seed's figures for Papi (3.68 / 0.68) are shown beside each of its variants.");
     println!("See docs/paper-reproduction.md for the protocol and the differences.");
-    Ok(())
+    save_figures(plots, &figs, false)
 }
 
 /// The documented concrete ball-drop example of `docs/paper-reproduction.md`.

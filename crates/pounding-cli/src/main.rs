@@ -3,7 +3,10 @@
 mod args;
 mod commands;
 mod output;
+mod plot;
+mod report;
 mod run;
+mod run_data;
 mod scenario;
 
 use clap::Parser;

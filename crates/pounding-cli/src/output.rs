@@ -92,6 +92,15 @@ pub fn fmt_num(x: f64) -> String {
     }
 }
 
+/// `x` rounded to `digits` significant digits, without trailing zeros (for people, not for files).
+pub fn fmt_sig(x: f64, digits: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return fmt_num(x);
+    }
+    let f = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
+    fmt_num((x * f).round() / f)
+}
+
 /// A finite number as JSON, or null (JSON has no infinity or NaN).
 pub fn num(x: f64) -> Value {
     serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
@@ -118,6 +127,41 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
         let _ = std::fs::remove_file(&tmp);
     }
     result
+}
+
+/// Renders `figures` (SVG, and PNG if `png`) and writes them into `dir`, each atomically. Everything is
+/// rendered before the first file is written. Returns the file names written.
+pub fn write_figures(
+    dir: &Path,
+    figures: &[crate::plot::Figure],
+    png: bool,
+) -> Result<Vec<String>, crate::CliError> {
+    use crate::CliError;
+    if dir.is_file() {
+        return Err(CliError::Input(format!(
+            "--plots {} is a file; give a folder (it is created if missing)",
+            dir.display()
+        )));
+    }
+    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
+    for f in figures {
+        let svg = crate::plot::svg::render(f);
+        if png {
+            let bytes = crate::plot::png::render(&svg)
+                .map_err(|e| CliError::Io(format!("figure {}: {e}", f.id)))?;
+            files.push((format!("{}.png", f.id), bytes));
+        }
+        files.push((format!("{}.svg", f.id), svg.into_bytes()));
+    }
+    files.sort_by(|a, b| a.0.cmp(&b.0));
+    std::fs::create_dir_all(dir)
+        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", dir.display())))?;
+    for (name, bytes) in &files {
+        let p = dir.join(name);
+        write_atomic(&p, bytes)
+            .map_err(|e| CliError::Io(format!("cannot write {}: {e}", p.display())))?;
+    }
+    Ok(files.into_iter().map(|f| f.0).collect())
 }
 
 /// The time history of one impact as CSV with units in the header.

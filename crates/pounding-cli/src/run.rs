@@ -3,7 +3,8 @@
 
 use crate::args::RunArgs;
 use crate::commands::{contact_label, input};
-use crate::output::{fmt_num, num, write_atomic};
+use crate::output::{fmt_num, fmt_sig, num, write_atomic, write_figures};
+use crate::run_data::RunData;
 use crate::scenario::{load, Loaded};
 use crate::CliError;
 use pounding::analysis::{Results, Scenario};
@@ -56,8 +57,12 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     let results = results.map_err(|e| CliError::Input(format!("analysis failed: {e}")))?;
 
     let summary = summary_json(&scenario, &results, &a.scenario, &record_source, scale);
+    // The scenario as run travels with the results (the report shows it).
+    let scenario_text = std::fs::read_to_string(&a.scenario)
+        .map_err(|e| input(format!("cannot read {}: {e}", a.scenario.display())))?;
     // Everything is formatted before the first file is written.
     let files = [
+        ("scenario.toml", scenario_text),
         (
             "summary.json",
             serde_json::to_string_pretty(&summary).expect("JSON") + "\n",
@@ -73,14 +78,27 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         write_atomic(&p, text.as_bytes())
             .map_err(|e| CliError::Io(format!("cannot write {}: {e}", p.display())))?;
     }
+    let mut written: Vec<String> = files.iter().map(|f| f.0.to_string()).collect();
+    if a.plots || a.report {
+        // Figures and report are made from the files just written, exactly as `pounding report` makes them.
+        let data = RunData::load(&a.out)?;
+        let figs = crate::plot::figures::run(&data);
+        if a.plots {
+            written.extend(write_figures(&a.out, &figs, a.png)?);
+        }
+        if a.report {
+            written.push(crate::report::write(
+                &data,
+                &figs,
+                &a.out.join("report.html"),
+            )?);
+        }
+    }
     if a.json {
         println!("{}", serde_json::to_string_pretty(&summary).expect("JSON"));
     } else {
         print_results(&scenario, &results);
-        println!(
-            "\nwrote {}: summary.json, response.csv, impacts.csv, energy.csv",
-            a.out.display()
-        );
+        println!("\nwrote {}: {}", a.out.display(), written.join(", "));
     }
     Ok(())
 }
@@ -102,8 +120,8 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
         "record    {source} x {scale}: {} samples at {} s, PGA {} m/s^2 ({} g) at {} s",
         rec.npts(),
         fmt_num(rec.dt()),
-        fmt_num(round(p.pga, 4)),
-        fmt_num(round(p.pga / pounding::impact::STANDARD_GRAVITY, 4)),
+        fmt_sig(p.pga, 4),
+        fmt_sig(p.pga / pounding::impact::STANDARD_GRAVITY, 4),
         fmt_num(p.pga_time)
     );
     println!(
@@ -157,11 +175,6 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
         );
     }
     println!();
-}
-
-fn round(x: f64, digits: i32) -> f64 {
-    let f = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
-    (x * f).round() / f
 }
 
 fn print_results(s: &Scenario, r: &Results) {

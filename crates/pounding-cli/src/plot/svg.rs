@@ -1,0 +1,598 @@
+//! SVG rendering of a [`Figure`]. Coordinates are written to 0.01 px; long lines are thinned to the first,
+//! lowest, highest and last point of each pixel column, which keeps every peak exactly.
+
+use super::axis::Axis;
+use super::font::text_width;
+use super::{Dash, Figure, Legend, Mark, Panel, Series, Style};
+use std::fmt::Write as _;
+
+/// Size of one plot area, px.
+const PLOT_W: f64 = 620.0;
+const PLOT_H: f64 = 250.0;
+/// Font sizes, px.
+const TITLE: f64 = 16.0;
+const SUBTITLE: f64 = 12.0;
+const PANEL_TITLE: f64 = 13.0;
+const LABEL: f64 = 12.0;
+const TICK: f64 = 11.0;
+const LEGEND: f64 = 11.0;
+/// Height of one legend entry, px.
+const ENTRY: f64 = 16.0;
+/// The font stack: DejaVu Sans (whose metrics the layout uses, and which PNGs embed), then look-alikes.
+pub const FONT_FAMILY: &str = "DejaVu Sans, Verdana, Arial, Helvetica, sans-serif";
+
+/// The figure as a standalone SVG document.
+pub fn render(fig: &Figure) -> String {
+    let columns = fig.columns.max(1);
+    let axes: Vec<(Axis, Axis)> = fig.panels.iter().map(axes_of).collect();
+    let places: Vec<Place> = fig
+        .panels
+        .iter()
+        .zip(&axes)
+        .map(|(p, (xa, ya))| place_legend(p, xa, ya))
+        .collect();
+    // One left margin and one legend width for all panels, so that plots line up.
+    let tick_w = axes
+        .iter()
+        .flat_map(|(_, y)| {
+            y.ticks
+                .iter()
+                .map(move |t| text_width(&y.tick_label(*t), TICK))
+        })
+        .fold(0.0, f64::max);
+    // Whole pixels for every edge: crisp frames, and the pixel box in data-* attributes is exact.
+    let left = (10.0 + LABEL + 10.0 + tick_w + 8.0).ceil();
+    let legend_w = fig
+        .panels
+        .iter()
+        .zip(&places)
+        .filter(|(_, pl)| **pl == Place::Right)
+        .map(|(p, _)| legend_size(p).0 + 16.0)
+        .fold(0.0, f64::max)
+        .ceil();
+    let right = 18.0 + legend_w;
+    let top = 28.0;
+    let bottom = 8.0 + TICK + 10.0 + LABEL + 12.0;
+    let cell_w = left + PLOT_W + right;
+    let cell_h = top + PLOT_H + bottom;
+    let width = cell_w * columns as f64;
+    let sub = wrap(&fig.subtitle, SUBTITLE, width - 40.0);
+    let head = (14.0 + TITLE + 6.0 + (SUBTITLE + 4.0) * sub.len() as f64 + 6.0).ceil();
+    let rows = fig.panels.len().div_ceil(columns);
+    let height = head + cell_h * rows as f64;
+
+    let mut s = String::new();
+    let _ = write!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="{FONT_FAMILY}" data-figure="{id}">"#,
+        w = px(width),
+        h = px(height),
+        id = esc(&fig.id)
+    );
+    let _ = write!(s, "\n<title>{}</title>", esc(&fig.title));
+    let _ = write!(
+        s,
+        "\n<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>",
+        px(width),
+        px(height)
+    );
+    let _ = write!(
+        s,
+        "\n<text x=\"{}\" y=\"{}\" font-size=\"{TITLE}\" font-weight=\"bold\" text-anchor=\"middle\">{}</text>",
+        px(width / 2.0),
+        px(10.0 + TITLE),
+        esc(&fig.title)
+    );
+    for (i, line) in sub.iter().enumerate() {
+        let _ = write!(
+            s,
+            "\n<text class=\"subtitle\" x=\"{}\" y=\"{}\" font-size=\"{SUBTITLE}\" fill=\"#444444\" text-anchor=\"middle\">{}</text>",
+            px(width / 2.0),
+            px(14.0 + TITLE + 6.0 + SUBTITLE + (SUBTITLE + 4.0) * i as f64),
+            esc(line)
+        );
+    }
+    for (k, (panel, (xa, ya))) in fig.panels.iter().zip(&axes).enumerate() {
+        let (row, col) = (k / columns, k % columns);
+        let x0 = col as f64 * cell_w + left;
+        let y0 = head + row as f64 * cell_h + top;
+        let clip = format!("{}-clip{k}", fig.id);
+        panel_svg(&mut s, panel, (xa, ya), places[k], (x0, y0), &clip);
+    }
+    s.push_str("\n</svg>\n");
+    s
+}
+
+/// The axes of a panel: fixed ranges where given, otherwise the data's (y including 0 if asked).
+fn axes_of(p: &Panel) -> (Axis, Axis) {
+    let (xl, xh) = p.x_range.or_else(|| p.data_range(0)).unwrap_or((0.0, 1.0));
+    let (mut yl, mut yh) = p.y_range.or_else(|| p.data_range(1)).unwrap_or((0.0, 1.0));
+    if p.y_zero && p.y_range.is_none() {
+        (yl, yh) = (yl.min(0.0), yh.max(0.0));
+    }
+    let tight_y = p.y_range.is_some();
+    let y = if p.y_log {
+        Axis::log(&p.y, yl, yh)
+    } else {
+        Axis::new(&p.y, yl, yh, tight_y)
+    };
+    (Axis::new(&p.x, xl, xh, p.x_tight || p.x_range.is_some()), y)
+}
+
+/// `text` broken at spaces into lines no wider than `width` px at `size` px.
+fn wrap(text: &str, size: f64, width: f64) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ').filter(|w| !w.is_empty()) {
+        match lines.last_mut() {
+            Some(line) if text_width(&format!("{line} {word}"), size) <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
+/// A pixel coordinate as written: two decimals.
+fn px(v: f64) -> String {
+    format!("{v:.2}")
+}
+
+/// XML text and attribute escaping.
+pub fn esc(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+fn stroke(st: &Style) -> String {
+    let dash = match st.dash {
+        Dash::Solid => String::new(),
+        Dash::Dashed => format!(" stroke-dasharray=\"{} {}\"", px(6.0), px(3.5)),
+        Dash::Dotted => format!(" stroke-dasharray=\"{} {}\"", px(1.5), px(2.5)),
+    };
+    format!(
+        "stroke=\"{}\" stroke-width=\"{}\"{dash}",
+        st.color,
+        px(st.width)
+    )
+}
+
+/// Maps data to pixels inside one plot area.
+struct Map<'a> {
+    xa: &'a Axis,
+    ya: &'a Axis,
+    x0: f64,
+    y1: f64,
+}
+
+impl<'a> Map<'a> {
+    fn new(xa: &'a Axis, ya: &'a Axis, (x0, y0): (f64, f64)) -> Self {
+        Self {
+            xa,
+            ya,
+            x0,
+            y1: y0 + PLOT_H,
+        }
+    }
+    fn px(&self, v: f64) -> f64 {
+        self.x0 + self.xa.fraction(v) * PLOT_W
+    }
+    fn py(&self, v: f64) -> f64 {
+        self.y1 - self.ya.fraction(v) * PLOT_H
+    }
+}
+
+fn panel_svg(
+    s: &mut String,
+    p: &Panel,
+    (xa, ya): (&Axis, &Axis),
+    place: Place,
+    origin: (f64, f64),
+    clip: &str,
+) {
+    let (x0, y0) = origin;
+    let (x1, y1) = (x0 + PLOT_W, y0 + PLOT_H);
+    let m = Map::new(xa, ya, origin);
+    let _ = write!(
+        s,
+        "\n<g class=\"panel\" data-title=\"{}\" data-y-scale=\"{}\" data-x-lo=\"{}\" data-x-hi=\"{}\" data-y-lo=\"{}\" data-y-hi=\"{}\" \
+         data-left=\"{}\" data-right=\"{}\" data-top=\"{}\" data-bottom=\"{}\">",
+        esc(&p.title),
+        if ya.log { "log" } else { "linear" },
+        xa.lo,
+        xa.hi,
+        ya.lo,
+        ya.hi,
+        px(x0),
+        px(x1),
+        px(y0),
+        px(y1)
+    );
+    let _ = write!(
+        s,
+        "\n<clipPath id=\"{clip}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>",
+        px(x0),
+        px(y0),
+        px(PLOT_W),
+        px(PLOT_H)
+    );
+    // Grid and ticks.
+    let mut grid = String::new();
+    let mut labels = String::new();
+    for &t in &xa.ticks {
+        let x = m.px(t);
+        let _ = write!(grid, "M{} {}V{}", px(x), px(y0), px(y1));
+        let _ = write!(
+            labels,
+            "\n<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+            px(x),
+            px(y1 + 6.0 + TICK),
+            esc(&xa.tick_label(t))
+        );
+    }
+    for &t in &ya.ticks {
+        let y = m.py(t);
+        let _ = write!(grid, "M{} {}H{}", px(x0), px(y), px(x1));
+        let _ = write!(
+            labels,
+            "\n<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
+            px(x0 - 6.0),
+            px(y + 0.35 * TICK),
+            esc(&ya.tick_label(t))
+        );
+    }
+    let _ = write!(
+        s,
+        "\n<path class=\"grid\" d=\"{grid}\" stroke=\"#e2e2e2\" stroke-width=\"1\" fill=\"none\"/>"
+    );
+    let _ = write!(
+        s,
+        "\n<g class=\"ticks\" font-size=\"{TICK}\" fill=\"#222222\">{labels}\n</g>"
+    );
+    // Axis labels and title.
+    let _ = write!(
+        s,
+        "\n<text class=\"xlabel\" x=\"{}\" y=\"{}\" font-size=\"{LABEL}\" text-anchor=\"middle\">{}</text>",
+        px((x0 + x1) / 2.0),
+        px(y1 + 6.0 + TICK + 10.0 + LABEL),
+        esc(&xa.label)
+    );
+    let ylx = x0
+        - 8.0
+        - (ya.ticks.iter())
+            .map(|t| text_width(&ya.tick_label(*t), TICK))
+            .fold(0.0, f64::max)
+        - 10.0;
+    let _ = write!(
+        s,
+        "\n<text class=\"ylabel\" x=\"{}\" y=\"{}\" font-size=\"{LABEL}\" text-anchor=\"middle\" transform=\"rotate(-90 {} {})\">{}</text>",
+        px(ylx),
+        px((y0 + y1) / 2.0),
+        px(ylx),
+        px((y0 + y1) / 2.0),
+        esc(&ya.label)
+    );
+    if !p.title.is_empty() {
+        let _ = write!(
+            s,
+            "\n<text class=\"ptitle\" x=\"{}\" y=\"{}\" font-size=\"{PANEL_TITLE}\">{}</text>",
+            px(x0),
+            px(y0 - 9.0),
+            esc(&p.title)
+        );
+    }
+    // Data, clipped to the plot area.
+    let _ = write!(s, "\n<g clip-path=\"url(#{clip})\">");
+    for ser in &p.series {
+        series_svg(s, ser, &m, y0);
+    }
+    s.push_str("\n</g>");
+    let _ = write!(
+        s,
+        "\n<rect class=\"frame\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#222222\" stroke-width=\"1\"/>",
+        px(x0),
+        px(y0),
+        px(PLOT_W),
+        px(PLOT_H)
+    );
+    legend_svg(s, p, place, (x0, y0, x1));
+    s.push_str("\n</g>");
+}
+
+/// The pixel points a series draws (lines thinned as drawn), for placing the legend.
+fn pixels(ser: &Series, m: &Map) -> Vec<(f64, f64)> {
+    match &ser.mark {
+        Mark::Line { x, y } | Mark::Points { x, y } => {
+            let pts: Vec<(f64, f64)> = x
+                .iter()
+                .zip(y)
+                .filter(|(a, b)| a.is_finite() && b.is_finite())
+                .map(|(a, b)| (m.px(*a), m.py(*b)))
+                .collect();
+            if matches!(ser.mark, Mark::Line { .. }) {
+                thin(&pts).into_iter().map(|i| pts[i]).collect()
+            } else {
+                pts
+            }
+        }
+        Mark::HLine(v) => (0..=20)
+            .map(|i| (m.x0 + PLOT_W * f64::from(i) / 20.0, m.py(*v)))
+            .collect(),
+        Mark::Rug(_) => Vec::new(),
+    }
+}
+
+fn series_svg(s: &mut String, ser: &Series, m: &Map, y0: f64) {
+    let label = esc(&ser.label);
+    match &ser.mark {
+        Mark::Line { x, y } => {
+            let pts: Vec<(f64, f64)> = x
+                .iter()
+                .zip(y)
+                .filter(|(a, b)| a.is_finite() && b.is_finite())
+                .map(|(a, b)| (m.px(*a), m.py(*b)))
+                .collect();
+            let keep = thin(&pts);
+            let mut d = String::with_capacity(keep.len() * 16);
+            for (k, &i) in keep.iter().enumerate() {
+                if k > 0 {
+                    d.push(' ');
+                }
+                let _ = write!(d, "{},{}", px(pts[i].0), px(pts[i].1));
+            }
+            let _ = write!(
+                s,
+                "\n<polyline class=\"line\" data-label=\"{label}\" fill=\"none\" stroke-linejoin=\"round\" {} points=\"{d}\"/>",
+                stroke(&ser.style)
+            );
+        }
+        Mark::Points { x, y } => {
+            let _ = write!(
+                s,
+                "\n<g class=\"points\" data-label=\"{label}\" fill=\"{}\" fill-opacity=\"0.85\">",
+                ser.style.color
+            );
+            for (a, b) in x.iter().zip(y) {
+                let (cx, cy) = (m.px(*a), m.py(*b));
+                let _ = write!(
+                    s,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>",
+                    px(cx),
+                    px(cy),
+                    px(ser.style.width + 1.2)
+                );
+            }
+            s.push_str("</g>");
+        }
+        Mark::HLine(v) => {
+            let y = m.py(*v);
+            let _ = write!(
+                s,
+                "\n<line class=\"hline\" data-label=\"{label}\" data-value=\"{v}\" x1=\"{}\" x2=\"{}\" y1=\"{}\" y2=\"{}\" {}/>",
+                px(m.x0),
+                px(m.x0 + PLOT_W),
+                px(y),
+                px(y),
+                stroke(&ser.style)
+            );
+        }
+        Mark::Rug(t) => {
+            let mut d = String::new();
+            for &v in t {
+                let _ = write!(d, "M{} {}v{}", px(m.px(v)), px(y0), px(9.0));
+            }
+            let _ = write!(
+                s,
+                "\n<path class=\"rug\" data-label=\"{label}\" data-count=\"{}\" d=\"{d}\" fill=\"none\" {}/>",
+                t.len(),
+                stroke(&ser.style)
+            );
+        }
+    }
+}
+
+/// Indices of the points to draw: all of them for short lines or lines that turn back in x (loops);
+/// otherwise, per pixel column, the first, lowest, highest and last point, in order.
+fn thin(pts: &[(f64, f64)]) -> Vec<usize> {
+    let monotone = pts.windows(2).all(|w| w[1].0 >= w[0].0);
+    if pts.len() <= 4 * PLOT_W as usize || !monotone {
+        return (0..pts.len()).collect();
+    }
+    let mut keep = Vec::new();
+    let mut k = 0;
+    while k < pts.len() {
+        let column = pts[k].0.floor();
+        let start = k;
+        let (mut lo, mut hi) = (k, k);
+        while k < pts.len() && pts[k].0.floor() == column {
+            // Pixel y grows downwards: the lowest value has the largest y.
+            if pts[k].1 > pts[lo].1 {
+                lo = k;
+            }
+            if pts[k].1 < pts[hi].1 {
+                hi = k;
+            }
+            k += 1;
+        }
+        let mut group = [start, lo, hi, k - 1];
+        group.sort_unstable();
+        for i in group {
+            if keep.last() != Some(&i) {
+                keep.push(i);
+            }
+        }
+    }
+    keep
+}
+
+/// Width and height of a panel's legend box, px.
+fn legend_size(p: &Panel) -> (f64, f64) {
+    let labelled: Vec<&Series> = p.series.iter().filter(|s| !s.label.is_empty()).collect();
+    let w = labelled
+        .iter()
+        .map(|s| text_width(&s.label, LEGEND))
+        .fold(0.0, f64::max);
+    (w + 40.0, labelled.len() as f64 * ENTRY + 8.0)
+}
+
+/// Where a legend goes: a corner of the plot (offset of its box from the plot's top left), or the right.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Place {
+    Corner(f64, f64),
+    Right,
+    Nowhere,
+}
+
+/// An inside legend goes in the first corner (top right, top left, bottom right, bottom left) where it hides
+/// no data; if every corner hides some, it goes to the right of the plot.
+fn place_legend(p: &Panel, xa: &Axis, ya: &Axis) -> Place {
+    let (w, h) = legend_size(p);
+    match p.legend {
+        _ if h <= 8.0 => return Place::Nowhere,
+        Legend::None => return Place::Nowhere,
+        Legend::Right => return Place::Right,
+        Legend::Inside => {}
+    }
+    let m = Map::new(xa, ya, (0.0, 0.0));
+    let dots: Vec<(f64, f64)> = p.series.iter().flat_map(|s| pixels(s, &m)).collect();
+    let pad = 8.0;
+    let corners = [
+        (PLOT_W - pad - w, pad + 10.0),
+        (pad, pad + 10.0),
+        (PLOT_W - pad - w, PLOT_H - pad - h),
+        (pad, PLOT_H - pad - h),
+    ];
+    // A line between two drawn points can cross the box with both points outside: test the segments too.
+    let hides = |&(cx, cy): &(f64, f64)| {
+        let inside = |(x, y): (f64, f64)| {
+            x >= cx - 3.0 && x <= cx + w + 3.0 && y >= cy - 3.0 && y <= cy + h + 3.0
+        };
+        dots.iter().any(|&d| inside(d))
+            || dots.windows(2).any(|s| {
+                let (a, b) = (s[0], s[1]);
+                let n = ((b.0 - a.0).hypot(b.1 - a.1) / 4.0).ceil().min(400.0) as usize;
+                (1..n).any(|i| {
+                    let f = i as f64 / n as f64;
+                    inside((a.0 + f * (b.0 - a.0), a.1 + f * (b.1 - a.1)))
+                })
+            })
+    };
+    corners
+        .iter()
+        .find(|c| !hides(c))
+        .map_or(Place::Right, |&(x, y)| Place::Corner(x, y))
+}
+
+fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, f64)) {
+    let (w, h) = legend_size(p);
+    let (lx, ly) = match place {
+        Place::Nowhere => return,
+        Place::Right => (x1 + 14.0, y0),
+        Place::Corner(dx, dy) => (x0 + dx, y0 + dy),
+    };
+    let _ = write!(
+        s,
+        "\n<g class=\"legend\" font-size=\"{LEGEND}\">\n<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#ffffff\" fill-opacity=\"0.9\" stroke=\"#bbbbbb\" stroke-width=\"0.8\"/>",
+        px(lx),
+        px(ly),
+        px(w),
+        px(h)
+    );
+    for (i, ser) in p.series.iter().filter(|s| !s.label.is_empty()).enumerate() {
+        let cy = ly + 4.0 + ENTRY * (i as f64 + 0.5);
+        let sx = lx + 8.0;
+        match ser.mark {
+            Mark::Points { .. } => {
+                let _ = write!(
+                    s,
+                    "\n<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>",
+                    px(sx + 11.0),
+                    px(cy),
+                    px(ser.style.width + 1.2),
+                    ser.style.color
+                );
+            }
+            Mark::Rug(_) => {
+                let _ = write!(
+                    s,
+                    "\n<path d=\"M{} {}v9\" fill=\"none\" {}/>",
+                    px(sx + 11.0),
+                    px(cy - 4.5),
+                    stroke(&ser.style)
+                );
+            }
+            _ => {
+                let _ = write!(
+                    s,
+                    "\n<path d=\"M{} {}h22\" fill=\"none\" {}/>",
+                    px(sx),
+                    px(cy),
+                    stroke(&ser.style)
+                );
+            }
+        }
+        let _ = write!(
+            s,
+            "\n<text x=\"{}\" y=\"{}\">{}</text>",
+            px(sx + 28.0),
+            px(cy + 0.35 * LEGEND),
+            esc(&ser.label)
+        );
+    }
+    s.push_str("\n</g>");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn thinning_keeps_every_extreme() {
+        // 100 000 samples of a fast oscillation with one spike: the spike and both extremes survive.
+        let n = 100_000;
+        let mut pts: Vec<(f64, f64)> = (0..n)
+            .map(|i| {
+                (
+                    i as f64 * PLOT_W / n as f64,
+                    100.0 + 50.0 * (i as f64 * 0.37).sin(),
+                )
+            })
+            .collect();
+        pts[54_321].1 = -400.0;
+        let keep = thin(&pts);
+        assert!(keep.len() <= 4 * (PLOT_W as usize + 1));
+        assert!(keep.windows(2).all(|w| w[0] < w[1]));
+        assert!(keep.contains(&54_321));
+        let ys = |v: &Vec<usize>| {
+            v.iter()
+                .map(|&i| pts[i].1)
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        assert_eq!(ys(&keep), ys(&(0..n).collect()));
+    }
+
+    #[test]
+    fn long_subtitles_wrap_at_spaces() {
+        let text = "m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s, e_pre = 0.65, formula damping";
+        let lines = wrap(text, 12.0, 200.0);
+        assert!(lines.len() > 1);
+        assert_eq!(lines.join(" "), text);
+        assert!(lines.iter().all(|l| text_width(l, 12.0) <= 200.0));
+    }
+
+    #[test]
+    fn escapes_markup() {
+        assert_eq!(esc("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+    }
+}

@@ -1,0 +1,457 @@
+//! `pounding report DIR`: one self-contained HTML file from the output folder of a run: the scenario, modal
+//! properties, summary tables, every impact and the figures as inline SVG. No script, no external file, and a
+//! Content-Security-Policy that forbids any network access; it opens offline and can be mailed.
+//!
+//! The document is well-formed XML as well as HTML5 (void elements closed, only XML's five entities), so
+//! that tests and scripts can parse it with any XML reader.
+
+use crate::args::ReportArgs;
+use crate::output::{fmt_sig, write_atomic};
+use crate::plot::{svg, Figure};
+use crate::run_data::RunData;
+use crate::CliError;
+use serde_json::Value;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Impacts listed in the report's table at most (all are in impacts.csv).
+const MAX_IMPACT_ROWS: usize = 1000;
+
+/// `pounding report DIR [--out FILE]`.
+pub fn command(a: &ReportArgs) -> Result<(), CliError> {
+    if !a.dir.is_dir() {
+        return Err(CliError::Input(format!(
+            "{} is not a folder (give the --out folder of `pounding run`)",
+            a.dir.display()
+        )));
+    }
+    let out = a.out.clone().unwrap_or_else(|| a.dir.join("report.html"));
+    if out.is_dir() {
+        return Err(CliError::Input(format!(
+            "--out {} is a folder; give a file name such as report.html",
+            out.display()
+        )));
+    }
+    let data = RunData::load(&a.dir)?;
+    let figs = crate::plot::figures::run(&data);
+    let name = write(&data, &figs, &out)?;
+    println!("wrote {}", out.with_file_name(name).display());
+    Ok(())
+}
+
+/// Writes the report of `data` with `figs` to `path` (atomically); returns its file name.
+pub fn write(data: &RunData, figs: &[Figure], path: &Path) -> Result<String, CliError> {
+    let html = html(data, figs);
+    write_atomic(path, html.as_bytes())
+        .map_err(|e| CliError::Io(format!("cannot write {}: {e}", path.display())))?;
+    Ok(path
+        .file_name()
+        .map_or("report.html".into(), |n| n.to_string_lossy().into_owned()))
+}
+
+fn e(s: &str) -> String {
+    svg::esc(s)
+}
+
+/// A number for people: 5 significant digits.
+fn n(v: &Value) -> String {
+    v.as_f64().map_or("–".into(), |x| fmt_sig(x, 5))
+}
+
+/// A table: id, caption, header cells (with units) and rows of cells (already escaped).
+fn table(out: &mut String, id: &str, caption: &str, head: &[&str], rows: &[Vec<String>]) {
+    let _ = write!(
+        out,
+        "\n<table id=\"{id}\"><caption>{}</caption>\n<thead><tr>",
+        e(caption)
+    );
+    for h in head {
+        let _ = write!(out, "<th>{}</th>", e(h));
+    }
+    out.push_str("</tr></thead>\n<tbody>");
+    for r in rows {
+        out.push_str("\n<tr>");
+        for c in r {
+            let _ = write!(out, "<td>{c}</td>");
+        }
+        out.push_str("</tr>");
+    }
+    out.push_str("\n</tbody></table>");
+}
+
+const STYLE: &str = "
+body { font-family: 'DejaVu Sans', Verdana, Arial, Helvetica, sans-serif; color: #1a1a1a; margin: 2em auto;
+       max-width: 1180px; padding: 0 1.5em; line-height: 1.45; }
+h1 { font-size: 1.6em; margin-bottom: 0.2em; }
+h2 { font-size: 1.25em; border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 2em; }
+p.meta { color: #555; margin-top: 0; }
+nav a { margin-right: 1em; }
+table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }
+caption { text-align: left; font-weight: bold; padding-bottom: 0.3em; }
+th, td { border: 1px solid #d0d0d0; padding: 0.2em 0.6em; }
+th { background: #f2f2f2; font-weight: normal; text-align: center; }
+td { text-align: right; font-variant-numeric: tabular-nums; }
+td:first-child { text-align: left; }
+pre { background: #f6f6f6; border: 1px solid #ddd; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }
+figure { margin: 1.5em 0; }
+figure svg { max-width: 100%; height: auto; border: 1px solid #eee; }
+figcaption { color: #444; font-size: 0.9em; }
+dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1.2em; }
+dl.summary dt { color: #555; }
+dl.summary dd { margin: 0; }
+@media print { figure { break-inside: avoid; } }
+";
+
+/// The report as an HTML document.
+pub fn html(d: &RunData, figs: &[Figure]) -> String {
+    let s = &d.summary;
+    let scenario = s["scenario"].as_str().unwrap_or("scenario");
+    let title = format!(
+        "Pounding analysis: {}",
+        Path::new(scenario)
+            .file_name()
+            .map_or(scenario.into(), |n| n.to_string_lossy())
+    );
+    let mut h = String::new();
+    h.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n");
+    // No network: everything is inline; images only as data: URLs (none are used).
+    h.push_str("<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'; img-src data:\"/>\n");
+    h.push_str("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n");
+    let _ = write!(
+        h,
+        "<title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>",
+        e(&title)
+    );
+    let _ = write!(h, "\n<h1>{}</h1>", e(&title));
+    let _ = write!(
+        h,
+        "\n<p class=\"meta\">{} · written by pounding {} from the files of its output folder · SI units</p>",
+        e(&d.subtitle),
+        env!("CARGO_PKG_VERSION")
+    );
+    h.push_str("\n<nav><a href=\"#summary\">Summary</a><a href=\"#scenario\">Scenario</a><a href=\"#modes\">Modal properties</a><a href=\"#response\">Peak response</a><a href=\"#contacts\">Contacts</a><a href=\"#figures\">Figures</a><a href=\"#impacts\">Impacts</a></nav>");
+
+    // Summary.
+    h.push_str("\n<h2 id=\"summary\">Summary</h2>\n<dl class=\"summary\">");
+    let rec = &s["record"];
+    let dl = |h: &mut String, k: &str, v: String| {
+        let _ = write!(h, "\n<dt>{}</dt><dd>{}</dd>", e(k), v);
+    };
+    dl(
+        &mut h,
+        "ground motion",
+        format!(
+            "{} × {} ({} samples at {} s, PGA {} m/s²)",
+            e(rec["source"].as_str().unwrap_or("")),
+            n(&rec["scale"]),
+            rec["npts"],
+            n(&rec["dt"]),
+            n(&rec["pga"])
+        ),
+    );
+    dl(
+        &mut h,
+        "analysis",
+        format!(
+            "{} s, output every {} s, tolerance {}",
+            n(&s["duration"]),
+            n(&s["output_dt"]),
+            n(&s["tolerance"])
+        ),
+    );
+    for b in s["buildings"].as_array().into_iter().flatten() {
+        let peak = b["peak_displacement"]
+            .as_array()
+            .and_then(|a| a.last())
+            .cloned()
+            .unwrap_or(Value::Null);
+        dl(
+            &mut h,
+            &format!("building {}", b["name"].as_str().unwrap_or("")),
+            format!(
+                "{} storey{}, T1 = {} s, roof peak displacement {} m",
+                b["storeys"],
+                if b["storeys"].as_u64() == Some(1) {
+                    ""
+                } else {
+                    "s"
+                },
+                n(&b["periods"][0]),
+                n(&peak)
+            ),
+        );
+    }
+    for c in s["contacts"].as_array().into_iter().flatten() {
+        dl(
+            &mut h,
+            &format!("contact {}", between(c)),
+            format!(
+                "{} impacts, peak force {} N, dissipated {} J",
+                c["impacts"],
+                n(&c["peak_force"]),
+                n(&c["dissipated_energy"])
+            ),
+        );
+    }
+    let ended: Vec<f64> = d.impacts.iter().filter_map(|i| i.e_post).collect();
+    if !ended.is_empty() {
+        let lo = ended.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = ended.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        dl(
+            &mut h,
+            "delivered e of the impacts",
+            format!("{} to {}", fmt_sig(lo, 4), fmt_sig(hi, 4)),
+        );
+    }
+    dl(
+        &mut h,
+        "energy balance error",
+        format!(
+            "{} (largest over the run, relative to the largest energy)",
+            n(&s["energy_balance_error"])
+        ),
+    );
+    h.push_str("\n</dl>");
+
+    // Scenario.
+    h.push_str("\n<h2 id=\"scenario\">Scenario</h2>");
+    match &d.scenario_text {
+        Some(t) => {
+            let _ = write!(h, "\n<pre>{}</pre>", e(t));
+        }
+        None => h.push_str("\n<p>The output folder holds no scenario.toml.</p>"),
+    }
+
+    // Modal properties.
+    h.push_str("\n<h2 id=\"modes\">Modal properties</h2>");
+    for (k, b) in s["buildings"].as_array().into_iter().flatten().enumerate() {
+        let name = b["name"].as_str().unwrap_or("");
+        let arr = |key: &str| b[key].as_array().cloned().unwrap_or_default();
+        let (periods, zeta, mass, shapes) = (
+            arr("periods"),
+            arr("modal_damping_ratios"),
+            arr("effective_modal_mass_ratios"),
+            arr("mode_shapes"),
+        );
+        let rows: Vec<Vec<String>> = periods
+            .iter()
+            .enumerate()
+            .map(|(r, t)| {
+                let shape: Vec<String> = shapes[r]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                    .map(|x| format!("{:.3}", x.as_f64().unwrap_or(0.0)))
+                    .collect();
+                vec![
+                    (r + 1).to_string(),
+                    format!("{:.4}", t.as_f64().unwrap_or(0.0)),
+                    format!("{:.2}", 100.0 * zeta[r].as_f64().unwrap_or(0.0)),
+                    format!("{:.1}", 100.0 * mass[r].as_f64().unwrap_or(0.0)),
+                    shape.join(" "),
+                ]
+            })
+            .collect();
+        table(
+            &mut h,
+            &format!("modes-{k}"),
+            &format!("Building {name}"),
+            &[
+                "mode",
+                "period (s)",
+                "damping (%)",
+                "effective mass (%)",
+                "shape, floor 1 up (roof = 1)",
+            ],
+            &rows,
+        );
+    }
+
+    // Peak response.
+    h.push_str("\n<h2 id=\"response\">Peak response</h2>");
+    let mut rows = Vec::new();
+    for b in s["buildings"].as_array().into_iter().flatten() {
+        let name = e(b["name"].as_str().unwrap_or(""));
+        let storeys = b["storeys"].as_u64().unwrap_or(0) as usize;
+        for f in 0..storeys {
+            rows.push(vec![
+                name.clone(),
+                (f + 1).to_string(),
+                n(&b["peak_displacement"][f]),
+                n(&b["time_of_peak_displacement"][f]),
+                n(&b["peak_drift"][f]),
+                b["peak_drift_ratio"][f]
+                    .as_f64()
+                    .map_or("–".into(), |r| format!("{:.3}", 100.0 * r)),
+            ]);
+        }
+    }
+    table(
+        &mut h,
+        "peaks",
+        "Largest displacement of each floor and drift of each storey",
+        &[
+            "building",
+            "floor / storey",
+            "peak displacement (m)",
+            "at (s)",
+            "peak drift (m)",
+            "drift ratio (%)",
+        ],
+        &rows,
+    );
+
+    // Contacts and energy.
+    h.push_str("\n<h2 id=\"contacts\">Contacts and energy</h2>");
+    let rows: Vec<Vec<String>> = s["contacts"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|c| {
+            let floors: Vec<String> = c["floors"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .map(|p| format!("{}-{}", p[0], p[1]))
+                .collect();
+            let param = match &c["damping_parameter"] {
+                Value::Object(p) => format!(
+                    "{} = {}",
+                    e(p.get("name").and_then(Value::as_str).unwrap_or("")),
+                    p.get("value").map_or("–".into(), n)
+                ),
+                _ => "set per impact".into(),
+            };
+            vec![
+                e(&between(c)),
+                n(&c["gap"]),
+                floors.join(", "),
+                e(c["model"].as_str().unwrap_or("")),
+                n(&c["e"]),
+                format!("{} (n = {})", n(&c["stiffness"]), n(&c["exponent"])),
+                param,
+                c["impacts"].to_string(),
+                n(&c["peak_force"]),
+                n(&c["max_penetration"]),
+                n(&c["dissipated_energy"]),
+            ]
+        })
+        .collect();
+    table(
+        &mut h,
+        "contacts",
+        "Contacts",
+        &[
+            "contact",
+            "gap (m)",
+            "floors",
+            "model",
+            "e",
+            "k (N/m^n)",
+            "damping",
+            "impacts",
+            "peak force (N)",
+            "max penetration (m)",
+            "dissipated (J)",
+        ],
+        &rows,
+    );
+    let en = &s["energy"];
+    table(
+        &mut h,
+        "energy",
+        "Energy at the end of the analysis (J): input = kinetic + strain + structural damping + contact",
+        &[
+            "input",
+            "kinetic",
+            "strain",
+            "structural damping",
+            "contact",
+            "balance error (relative)",
+        ],
+        &[vec![
+            n(&en["input"]),
+            n(&en["kinetic"]),
+            n(&en["strain"]),
+            n(&en["structural_damping"]),
+            n(&en["contact"]),
+            n(&s["energy_balance_error"]),
+        ]],
+    );
+
+    // Figures.
+    h.push_str("\n<h2 id=\"figures\">Figures</h2>");
+    for (k, f) in figs.iter().enumerate() {
+        let _ = write!(
+            h,
+            "\n<figure id=\"fig-{}\">\n{}<figcaption>Figure {}: {} ({}.svg with <code>--plots</code>)</figcaption>\n</figure>",
+            e(&f.id),
+            svg::render(f),
+            k + 1,
+            e(&f.title),
+            e(&f.id)
+        );
+    }
+
+    // Impacts.
+    h.push_str("\n<h2 id=\"impacts\">Impacts</h2>");
+    let shown = d.impacts.len().min(MAX_IMPACT_ROWS);
+    if shown < d.impacts.len() {
+        let _ = write!(
+            h,
+            "\n<p>The first {shown} of {} impacts; all are in impacts.csv.</p>",
+            d.impacts.len()
+        );
+    }
+    let rows: Vec<Vec<String>> = d.impacts[..shown]
+        .iter()
+        .enumerate()
+        .map(|(k, i)| {
+            vec![
+                (k + 1).to_string(),
+                e(&d.contacts[i.contact].name),
+                format!("{}-{}", i.floors.0, i.floors.1),
+                fmt_sig(i.time, 6),
+                fmt_sig(i.v_i, 4),
+                i.e_post.map_or("(not ended)".into(), |x| fmt_sig(x, 4)),
+                fmt_sig(i.peak_force, 4),
+                fmt_sig(i.time_of_peak_force, 6),
+                fmt_sig(i.duration, 4),
+                fmt_sig(i.max_penetration, 4),
+                fmt_sig(i.dissipated_energy, 4),
+            ]
+        })
+        .collect();
+    table(
+        &mut h,
+        "impact-list",
+        "Every impact (time of touch, relative velocity at touch, delivered e = −v_out / v_i)",
+        &[
+            "#",
+            "contact",
+            "floors",
+            "touch (s)",
+            "v_i (m/s)",
+            "e_post",
+            "peak force (N)",
+            "peak at (s)",
+            "duration (s)",
+            "max penetration (m)",
+            "dissipated (J)",
+        ],
+        &rows,
+    );
+    h.push_str("\n<footer><p class=\"meta\">Files: summary.json, response.csv, impacts.csv, energy.csv, scenario.toml (units in every column header).</p></footer>");
+    h.push_str("\n</body>\n</html>\n");
+    h
+}
+
+fn between(c: &Value) -> String {
+    let names: Vec<&str> = c["between"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_str)
+        .collect();
+    names.join("|")
+}

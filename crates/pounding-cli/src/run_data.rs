@@ -1,0 +1,336 @@
+//! The output folder of `pounding run`, read back: what the figures and the report are made from, so that
+//! `pounding report DIR` gives the same figures as `run --plots` did, from the files alone.
+
+use crate::CliError;
+use serde_json::Value;
+use std::path::Path;
+
+/// One building's floor displacements.
+pub struct BuildingData {
+    /// Name.
+    pub name: String,
+    /// Displacement relative to the ground of each floor (floor 1 first), m, at [`RunData::t`].
+    pub floors: Vec<Vec<f64>>,
+}
+
+/// One contact element (a pair of floors) of a contact.
+pub struct ElementData {
+    /// Floors (left, right), counted from 1.
+    pub floors: (usize, usize),
+    /// Contact force, N, at [`RunData::t`].
+    pub force: Vec<f64>,
+}
+
+/// One contact between neighbouring buildings.
+pub struct ContactData {
+    /// `left|right`.
+    pub name: String,
+    /// Index of the left building.
+    pub left: usize,
+    /// Index of the right building.
+    pub right: usize,
+    /// Gap at rest, m.
+    pub gap: f64,
+    /// Coefficient of restitution the contact model was given.
+    pub e: f64,
+    /// Its elements.
+    pub elements: Vec<ElementData>,
+}
+
+/// One row of impacts.csv.
+pub struct ImpactRow {
+    /// Index of the contact.
+    pub contact: usize,
+    /// Floors (left, right).
+    pub floors: (usize, usize),
+    /// Time of touch, s.
+    pub time: f64,
+    /// Relative velocity at touch, m/s.
+    pub v_i: f64,
+    /// Delivered e, if the impact ended.
+    pub e_post: Option<f64>,
+    /// Largest force, N.
+    pub peak_force: f64,
+    /// Time of the largest force, s.
+    pub time_of_peak_force: f64,
+    /// Duration, s.
+    pub duration: f64,
+    /// Energy dissipated, J.
+    pub dissipated_energy: f64,
+    /// Largest penetration, m.
+    pub max_penetration: f64,
+}
+
+/// Everything a run wrote, parsed.
+pub struct RunData {
+    /// summary.json.
+    pub summary: Value,
+    /// The scenario file as run (scenario.toml), if present.
+    pub scenario_text: Option<String>,
+    /// One line: scenario, record, duration, impacts.
+    pub subtitle: String,
+    /// Output times, s.
+    pub t: Vec<f64>,
+    /// Ground acceleration, m/s^2, at `t`.
+    pub ground_acceleration: Vec<f64>,
+    /// Buildings, left to right.
+    pub buildings: Vec<BuildingData>,
+    /// Contacts, left to right.
+    pub contacts: Vec<ContactData>,
+    /// Every impact, in time order.
+    pub impacts: Vec<ImpactRow>,
+    /// Input, kinetic, strain, structural damping, contact energy, J, at `t`.
+    pub energy: Vec<Vec<f64>>,
+}
+
+fn bad(dir: &Path, what: impl std::fmt::Display) -> CliError {
+    CliError::Input(format!(
+        "{}: {what} (give the --out folder of `pounding run`)",
+        dir.display()
+    ))
+}
+
+fn read(dir: &Path, name: &str) -> Result<String, CliError> {
+    std::fs::read_to_string(dir.join(name))
+        .map_err(|e| bad(dir, format!("cannot read {name}: {e}")))
+}
+
+/// A CSV table of numbers (empty cells and `true`/`false` kept as text): header and rows of cells.
+fn csv(dir: &Path, name: &str) -> Result<(Vec<String>, Vec<Vec<String>>), CliError> {
+    let text = read(dir, name)?;
+    let mut lines = text.lines();
+    let header: Vec<String> = lines
+        .next()
+        .ok_or_else(|| bad(dir, format!("{name} is empty")))?
+        .split(',')
+        .map(String::from)
+        .collect();
+    let rows: Vec<Vec<String>> = lines
+        .filter(|l| !l.is_empty())
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    if let Some((k, _)) = rows
+        .iter()
+        .enumerate()
+        .find(|(_, r)| r.len() != header.len())
+    {
+        return Err(bad(
+            dir,
+            format!("{name} line {}: wrong number of columns", k + 2),
+        ));
+    }
+    Ok((header, rows))
+}
+
+fn number(dir: &Path, name: &str, cell: &str) -> Result<f64, CliError> {
+    cell.parse::<f64>()
+        .ok()
+        .filter(|x| x.is_finite())
+        .ok_or_else(|| bad(dir, format!("{name}: {cell:?} is not a number")))
+}
+
+/// Column `k` of `rows` as numbers.
+fn column(dir: &Path, name: &str, rows: &[Vec<String>], k: usize) -> Result<Vec<f64>, CliError> {
+    rows.iter().map(|r| number(dir, name, &r[k])).collect()
+}
+
+impl RunData {
+    /// Reads the files `pounding run` wrote into `dir`.
+    pub fn load(dir: &Path) -> Result<Self, CliError> {
+        let summary: Value = serde_json::from_str(&read(dir, "summary.json")?)
+            .map_err(|e| bad(dir, format!("summary.json: {e}")))?;
+        let scenario_text = std::fs::read_to_string(dir.join("scenario.toml")).ok();
+        let list = |key: &str| summary[key].as_array().cloned().unwrap_or_default();
+
+        let (header, rows) = csv(dir, "response.csv")?;
+        let t = column(dir, "response.csv", &rows, 0)?;
+        let ground_acceleration = column(dir, "response.csv", &rows, 1)?;
+        let mut k = 2;
+        let mut expect = |col: &str| -> Result<usize, CliError> {
+            match header.get(k) {
+                Some(h) if h == col => {
+                    k += 1;
+                    Ok(k - 1)
+                }
+                other => Err(bad(
+                    dir,
+                    format!(
+                        "response.csv: column {} is {other:?}, expected {col:?}",
+                        k + 1
+                    ),
+                )),
+            }
+        };
+        let mut buildings = Vec::new();
+        let mut names = Vec::new();
+        let mut columns = Vec::new();
+        for b in list("buildings") {
+            let name = b["name"].as_str().unwrap_or_default().to_string();
+            let storeys = b["storeys"].as_u64().unwrap_or(0) as usize;
+            let mut cols = Vec::new();
+            for f in 1..=storeys {
+                cols.push(expect(&format!("{name}_floor{f}_displacement_m"))?);
+            }
+            names.push(name.clone());
+            columns.push(cols);
+            buildings.push(name);
+        }
+        let mut contacts = Vec::new();
+        let mut contact_columns = Vec::new();
+        for c in list("contacts") {
+            let between: Vec<String> = c["between"]
+                .as_array()
+                .map(|a| {
+                    a.iter()
+                        .filter_map(|v| v.as_str().map(String::from))
+                        .collect()
+                })
+                .unwrap_or_default();
+            let (Some(left), Some(right)) = (
+                between
+                    .first()
+                    .and_then(|n| names.iter().position(|x| x == n)),
+                between
+                    .get(1)
+                    .and_then(|n| names.iter().position(|x| x == n)),
+            ) else {
+                return Err(bad(
+                    dir,
+                    "summary.json: a contact names an unknown building",
+                ));
+            };
+            let name = format!("{}|{}", names[left], names[right]);
+            let mut elements = Vec::new();
+            for pair in c["floors"].as_array().cloned().unwrap_or_default() {
+                let f = |i: usize| pair[i].as_u64().unwrap_or(0) as usize;
+                let floors = (f(0), f(1));
+                contact_columns.push(expect(&format!(
+                    "{name}_floors{}-{}_force_N",
+                    floors.0, floors.1
+                ))?);
+                elements.push(floors);
+            }
+            let (gap, e) = (
+                c["gap"].as_f64().unwrap_or(0.0),
+                c["e"].as_f64().unwrap_or(1.0),
+            );
+            contacts.push((name, left, right, gap, e, elements));
+        }
+        let buildings = buildings
+            .into_iter()
+            .zip(columns)
+            .map(|(name, cols)| {
+                Ok(BuildingData {
+                    name,
+                    floors: cols
+                        .iter()
+                        .map(|&k| column(dir, "response.csv", &rows, k))
+                        .collect::<Result<_, CliError>>()?,
+                })
+            })
+            .collect::<Result<Vec<_>, CliError>>()?;
+        let mut cc = contact_columns.into_iter();
+        let contacts = contacts
+            .into_iter()
+            .map(|(name, left, right, gap, e, els)| {
+                let elements = els
+                    .into_iter()
+                    .map(|floors| {
+                        let k = cc.next().expect("one column per element");
+                        Ok(ElementData {
+                            floors,
+                            force: column(dir, "response.csv", &rows, k)?,
+                        })
+                    })
+                    .collect::<Result<_, CliError>>()?;
+                Ok(ContactData {
+                    name,
+                    left,
+                    right,
+                    gap,
+                    e,
+                    elements,
+                })
+            })
+            .collect::<Result<Vec<_>, CliError>>()?;
+
+        let (header, rows) = csv(dir, "impacts.csv")?;
+        let col = |name: &str| {
+            header
+                .iter()
+                .position(|h| h == name)
+                .ok_or_else(|| bad(dir, format!("impacts.csv has no column {name}")))
+        };
+        let [time, v_i, peak, t_peak, dur, diss, pen, fl, fr, contact_col, e_col] = [
+            col("time_s")?,
+            col("v_i_m_per_s")?,
+            col("peak_force_N")?,
+            col("time_of_peak_force_s")?,
+            col("duration_s")?,
+            col("dissipated_energy_J")?,
+            col("max_penetration_m")?,
+            col("floor_left")?,
+            col("floor_right")?,
+            col("contact")?,
+            col("e_post")?,
+        ];
+        let mut impacts = Vec::new();
+        for r in &rows {
+            let x = |k: usize| number(dir, "impacts.csv", &r[k]);
+            let contact = contacts
+                .iter()
+                .position(|c| c.name == r[contact_col])
+                .ok_or_else(|| {
+                    bad(
+                        dir,
+                        format!("impacts.csv: unknown contact {:?}", r[contact_col]),
+                    )
+                })?;
+            impacts.push(ImpactRow {
+                contact,
+                floors: (x(fl)? as usize, x(fr)? as usize),
+                time: x(time)?,
+                v_i: x(v_i)?,
+                e_post: if r[e_col].is_empty() {
+                    None
+                } else {
+                    Some(x(e_col)?)
+                },
+                peak_force: x(peak)?,
+                time_of_peak_force: x(t_peak)?,
+                duration: x(dur)?,
+                dissipated_energy: x(diss)?,
+                max_penetration: x(pen)?,
+            });
+        }
+
+        let (_, rows) = csv(dir, "energy.csv")?;
+        let energy = (1..=5)
+            .map(|k| column(dir, "energy.csv", &rows, k))
+            .collect::<Result<Vec<_>, CliError>>()?;
+
+        let scenario = summary["scenario"].as_str().unwrap_or("scenario");
+        let rec = &summary["record"];
+        let subtitle = format!(
+            "{}: {} \u{d7} {}, {} s, {} impacts",
+            Path::new(scenario)
+                .file_name()
+                .map_or(scenario.into(), |n| n.to_string_lossy()),
+            rec["source"].as_str().unwrap_or("record"),
+            crate::output::fmt_num(rec["scale"].as_f64().unwrap_or(1.0)),
+            crate::output::fmt_num(summary["duration"].as_f64().unwrap_or(0.0)),
+            impacts.len()
+        );
+        Ok(Self {
+            summary,
+            scenario_text,
+            subtitle,
+            t,
+            ground_acceleration,
+            buildings,
+            contacts,
+            impacts,
+            energy,
+        })
+    }
+}

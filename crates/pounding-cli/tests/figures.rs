@@ -1,0 +1,505 @@
+//! Figures and the HTML report, read back as a user's script would: every SVG is parsed, its pixels are
+//! turned back into data with the axis ranges the figure carries, and the data are compared with the
+//! command's own results. Tolerances are the figure's resolution: coordinates are written to 0.01 px, so a
+//! value is known to 0.005 px of its axis.
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn pounding(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .output()
+        .expect("runs")
+}
+
+fn ok_json(args: &[&str]) -> Value {
+    let o = pounding(args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).expect("one JSON object on stdout")
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("pounding-fig-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn example(name: &str) -> String {
+    format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A panel read back from an SVG: its axes, and every series in data units.
+#[derive(Debug, Default)]
+struct Panel {
+    title: String,
+    log_y: bool,
+    x: (f64, f64),
+    y: (f64, f64),
+    /// Data per 0.005 px, along x and y.
+    res: (f64, f64),
+    lines: Vec<(String, Vec<(f64, f64)>)>,
+    points: Vec<(String, Vec<(f64, f64)>)>,
+    hlines: Vec<(String, f64)>,
+    rugs: Vec<(String, usize)>,
+}
+
+fn attr(n: roxmltree::Node, name: &str) -> f64 {
+    n.attribute(name)
+        .unwrap_or_else(|| panic!("{name} missing"))
+        .parse()
+        .unwrap()
+}
+
+/// Every panel of the SVG document `text`, in data units.
+fn panels(text: &str) -> Vec<Panel> {
+    let doc = roxmltree::Document::parse(text).expect("well-formed SVG");
+    let root = doc.root_element();
+    assert_eq!(root.tag_name().name(), "svg");
+    root.descendants()
+        .filter(|n| n.attribute("class") == Some("panel"))
+        .map(|g| {
+            let mut p = Panel {
+                title: g.attribute("data-title").unwrap_or("").into(),
+                log_y: g.attribute("data-y-scale") == Some("log"),
+                x: (attr(g, "data-x-lo"), attr(g, "data-x-hi")),
+                y: (attr(g, "data-y-lo"), attr(g, "data-y-hi")),
+                ..Panel::default()
+            };
+            let (l, r, t, b) = (
+                attr(g, "data-left"),
+                attr(g, "data-right"),
+                attr(g, "data-top"),
+                attr(g, "data-bottom"),
+            );
+            p.res = (
+                0.0051 / (r - l) * (p.x.1 - p.x.0),
+                0.0051 / (b - t) * (p.y.1 - p.y.0),
+            );
+            let (x, y, log) = (p.x, p.y, p.log_y);
+            let data = |px: f64, py: f64| {
+                let fx = (px - l) / (r - l);
+                let fy = (b - py) / (b - t);
+                let yv = if log {
+                    y.0 * (y.1 / y.0).powf(fy)
+                } else {
+                    y.0 + fy * (y.1 - y.0)
+                };
+                (x.0 + fx * (x.1 - x.0), yv)
+            };
+            for n in g.descendants() {
+                let label = n.attribute("data-label").unwrap_or("").to_string();
+                match n.attribute("class") {
+                    Some("line") => {
+                        let pts = n
+                            .attribute("points")
+                            .unwrap()
+                            .split(' ')
+                            .map(|xy| {
+                                let (a, b) = xy.split_once(',').unwrap();
+                                data(a.parse().unwrap(), b.parse().unwrap())
+                            })
+                            .collect();
+                        p.lines.push((label, pts));
+                    }
+                    Some("points") => {
+                        let pts = n
+                            .children()
+                            .filter(|c| c.has_tag_name("circle"))
+                            .map(|c| data(attr(c, "cx"), attr(c, "cy")))
+                            .collect();
+                        p.points.push((label, pts));
+                    }
+                    Some("hline") => p.hlines.push((label, attr(n, "data-value"))),
+                    Some("rug") => p.rugs.push((label, attr(n, "data-count") as usize)),
+                    _ => {}
+                }
+            }
+            p
+        })
+        .collect()
+}
+
+fn read_panels(path: &Path) -> Vec<Panel> {
+    panels(&std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())))
+}
+
+fn max_y(pts: &[(f64, f64)]) -> f64 {
+    pts.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// Width and height of a PNG file, from its IHDR chunk.
+fn png_size(path: &Path) -> (u32, u32) {
+    let b = std::fs::read(path).unwrap();
+    assert_eq!(
+        &b[..8],
+        b"\x89PNG\r\n\x1a\n",
+        "{} is not a PNG",
+        path.display()
+    );
+    let be = |i: usize| u32::from_be_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+    (be(16), be(20))
+}
+
+fn svg_size(path: &Path) -> (f64, f64) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let r = doc.root_element();
+    (attr(r, "width"), attr(r, "height"))
+}
+
+#[test]
+fn impact_figures_show_the_located_peak_and_the_whole_contact() {
+    let dir = tmp("impact");
+    let r = ok_json(&[
+        "impact",
+        "--model",
+        "papi",
+        "--e",
+        "0.65",
+        "--json",
+        "--plots",
+        dir.to_str().unwrap(),
+        "--png",
+    ]);
+    let peak = r["peak_force"].as_f64().unwrap();
+    let p = &read_panels(&dir.join("impact-force-time.svg"))[0];
+    let curve = &p.lines[0].1;
+    assert!(
+        (max_y(curve) - peak).abs() <= p.res.1,
+        "{} vs {peak}",
+        max_y(curve)
+    );
+    // The time axis runs from touch to the end of contact.
+    assert_eq!(p.x, (0.0, r["contact_duration"].as_f64().unwrap()));
+    assert_eq!(p.points[0].1.len(), 1);
+    assert!((p.points[0].1[0].1 - peak).abs() <= p.res.1);
+    assert!((p.points[0].1[0].0 - r["time_of_peak_force"].as_f64().unwrap()).abs() <= p.res.0);
+    // The loop reaches the largest penetration and closes at zero force.
+    let q = &read_panels(&dir.join("impact-force-penetration.svg"))[0];
+    let d_max = q.lines[0].1.iter().map(|p| p.0).fold(0.0, f64::max);
+    assert!((d_max - r["max_penetration"].as_f64().unwrap()).abs() <= q.res.0);
+    assert!(q.lines[0].1.last().unwrap().1.abs() <= q.res.1);
+    // PNGs at twice the SVG size.
+    for name in ["impact-force-time", "impact-force-penetration"] {
+        let (w, h) = svg_size(&dir.join(format!("{name}.svg")));
+        assert_eq!(
+            png_size(&dir.join(format!("{name}.png"))),
+            ((2.0 * w) as u32, (2.0 * h) as u32)
+        );
+    }
+}
+
+#[test]
+fn compare_overlays_each_model_with_its_own_peak() {
+    let dir = tmp("compare");
+    let r = ok_json(&[
+        "compare",
+        "--models",
+        "papi,hertzdamp,jankowski",
+        "--e",
+        "0.5",
+        "--json",
+        "--plots",
+        dir.to_str().unwrap(),
+    ]);
+    let p = &read_panels(&dir.join("compare-force-time.svg"))[0];
+    let models = r["models"].as_array().unwrap();
+    assert_eq!(p.lines.len(), models.len());
+    for (m, (label, curve)) in models.iter().zip(&p.lines) {
+        assert!(label.starts_with(m["model"].as_str().unwrap()), "{label}");
+        let peak = m["peak_force"].as_f64().unwrap();
+        assert!(
+            (max_y(curve) - peak).abs() <= p.res.1,
+            "{label}: {} vs {peak}",
+            max_y(curve)
+        );
+    }
+}
+
+#[test]
+fn table1_figures_give_back_the_table() {
+    let dir = tmp("table1");
+    let t = ok_json(&[
+        "paper",
+        "table1",
+        "--json",
+        "--plots",
+        dir.to_str().unwrap(),
+    ]);
+    let panels = read_panels(&dir.join("table1-e-post.svg"));
+    let mut checked = 0;
+    for row in t["rows"].as_array().unwrap() {
+        let label = row["label"].as_str().unwrap();
+        let (p, pts) = panels
+            .iter()
+            .find_map(|p| p.lines.iter().find(|l| l.0 == label).map(|l| (p, &l.1)))
+            .unwrap_or_else(|| panic!("no curve {label}"));
+        assert_eq!(pts.len(), 91, "{label}: e = 0.10 to 1.00");
+        // The mean relative error of the plotted curve is the table's, to the figure's resolution
+        // (e is the grid value, e_post is read to res.1, and e >= 0.1).
+        let mean = pts
+            .iter()
+            .map(|&(x, y)| {
+                let e = (x * 100.0).round() / 100.0;
+                (e - y).abs() / e * 100.0
+            })
+            .sum::<f64>()
+            / pts.len() as f64;
+        let want = row["grid_0.01"]["all"].as_f64().unwrap();
+        assert!(
+            (mean - want).abs() <= p.res.1 / 0.1 * 100.0,
+            "{label}: {mean} vs {want}"
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, t["rows"].as_array().unwrap().len());
+    // The error figure is on decades.
+    assert!(read_panels(&dir.join("table1-error.svg"))
+        .iter()
+        .all(|p| p.log_y));
+}
+
+fn csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    (header, rows)
+}
+
+fn col(h: &[String], rows: &[Vec<String>], name: &str) -> Vec<f64> {
+    let k = h
+        .iter()
+        .position(|c| c == name)
+        .unwrap_or_else(|| panic!("{name}"));
+    rows.iter().map(|r| r[k].parse().unwrap()).collect()
+}
+
+#[test]
+fn run_figures_and_report_match_the_results() {
+    let dir = tmp("run");
+    let s = ok_json(&[
+        "run",
+        &example("two-sdof.toml"),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+        "--plots",
+        "--png",
+        "--report",
+    ]);
+    let contact = &s["contacts"][0];
+    let (ih, irows) = csv(&dir.join("impacts.csv"));
+    let n_impacts = irows.len();
+    assert_eq!(n_impacts as u64, contact["impacts"].as_u64().unwrap());
+
+    // Contact force: the curve reaches the contact's peak force; one marker per impact, at its peak.
+    let p = &read_panels(&dir.join("contact-force.svg"))[0];
+    let peak = contact["peak_force"].as_f64().unwrap();
+    assert!((max_y(&p.lines[0].1) - peak).abs() <= p.res.1);
+    let marks = &p.points[0].1;
+    assert_eq!(marks.len(), n_impacts);
+    for ((x, y), (t, f)) in marks.iter().zip(
+        col(&ih, &irows, "time_of_peak_force_s")
+            .into_iter()
+            .zip(col(&ih, &irows, "peak_force_N")),
+    ) {
+        assert!(
+            (x - t).abs() <= p.res.0 && (y - f).abs() <= p.res.1,
+            "({x}, {y}) vs ({t}, {f}), {:?}",
+            p.res
+        );
+    }
+
+    // Displacements: the ground motion, then one panel per building; each building's curve is the
+    // response.csv column, and its impact instants are all the impacts.
+    let (rh, rrows) = csv(&dir.join("response.csv"));
+    let d = read_panels(&dir.join("displacement.svg"));
+    assert_eq!(d.len(), 3);
+    let ground = col(&rh, &rrows, "ground_acceleration_m_per_s2");
+    let top = ground.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    assert!((max_y(&d[0].lines[0].1) - top).abs() <= d[0].res.1);
+    for (b, name) in [(1, "left"), (2, "right")] {
+        let u = col(&rh, &rrows, &format!("{name}_floor1_displacement_m"));
+        let (lo, hi) = u
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
+                (a.min(*v), c.max(*v))
+            });
+        assert!(
+            d[b].title.contains(&format!("building {name}")),
+            "{}",
+            d[b].title
+        );
+        let curve = &d[b].lines[0].1;
+        let clo = curve.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        assert!((max_y(curve) - hi).abs() <= d[b].res.1 && (clo - lo).abs() <= d[b].res.1);
+        // Located peaks lie between samples, never below them.
+        let located = s["buildings"][b - 1]["peak_displacement"][0]
+            .as_f64()
+            .unwrap();
+        assert!(located >= hi.max(-lo) - d[b].res.1);
+        assert_eq!(d[b].rugs[0].1, n_impacts);
+    }
+
+    // Relative displacement: the gap line at the scenario's gap; the curve crosses it at every impact.
+    let q = &read_panels(&dir.join("relative-displacement.svg"))[0];
+    assert_eq!(q.hlines[0].1, contact["gap"].as_f64().unwrap());
+    assert!(max_y(&q.lines[0].1) > q.hlines[0].1);
+
+    // Energy: the input curve ends at the summary's input energy.
+    let e = &read_panels(&dir.join("energy.svg"))[0];
+    let input = e.lines.iter().find(|l| l.0.starts_with("input")).unwrap();
+    let (eh, erows) = csv(&dir.join("energy.csv"));
+    let last = *col(&eh, &erows, "input_J").last().unwrap();
+    assert!((input.1.last().unwrap().1 - last).abs() <= e.res.1);
+
+    // Delivered e of every ended impact against its v_i.
+    let r = &read_panels(&dir.join("impact-restitution.svg"))[0];
+    assert_eq!(r.points[0].1.len(), n_impacts);
+    assert_eq!(r.hlines[0].1, contact["e"].as_f64().unwrap());
+
+    for name in [
+        "displacement",
+        "contact-force",
+        "relative-displacement",
+        "energy",
+        "impact-restitution",
+    ] {
+        let (w, h) = svg_size(&dir.join(format!("{name}.svg")));
+        assert_eq!(
+            png_size(&dir.join(format!("{name}.png"))),
+            ((2.0 * w) as u32, (2.0 * h) as u32)
+        );
+    }
+
+    // The report: well-formed, every figure and table, every impact, and nothing fetched from anywhere.
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    let opts = roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(&html, opts).expect("report is well-formed");
+    let figures: Vec<&str> = doc
+        .descendants()
+        .filter_map(|n| n.attribute("data-figure"))
+        .collect();
+    assert_eq!(
+        figures,
+        [
+            "displacement",
+            "contact-force",
+            "impact-restitution",
+            "relative-displacement",
+            "energy"
+        ]
+    );
+    let table = |id: &str| {
+        doc.descendants()
+            .find(|n| n.has_tag_name("table") && n.attribute("id") == Some(id))
+            .unwrap_or_else(|| panic!("table {id}"))
+    };
+    for id in [
+        "modes-0",
+        "modes-1",
+        "peaks",
+        "contacts",
+        "energy",
+        "impact-list",
+    ] {
+        table(id);
+    }
+    let rows = |id: &str| {
+        table(id)
+            .descendants()
+            .filter(|n| n.has_tag_name("tr"))
+            .count()
+            - 1
+    };
+    assert_eq!(rows("impact-list"), n_impacts);
+    assert_eq!(rows("peaks"), 2);
+    assert!(html.contains("gap = 0.02"), "the scenario file is shown");
+    for n in doc.descendants() {
+        assert!(
+            !["script", "link", "img", "iframe", "object", "embed"].contains(&n.tag_name().name()),
+            "{:?} in the report",
+            n.tag_name()
+        );
+        for a in n.attributes() {
+            if ["src", "href"].contains(&a.name()) {
+                assert!(
+                    a.value().starts_with('#'),
+                    "{}={} reaches outside",
+                    a.name(),
+                    a.value()
+                );
+            }
+        }
+    }
+    assert!(html.contains("Content-Security-Policy\" content=\"default-src 'none'"));
+
+    // `pounding report DIR` makes the same report from the files alone.
+    let again = dir.join("again.html");
+    let o = pounding(&[
+        "report",
+        dir.to_str().unwrap(),
+        "--out",
+        again.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read_to_string(&again).unwrap(), html);
+}
+
+#[test]
+fn figure_options_fail_cleanly() {
+    let dir = tmp("bad");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("a-file");
+    std::fs::write(&file, "x").unwrap();
+    let history = dir.join("h.csv");
+    let missing = dir.join("missing");
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["impact", "--model", "papi", "--e", "0.5", "--png"],
+            "--plots",
+        ),
+        (
+            vec![
+                "impact",
+                "--model",
+                "papi",
+                "--e",
+                "0.5",
+                "--plots",
+                file.to_str().unwrap(),
+                "--history",
+                history.to_str().unwrap(),
+            ],
+            "is a file",
+        ),
+        (vec!["report", missing.to_str().unwrap()], "not a folder"),
+        (vec!["report", dir.to_str().unwrap()], "summary.json"),
+        (
+            vec!["compare", "--models", "papi,nope", "--e", "0.5"],
+            "nope",
+        ),
+        (
+            vec!["compare", "--models", "papi", "--e", "0.5", "--k", "-1"],
+            "--k",
+        ),
+    ];
+    for (args, says) in cases {
+        let o = pounding(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+    assert!(!history.exists(), "no partial output");
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert_eq!(left.len(), 1, "only the file the test made");
+}
