@@ -395,6 +395,11 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
 
     // Impacts.
     h.push_str("\n<h2 id=\"impacts\">Impacts</h2>");
+    if d.contacts.is_empty() {
+        h.push_str("\n<p>The scenario has no contacts.</p>");
+    } else if d.impacts.is_empty() {
+        h.push_str("\n<p>No impacts: the gaps never closed.</p>");
+    }
     let shown = d.impacts.len().min(MAX_IMPACT_ROWS);
     if shown < d.impacts.len() {
         let _ = write!(

@@ -356,13 +356,15 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             panels: forces,
             columns: 1,
         });
-        figs.push(Figure {
-            id: "impact-restitution".into(),
-            title: "Delivered coefficient of restitution of each impact".into(),
-            subtitle: d.subtitle.clone(),
-            panels: vec![restitution],
-            columns: 1,
-        });
+        if d.impacts.iter().any(|i| i.e_post.is_some()) {
+            figs.push(Figure {
+                id: "impact-restitution".into(),
+                title: "Delivered coefficient of restitution of each impact".into(),
+                subtitle: d.subtitle.clone(),
+                panels: vec![restitution],
+                columns: 1,
+            });
+        }
         figs.push(Figure {
             id: "relative-displacement".into(),
             title: "Relative displacement of the contact floors against the gap".into(),
