@@ -254,15 +254,15 @@ fn save_figures(p: &PlotArgs, figs: &[crate::plot::Figure], quiet: bool) -> Resu
     Ok(())
 }
 
-/// The figures of one integrated impact.
+/// The figures of one integrated impact, if `--plots` asks for them.
 fn impact_figures(
-    prefix: &str,
-    title: &str,
+    plots: &PlotArgs,
+    (prefix, title): (&str, &str),
     s: &ContactModel,
     r: &ImpactResult,
     inputs: &str,
 ) -> Vec<crate::plot::Figure> {
-    let Some(h) = r.history.as_ref() else {
+    let (Some(_), Some(h)) = (&plots.plots, r.history.as_ref()) else {
         return Vec::new();
     };
     let subtitle = format!(
@@ -323,23 +323,14 @@ fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     results(&mut rep, &s, &r, exact_e);
     rep.add("velocity_1_after", num(v1), "m/s")
         .add("velocity_2_after", num(v2), "m/s");
-    let figs = if a.plots.plots.is_some() {
-        let inputs = format!(
-            "m1 = {} kg, m2 = {} kg, v = {} m/s",
-            fmt_num(a.m1),
-            m2_text(a.m2),
-            fmt_num(a.v)
-        );
-        impact_figures(
-            "impact",
-            &format!("Impact ({})", s.model().name()),
-            &s,
-            &r,
-            &inputs,
-        )
-    } else {
-        Vec::new()
-    };
+    let inputs = format!(
+        "m1 = {} kg, m2 = {} kg, v = {} m/s",
+        fmt_num(a.m1),
+        m2_text(a.m2),
+        fmt_num(a.v)
+    );
+    let title = format!("Impact ({})", s.model().name());
+    let figs = impact_figures(&a.plots, ("impact", &title), &s, &r, &inputs);
     save_history(a.history.as_deref(), &r)?;
     rep.print(a.json);
     save_figures(&a.plots, &figs, a.json)?;
@@ -409,24 +400,15 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
         .add("hertz_stiffness", num(drop.hertz_stiffness()), "N/m^1.5")
         .add("v_i", num(setup.v_i), "m/s");
     results(&mut rep, &s, &r, None);
-    let figs = if a.plots.plots.is_some() {
-        let inputs = format!(
-            "ball R = {} m, E = {} Pa, h = {} m, v_i = {} m/s",
-            fmt_num(a.radius),
-            fmt_num(a.youngs_modulus),
-            fmt_num(a.height),
-            fmt_sig(setup.v_i, 6)
-        );
-        impact_figures(
-            "drop",
-            &format!("Ball drop ({})", s.model().name()),
-            &s,
-            &r,
-            &inputs,
-        )
-    } else {
-        Vec::new()
-    };
+    let inputs = format!(
+        "ball R = {} m, E = {} Pa, h = {} m, v_i = {} m/s",
+        fmt_num(a.radius),
+        fmt_num(a.youngs_modulus),
+        fmt_num(a.height),
+        fmt_sig(setup.v_i, 6)
+    );
+    let title = format!("Ball drop ({})", s.model().name());
+    let figs = impact_figures(&a.plots, ("drop", &title), &s, &r, &inputs);
     save_history(a.history.as_deref(), &r)?;
     rep.print(a.json);
     save_figures(&a.plots, &figs, a.json)?;

@@ -55,16 +55,15 @@ pub fn impact(prefix: &str, title: &str, subtitle: &str, runs: &[ForceHistory]) 
                 .push(Series::points("peak force", vec![d], vec![f], peak));
         }
     }
+    // Time runs from touch to the end of contact; penetration to the next tick past the largest.
+    time.x_tight = true;
     for p in [&mut time, &mut loop_] {
-        p.x_tight = true;
         p.y_zero = true;
         if one {
+            // The single curve needs no legend entry; the peak marker does.
             p.series[0].label.clear();
-            p.series.last_mut().expect("the peak").label = "peak force".into();
         }
     }
-    time.x_tight = true;
-    loop_.x_tight = false;
     vec![
         Figure {
             id: format!("{prefix}-force-time"),
