@@ -125,6 +125,28 @@ fn read_panels(path: &Path) -> Vec<Panel> {
     panels(&std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())))
 }
 
+/// Parses every SVG in `dir`: each is well-formed, has at least one panel, and every plotted value is finite.
+fn every_svg_reads_back(dir: &Path) -> usize {
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|x| x == "svg") {
+            let ps = read_panels(&path);
+            assert!(!ps.is_empty(), "{}: no panel", path.display());
+            for p in &ps {
+                let all = p.lines.iter().chain(&p.points).flat_map(|s| &s.1);
+                assert!(
+                    all.clone().all(|(x, y)| x.is_finite() && y.is_finite()),
+                    "{}",
+                    path.display()
+                );
+            }
+            n += 1;
+        }
+    }
+    n
+}
+
 fn max_y(pts: &[(f64, f64)]) -> f64 {
     pts.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max)
 }
@@ -181,6 +203,7 @@ fn impact_figures_show_the_located_peak_and_the_whole_contact() {
     let d_max = q.lines[0].1.iter().map(|p| p.0).fold(0.0, f64::max);
     assert!((d_max - r["max_penetration"].as_f64().unwrap()).abs() <= q.res.0);
     assert!(q.lines[0].1.last().unwrap().1.abs() <= q.res.1);
+    assert_eq!(every_svg_reads_back(&dir), 2);
     // PNGs at twice the SVG size.
     for name in ["impact-force-time", "impact-force-penetration"] {
         let (w, h) = svg_size(&dir.join(format!("{name}.svg")));
@@ -189,6 +212,32 @@ fn impact_figures_show_the_located_peak_and_the_whole_contact() {
             ((2.0 * w) as u32, (2.0 * h) as u32)
         );
     }
+}
+
+#[test]
+fn drop_figures_show_the_located_peak() {
+    let dir = tmp("drop");
+    let r = ok_json(&[
+        "drop",
+        "--model",
+        "hertzdamp",
+        "--e",
+        "0.65",
+        "--radius",
+        "0.1",
+        "--youngs-modulus",
+        "30e9",
+        "--poisson",
+        "0.2",
+        "--height",
+        "0.5",
+        "--json",
+        "--plots",
+        dir.to_str().unwrap(),
+    ]);
+    let p = &read_panels(&dir.join("drop-force-time.svg"))[0];
+    assert!((max_y(&p.lines[0].1) - r["peak_force"].as_f64().unwrap()).abs() <= p.res.1);
+    assert_eq!(every_svg_reads_back(&dir), 2);
 }
 
 #[test]
@@ -255,6 +304,7 @@ fn table1_figures_give_back_the_table() {
         checked += 1;
     }
     assert_eq!(checked, t["rows"].as_array().unwrap().len());
+    assert_eq!(every_svg_reads_back(&dir), 2);
     // The error figure is on decades.
     assert!(read_panels(&dir.join("table1-error.svg"))
         .iter()
