@@ -189,14 +189,9 @@ pub struct ModelArgs {
     pub yield_ratio: f64,
 }
 
-#[derive(Args, Debug)]
-#[command(allow_negative_numbers = true)]
-pub struct ImpactArgs {
-    #[command(flatten)]
-    pub model: ModelArgs,
-    /// Contact stiffness k, N/m^n.
-    #[arg(long, default_value_t = 1.0e9)]
-    pub k: f64,
+/// The two bodies of one impact: m1 moving at v towards m2 at rest.
+#[derive(Args, Debug, Clone, Copy)]
+pub struct BodiesArgs {
     /// Mass of the moving body, kg.
     #[arg(long, default_value_t = 1.0e5)]
     pub m1: f64,
@@ -206,6 +201,18 @@ pub struct ImpactArgs {
     /// Approach velocity at first touch, m/s.
     #[arg(long, default_value_t = 1.0)]
     pub v: f64,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct ImpactArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// Contact stiffness k, N/m^n.
+    #[arg(long, default_value_t = 1.0e9)]
+    pub k: f64,
+    #[command(flatten)]
+    pub bodies: BodiesArgs,
     /// Write the time history (t, penetration, rate, force) to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
     pub history: Option<std::path::PathBuf>,
@@ -234,15 +241,8 @@ pub struct CompareArgs {
     /// penetration.
     #[arg(long, default_value_t = 1.0e10)]
     pub k: f64,
-    /// Mass of the moving body, kg.
-    #[arg(long, default_value_t = 1.0e5)]
-    pub m1: f64,
-    /// Mass of the body at rest, kg, or inf for a rigid wall.
-    #[arg(long, default_value = "inf")]
-    pub m2: f64,
-    /// Approach velocity at first touch, m/s.
-    #[arg(long, default_value_t = 1.0)]
-    pub v: f64,
+    #[command(flatten)]
+    pub bodies: BodiesArgs,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,

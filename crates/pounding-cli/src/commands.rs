@@ -292,6 +292,16 @@ fn save_history(path: Option<&Path>, r: &ImpactResult) -> Result<(), CliError> {
     Ok(())
 }
 
+/// The two bodies in one line: `m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s`.
+fn bodies_text(b: &crate::args::BodiesArgs) -> String {
+    format!(
+        "m1 = {} kg, m2 = {} kg, v = {} m/s",
+        fmt_num(b.m1),
+        m2_text(b.m2),
+        fmt_num(b.v)
+    )
+}
+
 /// `m2` as text: infinite is a rigid body (JSON: null).
 fn m2_text(m2: f64) -> String {
     if m2.is_infinite() {
@@ -303,7 +313,7 @@ fn m2_text(m2: f64) -> String {
 
 fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     check_plots(&a.plots)?;
-    let bodies = TwoBodies::new(a.m1, a.m2, a.v)?;
+    let bodies = TwoBodies::new(a.bodies.m1, a.bodies.m2, a.bodies.v)?;
     let s = contact(&a.model, a.k, Style::Flag)?;
     let setup = bodies.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
@@ -316,19 +326,15 @@ fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     let (v1, v2) = bodies.velocities_after(r.impulse);
     let mut rep = Report::default();
     describe(&mut rep, &s, p);
-    rep.add("m1", num(a.m1), "kg")
-        .add_shown("m2", num(a.m2), m2_text(a.m2), "kg")
-        .add("v", num(a.v), "m/s")
+    let b = a.bodies;
+    rep.add("m1", num(b.m1), "kg")
+        .add_shown("m2", num(b.m2), m2_text(b.m2), "kg")
+        .add("v", num(b.v), "m/s")
         .add("effective_mass", num(setup.mass), "kg");
     results(&mut rep, &s, &r, exact_e);
     rep.add("velocity_1_after", num(v1), "m/s")
         .add("velocity_2_after", num(v2), "m/s");
-    let inputs = format!(
-        "m1 = {} kg, m2 = {} kg, v = {} m/s",
-        fmt_num(a.m1),
-        m2_text(a.m2),
-        fmt_num(a.v)
-    );
+    let inputs = bodies_text(&a.bodies);
     let title = format!("Impact ({})", s.model().name());
     let figs = impact_figures(&a.plots, ("impact", &title), &s, &r, &inputs);
     save_history(a.history.as_deref(), &r)?;
@@ -417,7 +423,7 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
 
 fn compare(a: &CompareArgs) -> Result<(), CliError> {
     check_plots(&a.plots)?;
-    let bodies = TwoBodies::new(a.m1, a.m2, a.v)?;
+    let bodies = TwoBodies::new(a.bodies.m1, a.bodies.m2, a.bodies.v)?;
     if !(a.k.is_finite() && a.k > 0.0) {
         return Err(input(format!(
             "--k {} is not allowed: k > 0 (N/m^1.5)",
@@ -454,8 +460,8 @@ fn compare(a: &CompareArgs) -> Result<(), CliError> {
         println!(
             "{}",
             json!({
-                "e_pre": num(a.e), "damping": damping, "k_hertz": num(a.k), "m1": num(a.m1),
-                "m2": if a.m2.is_finite() { num(a.m2) } else { Value::Null }, "v": num(a.v),
+                "e_pre": num(a.e), "damping": damping, "k_hertz": num(a.k), "m1": num(a.bodies.m1),
+                "m2": if a.bodies.m2.is_finite() { num(a.bodies.m2) } else { Value::Null }, "v": num(a.bodies.v),
                 "effective_mass": num(setup.mass),
                 "units": {"k": "N/m^n", "k_hertz": "N/m^1.5", "peak_force": "N", "time_of_peak_force": "s",
                           "max_penetration": "m", "contact_duration": "s", "dissipated_energy": "J",
@@ -465,10 +471,8 @@ fn compare(a: &CompareArgs) -> Result<(), CliError> {
         );
     } else {
         println!(
-            "One impact: m1 = {} kg, m2 = {} kg, v = {} m/s, e_pre = {}, damping {damping}; k_h = {} N/m^1.5",
-            fmt_num(a.m1),
-            m2_text(a.m2),
-            fmt_num(a.v),
+            "One impact: {}, e_pre = {}, damping {damping}; k_h = {} N/m^1.5",
+            bodies_text(&a.bodies),
             fmt_num(a.e),
             fmt_num(a.k)
         );
@@ -513,10 +517,8 @@ fn compare(a: &CompareArgs) -> Result<(), CliError> {
             })
             .collect();
         let subtitle = format!(
-            "m1 = {} kg, m2 = {} kg, v = {} m/s, e_pre = {}, {damping} damping, k_h = {} N/m^1.5 (equivalent k for n \u{2260} 1.5)",
-            fmt_num(a.m1),
-            m2_text(a.m2),
-            fmt_num(a.v),
+            "{}, e_pre = {}, {damping} damping, k_h = {} N/m^1.5 (equivalent k for n \u{2260} 1.5)",
+            bodies_text(&a.bodies),
             fmt_num(a.e),
             fmt_num(a.k)
         );
