@@ -79,7 +79,7 @@ G = 9.80665  # m/s^2 per g
 
 # Built-in records of the Rust tool (pounding::ground_motion::Record) that this
 # script can read: name -> CSV with columns `time,acc (g)` and a leading t = 0 row.
-BUILTIN_RECORDS = {"el-centro-1940": REPO / "data" / "ground-motions" / "elcentro1940_ns.csv"}
+BUILTIN_RECORDS = {"el-centro-1940": REPO / "crates" / "pounding" / "data" / "elcentro1940_ns.csv"}
 UNIT_FACTORS = {"g": G, "m/s2": 1.0, "cm/s2": 0.01}
 
 

@@ -81,7 +81,7 @@ pub struct Peaks {
     pub pgd: f64,
 }
 
-const EL_CENTRO_CSV: &str = include_str!("../../../../data/ground-motions/elcentro1940_ns.csv");
+const EL_CENTRO_CSV: &str = include_str!("../../data/elcentro1940_ns.csv");
 
 impl Record {
     /// A record named `name` with time step `dt` (s, > 0), first sample time `t0` (s, >= 0) and accelerations
@@ -139,8 +139,8 @@ impl Record {
         )?)
     }
 
-    /// The 1940 El Centro N-S record shipped with the tool (Chopra's version; see
-    /// `data/ground-motions/PROVENANCE.md`): 1559 samples at 0.02 s from t = 0.02 s, PGA 0.3188 g.
+    /// The 1940 El Centro N-S record shipped with the tool (Chopra's version; see `data/PROVENANCE.md` in
+    /// this crate): 1559 samples at 0.02 s from t = 0.02 s, PGA 0.3188 g.
     pub fn el_centro_1940() -> Self {
         let mut r = Self::parse("el-centro-1940", EL_CENTRO_CSV, Format::TimeAcc, Units::G)
             .expect("the built-in record parses");

@@ -8,7 +8,7 @@ const G: f64 = 9.80665;
 
 #[test]
 fn el_centro_matches_its_provenance() {
-    // data/ground-motions/PROVENANCE.md: 1559 samples at 0.02 s, PGA 0.3188 g (negative) at 2.04 s.
+    // crates/pounding/data/PROVENANCE.md: 1559 samples at 0.02 s, PGA 0.3188 g (negative) at 2.04 s.
     let r = Record::el_centro_1940();
     assert_eq!(r.npts(), 1559);
     assert_eq!(r.dt(), 0.02);
