@@ -8,6 +8,7 @@ use crate::run_data::RunData;
 use crate::scenario::{load, Loaded};
 use crate::CliError;
 use pounding::analysis::{Results, Scenario};
+use pounding::element::StoreyLaw;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::io::IsTerminal;
@@ -143,6 +144,42 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
             fmt_num(st.elevations().last().copied().unwrap_or(0.0)),
             fmt_num(100.0 * st.damping_ratio())
         );
+        let laws = st.storey_laws();
+        if laws.iter().any(|l| l.is_inelastic()) {
+            let desc: Vec<String> = laws
+                .iter()
+                .enumerate()
+                .map(|(j, l)| match *l {
+                    StoreyLaw::Linear => format!("{}: linear", j + 1),
+                    StoreyLaw::Bilinear {
+                        yield_force,
+                        post_yield_ratio,
+                    } => format!(
+                        "{}: bilinear F_y {} N, a {}",
+                        j + 1,
+                        fmt_sig(yield_force, 4),
+                        fmt_num(post_yield_ratio)
+                    ),
+                    StoreyLaw::BoucWen {
+                        yield_force,
+                        post_yield_ratio,
+                        n,
+                        beta,
+                        gamma,
+                    } => format!(
+                        "{}: bouc-wen F_y {} N, a {}, n {}, beta {}, gamma {}",
+                        j + 1,
+                        fmt_sig(yield_force, 4),
+                        fmt_num(post_yield_ratio),
+                        fmt_num(n),
+                        fmt_num(beta),
+                        fmt_num(gamma)
+                    ),
+                })
+                .collect();
+            println!("  storeys: {}", desc.join("; "));
+            println!("  (modes and Rayleigh damping of the initial stiffness)");
+        }
         println!("  mode  period_s  damping_%  mass_%  shape (floor 1 up, roof = 1)");
         let shapes = modes.shapes_roof_normalised();
         for (r, t) in modes.periods().iter().enumerate().take(6) {
@@ -179,21 +216,47 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
 
 fn print_results(s: &Scenario, r: &Results) {
     println!(
-        "building    floor  peak_displacement_m  at_s     storey  peak_drift_m  drift_ratio_%"
+        "building    floor  peak_displacement_m  at_s     peak_abs_acceleration_m_per_s2  storey  peak_drift_m  drift_ratio_%  peak_shear_N"
     );
     for (b, resp) in s.buildings().iter().zip(&r.buildings) {
         let h = b.structure.heights();
         for (f, h_f) in h.iter().enumerate() {
             println!(
-                "{:<10}  {:>5}  {:>19.6}  {:>7.3}  {:>6}  {:>12.6}  {:>13.3}",
+                "{:<10}  {:>5}  {:>19.6}  {:>7.3}  {:>30.4}  {:>6}  {:>12.6}  {:>13.3}  {:>12.5e}",
                 b.name,
                 f + 1,
                 resp.peak_displacement[f],
                 resp.time_of_peak_displacement[f],
+                resp.peak_absolute_acceleration[f],
                 f + 1,
                 resp.peak_drift[f],
-                100.0 * resp.peak_drift[f] / h_f
+                100.0 * resp.peak_drift[f] / h_f,
+                resp.peak_storey_shear[f]
             );
+        }
+    }
+    let inelastic = s
+        .buildings()
+        .iter()
+        .any(|b| b.structure.storey_laws().iter().any(|l| l.is_inelastic()));
+    if inelastic {
+        println!(
+            "\nbuilding    storey  model     ductility  residual_drift_m  hysteretic_energy_J"
+        );
+        for (b, resp) in s.buildings().iter().zip(&r.buildings) {
+            for (j, law) in b.structure.storey_laws().iter().enumerate() {
+                if let Some(mu) = resp.ductility[j] {
+                    println!(
+                        "{:<10}  {:>6}  {:<8}  {:>9.3}  {:>16.6}  {:>19.5e}",
+                        b.name,
+                        j + 1,
+                        law.name(),
+                        mu,
+                        resp.residual_drift[j],
+                        resp.hysteretic_energy[j]
+                    );
+                }
+            }
         }
     }
     if !s.links().is_empty() {
@@ -222,8 +285,8 @@ fn print_results(s: &Scenario, r: &Results) {
     }
     let e = &r.energy;
     println!(
-        "\nenergy at the end, J: input {:.6e} = kinetic {:.4e} + strain {:.4e} + damping {:.6e} + contact {:.6e}",
-        e.input, e.kinetic, e.strain, e.damping, e.contact
+        "\nenergy at the end, J: input {:.6e} = kinetic {:.4e} + strain {:.4e} + damping {:.6e} + hysteretic {:.6e} + contact {:.6e}",
+        e.input, e.kinetic, e.strain, e.damping, e.hysteretic, e.contact
     );
     println!(
         "energy balance error: {:.2e} (largest over the run, relative to the largest energy)",
@@ -246,7 +309,7 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
             let st = &b.structure;
             let modes = st.modes();
             let part = modes.participation(st.masses());
-            json!({
+            let mut out = json!({
                 "name": b.name,
                 "storeys": st.storeys(),
                 "periods": modes.periods().into_iter().map(num).collect::<Vec<_>>(),
@@ -257,7 +320,22 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
                 "time_of_peak_displacement": resp.time_of_peak_displacement.iter().copied().map(num).collect::<Vec<_>>(),
                 "peak_drift": resp.peak_drift.iter().copied().map(num).collect::<Vec<_>>(),
                 "peak_drift_ratio": resp.peak_drift.iter().zip(st.heights()).map(|(d, h)| num(d / h)).collect::<Vec<_>>(),
-            })
+                "storey_models": st.storey_laws().iter().map(|l| l.name()).collect::<Vec<_>>(),
+                "peak_absolute_acceleration": nums(&resp.peak_absolute_acceleration),
+                "time_of_peak_absolute_acceleration": nums(&resp.time_of_peak_absolute_acceleration),
+                "peak_storey_shear": nums(&resp.peak_storey_shear),
+                "residual_displacement": nums(&resp.residual_displacement),
+                "residual_drift": nums(&resp.residual_drift),
+            });
+            // Ductility and hysteretic energy exist for inelastic storeys only: listed with their numbers.
+            let inelastic: Vec<usize> = (0..st.storeys()).filter(|&j| st.storey_laws()[j].is_inelastic()).collect();
+            if !inelastic.is_empty() {
+                out["inelastic_storeys"] = json!(inelastic.iter().map(|j| j + 1).collect::<Vec<_>>());
+                out["yield_forces"] = json!(inelastic.iter().map(|&j| num(st.storey_laws()[j].yield_force().unwrap_or(0.0))).collect::<Vec<_>>());
+                out["ductility"] = json!(inelastic.iter().map(|&j| num(resp.ductility[j].unwrap_or(0.0))).collect::<Vec<_>>());
+                out["hysteretic_energy"] = json!(inelastic.iter().map(|&j| num(resp.hysteretic_energy[j])).collect::<Vec<_>>());
+            }
+            out
         })
         .collect();
     let contacts: Vec<Value> = s
@@ -303,6 +381,7 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
             "kinetic": num(e.kinetic),
             "strain": num(e.strain),
             "structural_damping": num(e.damping),
+            "hysteretic": num(e.hysteretic),
             "contact": num(e.contact),
         },
         "energy_balance_error": num(e.relative_error),
@@ -313,12 +392,21 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
         },
         "units": {
             "periods": "s", "mode_shapes": "roof = 1", "peak_displacement": "m", "time_of_peak_displacement": "s",
-            "peak_drift": "m", "peak_drift_ratio": "drift / storey height", "gap": "m", "stiffness": "N/m^exponent",
+            "peak_drift": "m", "peak_drift_ratio": "drift / storey height",
+            "peak_absolute_acceleration": "m/s^2", "time_of_peak_absolute_acceleration": "s",
+            "peak_storey_shear": "N (restoring force of the storey, without Rayleigh damping)",
+            "residual_displacement": "m (signed, at the end of the analysis)", "residual_drift": "m (signed, at the end of the analysis)",
+            "inelastic_storeys": "storey numbers, from 1", "yield_forces": "N", "ductility": "peak drift / yield drift",
+            "hysteretic_energy": "J", "gap": "m", "stiffness": "N/m^exponent",
             "peak_force": "N", "max_penetration": "m", "dissipated_energy": "J", "energy": "J",
-            "energy_balance_error": "max |input - kinetic - strain - damping - contact| / max energy",
+            "energy_balance_error": "max |input - kinetic - strain - damping - hysteretic - contact| / max energy",
             "duration": "s", "output_dt": "s", "record.dt": "s", "record.pga": "m/s^2",
         },
     })
+}
+
+fn nums(xs: &[f64]) -> Vec<Value> {
+    xs.iter().copied().map(num).collect()
 }
 
 fn response_csv(s: &Scenario, r: &Results) -> String {
@@ -334,6 +422,16 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
             let _ = write!(out, ",{}_floors{i}-{j}_force_N", link_name(s, l));
         }
     }
+    for b in s.buildings() {
+        for f in 1..=b.structure.storeys() {
+            let _ = write!(out, ",{}_floor{f}_absolute_acceleration_m_per_s2", b.name);
+        }
+    }
+    for b in s.buildings() {
+        for j in 1..=b.structure.storeys() {
+            let _ = write!(out, ",{}_storey{j}_shear_N", b.name);
+        }
+    }
     out.push('\n');
     for k in 0..h.t.len() {
         let _ = write!(out, "{},{:e}", fmt_num(h.t[k]), h.ground_acceleration[k]);
@@ -342,9 +440,11 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
                 let _ = write!(out, ",{:e}", col[k]);
             }
         }
-        for l in &h.force {
-            for col in l {
-                let _ = write!(out, ",{:e}", col[k]);
+        for group in [&h.force, &h.absolute_acceleration, &h.storey_shear] {
+            for cols in group {
+                for col in cols {
+                    let _ = write!(out, ",{:e}", col[k]);
+                }
             }
         }
         out.push('\n');
@@ -380,21 +480,15 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
 fn energy_csv(r: &Results) -> String {
     let h = &r.histories;
     let mut out = String::from(
-        "time_s,input_J,kinetic_J,strain_J,structural_damping_J,contact_J,balance_error_J\n",
+        "time_s,input_J,kinetic_J,strain_J,structural_damping_J,hysteretic_J,contact_J,balance_error_J\n",
     );
     for k in 0..h.t.len() {
-        let e: Vec<f64> = h.energy.iter().map(|c| c[k]).collect();
-        let _ = writeln!(
-            out,
-            "{},{:e},{:e},{:e},{:e},{:e},{:e}",
-            fmt_num(h.t[k]),
-            e[0],
-            e[1],
-            e[2],
-            e[3],
-            e[4],
-            e[0] - e[1] - e[2] - e[3] - e[4]
-        );
+        let e: [f64; 6] = std::array::from_fn(|c| h.energy[c][k]);
+        let _ = write!(out, "{}", fmt_num(h.t[k]));
+        for x in e {
+            let _ = write!(out, ",{x:e}");
+        }
+        let _ = writeln!(out, ",{:e}", e[0] - e[1..].iter().sum::<f64>());
     }
     out
 }

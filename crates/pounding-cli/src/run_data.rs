@@ -79,7 +79,7 @@ pub struct RunData {
     pub contacts: Vec<ContactData>,
     /// Every impact, in time order.
     pub impacts: Vec<ImpactRow>,
-    /// Input, kinetic, strain, structural damping, contact energy, J, at `t`.
+    /// Input, kinetic, strain, structural damping, hysteretic, contact energy, J, at `t`.
     pub energy: Vec<Vec<f64>>,
 }
 
@@ -305,7 +305,7 @@ impl RunData {
         }
 
         let (_, rows) = csv(dir, "energy.csv")?;
-        let energy = (1..=5)
+        let energy = (1..=6)
             .map(|k| column(dir, "energy.csv", &rows, k))
             .collect::<Result<Vec<_>, CliError>>()?;
 

@@ -7,6 +7,7 @@ use crate::commands::{contact, key_message, load_record_from, Style};
 use crate::CliError;
 use clap::ValueEnum;
 use pounding::analysis::{Building, Scenario};
+use pounding::element::StoreyLaw;
 use pounding::structure::ShearBuilding;
 use serde::Deserialize;
 use std::path::Path;
@@ -62,6 +63,44 @@ struct BuildingEntry {
     heights: Vec<f64>,
     #[serde(default = "five_percent")]
     damping_ratio: f64,
+    storey_model: Option<OneOrMany<String>>,
+    yield_forces: Option<OneOrMany<f64>>,
+    post_yield_ratio: Option<OneOrMany<f64>>,
+    bouc_wen: Option<BoucWenEntry>,
+}
+
+/// One value for every storey, or a list with one per storey.
+#[derive(Deserialize, Clone)]
+#[serde(untagged)]
+enum OneOrMany<T> {
+    One(T),
+    Many(Vec<T>),
+}
+
+impl<T: Clone> OneOrMany<T> {
+    /// One value per storey; `Err(len)` for a list of the wrong length.
+    fn per_storey(&self, storeys: usize) -> Result<Vec<T>, usize> {
+        match self {
+            OneOrMany::One(x) => Ok(vec![x.clone(); storeys]),
+            OneOrMany::Many(v) if v.len() == storeys => Ok(v.clone()),
+            OneOrMany::Many(v) => Err(v.len()),
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BoucWenEntry {
+    #[serde(default = "one")]
+    n: f64,
+    #[serde(default = "half")]
+    beta: f64,
+    #[serde(default = "half")]
+    gamma: f64,
+}
+
+fn half() -> f64 {
+    0.5
 }
 
 fn five_percent() -> f64 {
@@ -128,6 +167,8 @@ impl At<'_> {
     /// The line of `key` (or its plural, the list it belongs to) inside the entry at `span`, else the
     /// entry's own line.
     fn key_span(&self, span: std::ops::Range<usize>, key: &str) -> std::ops::Range<usize> {
+        // A sub-key (`bouc_wen.beta`) is on the line of its table.
+        let key = key.split('.').next().unwrap_or(key);
         let body = &self.text[span.start.min(self.text.len())..span.end.min(self.text.len())];
         let mut offset = span.start;
         for line in body.split_inclusive('\n') {
@@ -196,6 +237,90 @@ fn word<T: ValueEnum>(
             ),
         )
     })
+}
+
+/// The storey laws of a building entry: `storey_model` (default linear), `yield_forces`, `post_yield_ratio`
+/// (default 0, elastic–perfectly-plastic) and `bouc_wen` (default n = 1, beta = gamma = 0.5).
+fn storey_laws(
+    at: &At,
+    span: std::ops::Range<usize>,
+    what: &str,
+    b: &BuildingEntry,
+) -> Result<Vec<StoreyLaw>, CliError> {
+    let storeys = b.masses.len();
+    let err =
+        |key: &str, msg: String| at.err(at.key_span(span.clone(), key), format!("{what}: {msg}"));
+    let list = |key: &str, len: usize| {
+        err(
+            key,
+            format!("{key} has {len} values, but there are {storeys} storeys: give one per storey, or one for all"),
+        )
+    };
+    let models = match &b.storey_model {
+        None => vec!["linear".to_string(); storeys],
+        Some(m) => m.per_storey(storeys).map_err(|n| list("storey_model", n))?,
+    };
+    for m in &models {
+        if !["linear", "bilinear", "bouc-wen"].contains(&m.as_str()) {
+            return Err(err(
+                "storey_model",
+                format!("storey_model = {m:?} is not allowed: one of linear, bilinear, bouc-wen"),
+            ));
+        }
+    }
+    let inelastic = models.iter().any(|m| m != "linear");
+    let bouc_wen = models.iter().any(|m| m == "bouc-wen");
+    for (key, given) in [
+        ("yield_forces", b.yield_forces.is_some()),
+        ("post_yield_ratio", b.post_yield_ratio.is_some()),
+    ] {
+        if given && !inelastic {
+            return Err(err(
+                key,
+                format!("{key} applies to bilinear and bouc-wen storeys, and every storey is linear (set storey_model)"),
+            ));
+        }
+    }
+    if b.bouc_wen.is_some() && !bouc_wen {
+        return Err(err(
+            "bouc_wen",
+            "bouc_wen applies to bouc-wen storeys, and there are none (set storey_model = \"bouc-wen\")".into(),
+        ));
+    }
+    if !inelastic {
+        return Ok(vec![StoreyLaw::Linear; storeys]);
+    }
+    let fy = match &b.yield_forces {
+        None => {
+            return Err(err(
+                "storey_model",
+                "yield_forces (N) is required for bilinear and bouc-wen storeys".into(),
+            ))
+        }
+        Some(f) => f.per_storey(storeys).map_err(|n| list("yield_forces", n))?,
+    };
+    let ratio = match &b.post_yield_ratio {
+        None => vec![0.0; storeys],
+        Some(r) => r
+            .per_storey(storeys)
+            .map_err(|n| list("post_yield_ratio", n))?,
+    };
+    let bw = b
+        .bouc_wen
+        .as_ref()
+        .map_or((1.0, 0.5, 0.5), |p| (p.n, p.beta, p.gamma));
+    models
+        .iter()
+        .enumerate()
+        .map(|(j, m)| {
+            match m.as_str() {
+                "bilinear" => StoreyLaw::bilinear(fy[j], ratio[j]),
+                "bouc-wen" => StoreyLaw::bouc_wen(fy[j], ratio[j], bw.0, bw.1, bw.2),
+                _ => Ok(StoreyLaw::Linear),
+            }
+            .map_err(|e| at.lib_in(span.clone(), &format!("{what}, storey {}", j + 1), e))
+        })
+        .collect()
 }
 
 /// Reads and validates the scenario file at `path`.
@@ -283,8 +408,11 @@ pub fn load(path: &Path) -> Result<Loaded, CliError> {
                 ),
             ));
         }
+        let what = format!("building {:?}", b.name);
+        let laws = storey_laws(&at, span.clone(), &what, &b)?;
         let structure = ShearBuilding::new(b.masses, b.stiffnesses, b.heights, b.damping_ratio)
-            .map_err(|e| at.lib_in(span.clone(), &format!("building {:?}", b.name), e))?;
+            .and_then(|s| s.with_storey_laws(laws))
+            .map_err(|e| at.lib_in(span.clone(), &what, e))?;
         spans.push(span);
         buildings.push(Building {
             name: b.name,

@@ -57,6 +57,14 @@ pub enum Error {
         /// Impact velocity, m/s.
         v_i: f64,
     },
+    /// Events kept firing without time advancing.
+    #[error(
+        "more than 1000 events at t = {t:e} s without time advancing (a phase that keeps changing)"
+    )]
+    EventChatter {
+        /// Time reached, s.
+        t: f64,
+    },
     /// The contact never ended (for example a supercritically damped contact that may pull).
     #[error(
         "the contact had not ended at t = {t:e} s: the bodies do not separate with this damping"

@@ -9,6 +9,8 @@
 //!   exact calibration, including the Papi & Toopchi-Nezhad (2022) model (the "seed").
 //! - [`impact`]: one impact (two bodies, or a ball dropped on a slab), integrated with located events, and
 //!   the exact relations it must agree with.
+//! - [`element`]: everything that adds a force: storeys (linear, bilinear, Bouc–Wen) and contacts.
+//! - [`engine`]: degrees of freedom, elements and the one driver that locates every event.
 //! - [`integrate`]: the adaptive Dormand–Prince stepper with dense output and Brent's root finder.
 //! - [`ground_motion`]: records (AT2, time/acceleration, values; built-in El Centro 1940), PGA/PGV/PGD.
 //! - [`structure`]: lumped-mass shear buildings, their modes and Rayleigh damping.
@@ -21,6 +23,8 @@ pub(crate) mod error;
 
 pub mod analysis;
 pub mod contact;
+pub mod element;
+pub mod engine;
 pub mod ground_motion;
 pub mod impact;
 pub mod integrate;

@@ -322,6 +322,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
         "kinetic",
         "strain",
         "dissipated by structural damping",
+        "dissipated by storey hysteresis",
         "contact (dissipated and stored)",
     ];
     let styles = [
@@ -332,9 +333,14 @@ pub fn run(d: &RunData) -> Vec<Figure> {
         Style::nth(5),
         Style::nth(2),
         Style::nth(0),
+        Style::nth(3),
         Style::nth(1),
     ];
     for ((name, e), st) in names.iter().zip(&d.energy).zip(styles) {
+        // Linear storeys dissipate nothing by hysteresis: no line for them.
+        if name.contains("hysteresis") && e.iter().all(|x| *x == 0.0) {
+            continue;
+        }
         energy
             .series
             .push(Series::line(*name, d.t.clone(), e.clone(), st));

@@ -23,7 +23,8 @@
 //! `u'^T M u' / 2`, strain `u^T K u / 2`, structural damping `int u'^T C u' dt` and contact work
 //! `int F d' dt` (equal to the energy dissipated by the contacts once every impact has ended).
 
-mod dynamics;
+mod model;
+mod record;
 mod run;
 
 use crate::contact::{ContactModel, PreparedContact};
@@ -300,14 +301,37 @@ impl Scenario {
         (self.duration / self.output_dt * (1.0 + 1e-12)).floor() as usize + 1
     }
 
-    /// Runs the analysis.
+    /// Runs the analysis, keeping the histories.
     pub fn run(&self) -> Result<Results, Error> {
-        run::run(self, &mut |_| {})
+        run::run(self, &RunOptions::default(), &mut |_| {})
     }
 
     /// Runs the analysis, telling `progress` how far it has got (for progress bars).
     pub fn run_with(&self, progress: &mut dyn FnMut(Progress)) -> Result<Results, Error> {
-        run::run(self, progress)
+        run::run(self, &RunOptions::default(), progress)
+    }
+
+    /// Runs the analysis with `options` (for example without histories, for studies of many runs).
+    pub fn run_with_options(
+        &self,
+        options: &RunOptions,
+        progress: &mut dyn FnMut(Progress),
+    ) -> Result<Results, Error> {
+        run::run(self, options, progress)
+    }
+}
+
+/// What a run keeps.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunOptions {
+    /// Keep the time histories at the output interval (otherwise [`Results::histories`] is empty and a run
+    /// keeps only its peaks, impacts and energies).
+    pub histories: bool,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        Self { histories: true }
     }
 }
 
@@ -347,6 +371,21 @@ pub struct BuildingResponse {
     pub time_of_peak_displacement: Vec<f64>,
     /// Largest |inter-storey drift| of each storey, m.
     pub peak_drift: Vec<f64>,
+    /// Largest |absolute acceleration| `|u'' + a_g|` of each floor, m/s^2, over every integration node (step
+    /// ends and events, just before and just after each event).
+    pub peak_absolute_acceleration: Vec<f64>,
+    /// Time of each, s.
+    pub time_of_peak_absolute_acceleration: Vec<f64>,
+    /// Largest |restoring force| of each storey (its law's force, without the Rayleigh damping force), N.
+    pub peak_storey_shear: Vec<f64>,
+    /// Displacement of each floor at the end of the analysis, m (signed).
+    pub residual_displacement: Vec<f64>,
+    /// Drift of each storey at the end of the analysis, m (signed).
+    pub residual_drift: Vec<f64>,
+    /// Ductility demand of each storey, peak drift / yield drift (`None` for a linear storey).
+    pub ductility: Vec<Option<f64>>,
+    /// Energy dissipated by the hysteresis of each storey, J (0 for a linear storey).
+    pub hysteretic_energy: Vec<f64>,
 }
 
 /// Totals of one link (all its elements).
@@ -373,10 +412,12 @@ pub struct EnergyBalance {
     pub strain: f64,
     /// Energy dissipated by structural damping, J.
     pub damping: f64,
+    /// Energy dissipated by the hysteresis of the storeys, J.
+    pub hysteretic: f64,
     /// Work of the contact forces, J (dissipated energy, plus what the contacts hold at the end).
     pub contact: f64,
-    /// Largest `|input - kinetic - strain - damping - contact|` over the run, divided by the largest of
-    /// `kinetic + strain + damping + |contact|` (dimensionless).
+    /// Largest `|input - kinetic - strain - damping - hysteretic - contact|` over the run (at every node),
+    /// divided by the largest of `kinetic + strain + damping + hysteretic + |contact|` (dimensionless).
     pub relative_error: f64,
 }
 
@@ -389,10 +430,15 @@ pub struct Histories {
     pub ground_acceleration: Vec<f64>,
     /// `displacement[building][floor][sample]`, m, relative to the ground.
     pub displacement: Vec<Vec<Vec<f64>>>,
+    /// `absolute_acceleration[building][floor][sample]`, `u'' + a_g`, m/s^2.
+    pub absolute_acceleration: Vec<Vec<Vec<f64>>>,
+    /// `storey_shear[building][storey][sample]`: the restoring force of each storey, N.
+    pub storey_shear: Vec<Vec<Vec<f64>>>,
     /// `force[link][element][sample]`, N (elements in the order of [`Link::floors`]).
     pub force: Vec<Vec<Vec<f64>>>,
-    /// Energies, J: input, kinetic, strain, damping, contact work (`energy[0..5][sample]`).
-    pub energy: [Vec<f64>; 5],
+    /// Energies, J: input, kinetic, recoverable strain, viscous damping, hysteretic, contact work
+    /// (`energy[0..6][sample]`).
+    pub energy: [Vec<f64>; 6],
 }
 
 /// Counts of the integration.
@@ -417,7 +463,7 @@ pub struct Results {
     pub impacts: Vec<Impact>,
     /// Energy balance.
     pub energy: EnergyBalance,
-    /// Time histories.
+    /// Time histories (empty when the run kept none, see [`RunOptions`]).
     pub histories: Histories,
     /// Integration counts.
     pub statistics: Statistics,

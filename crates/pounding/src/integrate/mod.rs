@@ -120,6 +120,16 @@ impl Dense {
             + th * (self.r[1][i] + th1 * (self.r[2][i] + th * (self.r[3][i] + th1 * self.r[4][i])))
     }
 
+    /// The interpolant of `u_a - u_b` (a missing index stands for 0), kept after the stepper has moved on.
+    pub fn difference(&self, a: Option<usize>, b: Option<usize>) -> DenseComponent {
+        let coef = |i: Option<usize>, k: usize| i.map_or(0.0, |i| self.r[k][i]);
+        DenseComponent {
+            t0: self.t0,
+            h: self.h,
+            r: std::array::from_fn(|k| coef(a, k) - coef(b, k)),
+        }
+    }
+
     /// Copies another interpolant into this one without allocating.
     pub fn copy_from(&mut self, other: &Dense) {
         self.t0 = other.t0;
@@ -130,13 +140,37 @@ impl Dense {
     }
 }
 
+/// One scalar of an interpolant (see [`Dense::difference`]), valid on the step it came from.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DenseComponent {
+    t0: f64,
+    h: f64,
+    r: [f64; 5],
+}
+
+impl DenseComponent {
+    /// The value at `t`.
+    #[inline]
+    pub fn eval(&self, t: f64) -> f64 {
+        let th = if self.h == 0.0 {
+            0.0
+        } else {
+            (t - self.t0) / self.h
+        };
+        let th1 = 1.0 - th;
+        let r = &self.r;
+        r[0] + th * (r[1] + th1 * (r[2] + th * (r[3] + th1 * r[4])))
+    }
+}
+
 /// Accuracy settings of [`DormandPrince`]: a step is accepted when the weighted RMS of the local error,
 /// with weight `atol_i + rtol * |y_i|`, is at most 1.
 #[derive(Clone, Debug)]
 pub struct Tolerance {
     /// Relative tolerance (dimensionless).
     pub rtol: f64,
-    /// Absolute tolerance of each component, in that component's unit.
+    /// Absolute tolerance of each component, in that component's unit; an infinite value leaves the
+    /// component out of the error control (a bookkeeping integral nobody reads).
     pub atol: Vec<f64>,
 }
 
@@ -145,6 +179,8 @@ pub struct Tolerance {
 #[derive(Debug)]
 pub struct DormandPrince {
     n: usize,
+    /// Number of components under error control.
+    controlled: usize,
     tol: Tolerance,
     t: f64,
     h: f64,
@@ -163,8 +199,10 @@ impl DormandPrince {
     /// A stepper for a system of `tol.atol.len()` components.
     pub fn new(tol: Tolerance) -> Self {
         let n = tol.atol.len();
+        let controlled = tol.atol.iter().filter(|a| a.is_finite()).count().max(1);
         Self {
             n,
+            controlled,
             tol,
             t: 0.0,
             h: 0.0,
@@ -201,6 +239,11 @@ impl DormandPrince {
     /// Trial size of the next step.
     pub fn h(&self) -> f64 {
         self.h
+    }
+
+    /// Time derivative `f(t, y)` of the current state (after a reset, or at the end of the last step).
+    pub fn dydt(&self) -> &[f64] {
+        &self.k[0]
     }
 
     /// The interpolant of the last accepted step.
@@ -287,7 +330,7 @@ impl DormandPrince {
                 let sc = self.tol.atol[i] + self.tol.rtol * self.y[i].abs().max(self.ynew[i].abs());
                 err += (e / sc) * (e / sc);
             }
-            let err = (err / n as f64).sqrt();
+            let err = (err / self.controlled as f64).sqrt();
             if !err.is_finite() {
                 self.rejected += 1;
                 self.h = h * 0.2;

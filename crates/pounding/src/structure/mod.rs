@@ -10,6 +10,7 @@
 
 mod eigen;
 
+use crate::element::StoreyLaw;
 use crate::error::check;
 use crate::Error;
 
@@ -23,6 +24,8 @@ pub struct ShearBuilding {
     damping_ratio: f64,
     /// Rayleigh coefficients `(a0, a1)`, fixed by the modes at construction.
     rayleigh: (f64, f64),
+    /// The law of each storey (linear unless set by [`ShearBuilding::with_storey_laws`]).
+    storey_laws: Vec<StoreyLaw>,
     /// Natural modes, computed once at construction (derived data: not serialised).
     #[cfg_attr(feature = "serde", serde(skip))]
     modes: Modes,
@@ -114,6 +117,7 @@ impl ShearBuilding {
             "0 <= damping_ratio < 1",
         )?;
         let (modes, _sweeps) = solve_modes(&masses, &stiffnesses);
+        let n_storeys = masses.len();
         let w = &modes.omega;
         let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
         let rayleigh = (
@@ -126,8 +130,29 @@ impl ShearBuilding {
             heights,
             damping_ratio,
             rayleigh,
+            storey_laws: vec![StoreyLaw::Linear; n_storeys],
             modes,
         })
+    }
+
+    /// Sets the law of each storey (one per storey). The stiffnesses stay the initial stiffnesses: modes and
+    /// Rayleigh damping (`C = a0 M + a1 K_0`, OpenSees' `betaKinit`) are those of the initial, elastic
+    /// building.
+    pub fn with_storey_laws(mut self, laws: Vec<StoreyLaw>) -> Result<Self, Error> {
+        if laws.len() != self.storeys() {
+            return Err(Error::Length {
+                name: "storey_model",
+                len: laws.len(),
+                expected: self.storeys(),
+            });
+        }
+        self.storey_laws = laws;
+        Ok(self)
+    }
+
+    /// The law of each storey, storey 1 upwards.
+    pub fn storey_laws(&self) -> &[StoreyLaw] {
+        &self.storey_laws
     }
 
     /// Number of storeys (= floors).

@@ -6,6 +6,7 @@ mod buildings;
 mod calibration;
 mod exact_relations;
 mod ground_motion;
+mod inelastic;
 mod integrated;
 mod paper;
 

@@ -1,0 +1,145 @@
+//! The row of buildings as a system of the engine: one degree of freedom per floor, one storey element per
+//! storey, one contact element per floor pair of each link.
+
+use super::Scenario;
+use crate::element::{Contact, Element, End, Storey};
+use crate::engine::{Dof, Ground, System};
+
+/// A contact element and where it stands.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct ContactRef {
+    /// Index of the element in the system.
+    pub element: usize,
+    /// Index of the link in [`Scenario::links`].
+    pub link: usize,
+    /// Floor pair `(left, right)`, from 1.
+    pub floors: (usize, usize),
+}
+
+/// The system and the map from buildings, storeys and contacts to its degrees of freedom and elements.
+pub(super) struct Model<'a> {
+    pub system: System<'a>,
+    /// First degree of freedom of each building (floor 1).
+    pub offsets: Vec<usize>,
+    /// Element index of storey 1 of each building (its storeys follow in order).
+    pub first_storey: Vec<usize>,
+    /// The contact elements, link by link, floor pair by floor pair.
+    pub contacts: Vec<ContactRef>,
+}
+
+impl<'a> Model<'a> {
+    pub fn new(s: &'a Scenario) -> Self {
+        let mut dofs = Vec::new();
+        let mut elements = Vec::new();
+        let mut offsets = Vec::new();
+        let mut first_storey = Vec::new();
+        for b in s.buildings() {
+            let st = &b.structure;
+            let (a0, a1) = st.rayleigh();
+            let offset = dofs.len();
+            offsets.push(offset);
+            first_storey.push(elements.len());
+            for (j, (&k, law)) in st.stiffnesses().iter().zip(st.storey_laws()).enumerate() {
+                let bottom = if j == 0 {
+                    End::Ground
+                } else {
+                    End::Dof(offset + j - 1)
+                };
+                // Rayleigh damping on the initial stiffness (OpenSees' betaKinit).
+                elements.push(Element::storey(
+                    offset + j,
+                    bottom,
+                    Storey::new(k, *law, a1 * k),
+                ));
+            }
+            dofs.extend(st.masses().iter().map(|&mass| Dof { mass, a0 }));
+        }
+        let mut contacts = Vec::new();
+        for (li, link) in s.links().iter().enumerate() {
+            for &(fl, fr) in &link.floors {
+                let (left, right) = (offsets[link.left] + fl - 1, offsets[link.right] + fr - 1);
+                let (ml, mr) = (dofs[left].mass, dofs[right].mass);
+                contacts.push(ContactRef {
+                    element: elements.len(),
+                    link: li,
+                    floors: (fl, fr),
+                });
+                elements.push(Element::contact(
+                    End::Dof(left),
+                    End::Dof(right),
+                    Contact::new(
+                        link.contact.clone(),
+                        link.gap,
+                        ml * mr / (ml + mr),
+                        s.min_impact_velocity(),
+                    ),
+                ));
+            }
+        }
+        Self {
+            system: System::new(&dofs, elements, Ground::Record(s.record())),
+            offsets,
+            first_storey,
+            contacts,
+        }
+    }
+
+    /// Absolute tolerances of every state component for the relative tolerance `rtol`, and a first trial
+    /// step. Scales per building: the static displacement of its fundamental mode under the peak ground
+    /// acceleration (or, for a building so flexible that it barely responds within the analysis, of a mode
+    /// with the analysis duration as period), and the velocity that goes with it; energies from those.
+    pub fn tolerances(&self, s: &Scenario, rtol: f64) -> (Vec<f64>, f64) {
+        let sys = &self.system;
+        let l = sys.layout();
+        let n = l.dofs();
+        let pga = s
+            .record()
+            .accelerations()
+            .iter()
+            .fold(0.0f64, |a, x| a.max(x.abs()));
+        let max_gap = s.links().iter().map(|l| l.gap).fold(0.0, f64::max);
+        let w_floor = 2.0 * std::f64::consts::PI / s.duration();
+        let mut atol = vec![0.0; l.dim()];
+        let mut u_scale = vec![0.0; n];
+        let mut v_scale = vec![0.0; n];
+        let mut w_max: f64 = 0.0;
+        for (b, &offset) in s.buildings().iter().zip(&self.offsets) {
+            let omega = &b.structure.modes().omega;
+            w_max = omega.iter().copied().fold(w_max, f64::max);
+            let w = omega[0].max(w_floor);
+            let u = (pga / (w * w)).max(1e-3 * max_gap).max(1e-9);
+            for i in offset..offset + omega.len() {
+                (u_scale[i], v_scale[i]) = (u, u * w);
+                atol[l.u(i)] = rtol * u;
+                atol[l.v(i)] = rtol * u * w;
+            }
+        }
+        let e_scale: f64 = (0..n)
+            .map(|i| sys.masses()[i] * v_scale[i] * v_scale[i])
+            .sum();
+        atol[l.input()] = rtol * e_scale;
+        atol[l.damping()] = rtol * e_scale;
+        for (e, el) in sys.elements().iter().enumerate() {
+            let r = l.block(e);
+            let ends = [el.a.dof(), el.b.dof()];
+            let v = ends
+                .iter()
+                .flatten()
+                .map(|&i| v_scale[i])
+                .fold(0.0, f64::max);
+            match &el.kind {
+                crate::element::Kind::Contact(c) => {
+                    atol[r.start] = rtol * c.effective_mass() * v * v;
+                }
+                crate::element::Kind::Storey(_) => {
+                    // Bouc–Wen: z is dimensionless and of order 1; then the work of its hysteretic part.
+                    if r.len() == 2 {
+                        atol[r.start] = rtol;
+                        atol[r.start + 1] = rtol * e_scale;
+                    }
+                }
+            }
+        }
+        (atol, 1e-3 * 2.0 * std::f64::consts::PI / w_max)
+    }
+}

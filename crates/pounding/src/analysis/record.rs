@@ -1,0 +1,427 @@
+//! What a pounding run keeps, as observers of the engine: peaks of floors and storeys, impacts, the energy
+//! balance, and (optionally) histories at the output interval.
+
+use super::model::{ContactRef, Model};
+use super::{Histories, Impact, Progress};
+use crate::element::{ContactPiece, Event, Kind};
+use crate::engine::{hermite_peak, EventInfo, Hermite, Observer, PeakTracker, Segment, System};
+
+/// A largest value and its time, s.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Peak {
+    pub value: f64,
+    pub time: f64,
+}
+
+impl Peak {
+    fn offer(&mut self, value: f64, time: f64) {
+        if value > self.value {
+            *self = Peak { value, time };
+        }
+    }
+}
+
+/// Peaks of every floor (degree of freedom) and every storey (indexed by the degree of freedom of its top
+/// floor).
+pub(super) struct Peaks {
+    /// Element index of the storey under each floor.
+    storey: Vec<usize>,
+    pub displacement: Vec<Peak>,
+    pub acceleration: Vec<Peak>,
+    pub drift: Vec<f64>,
+    pub shear: Vec<f64>,
+}
+
+impl Peaks {
+    pub fn new(m: &Model) -> Self {
+        let n = m.system.layout().dofs();
+        let mut storey = vec![0; n];
+        for (&offset, &first) in m.offsets.iter().zip(&m.first_storey) {
+            let next = m.offsets.iter().copied().find(|&o| o > offset).unwrap_or(n);
+            for (j, s) in storey[offset..next].iter_mut().enumerate() {
+                *s = first + j;
+            }
+        }
+        Self {
+            storey,
+            displacement: vec![Peak::default(); n],
+            acceleration: vec![Peak::default(); n],
+            drift: vec![0.0; n],
+            shear: vec![0.0; n],
+        }
+    }
+
+    fn accelerations(&mut self, sys: &System, t: f64, rate: &[f64]) {
+        let ag = sys.ground().at(t);
+        let l = sys.layout();
+        for (i, p) in self.acceleration.iter_mut().enumerate() {
+            p.offer((rate[l.v(i)] + ag).abs(), t);
+        }
+    }
+}
+
+impl Observer for Peaks {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let sys = seg.system;
+        let l = sys.layout();
+        let (y0, y1) = (seg.y0, seg.y1);
+        let h = seg.t1 - seg.t0;
+        for i in 0..l.dofs() {
+            let (s, u) = hermite_peak(y0[l.u(i)], y1[l.u(i)], y0[l.v(i)], y1[l.v(i)], h);
+            self.displacement[i].offer(u, seg.t0 + s * h);
+            // The storey under floor i: its drift, and its force at the drift's extrema and at the end.
+            let e = self.storey[i];
+            let el = &sys.elements()[e];
+            let ((xa, va), (xb, vb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
+            let drift = Hermite::new(xa, xb, va, vb, h);
+            self.drift[i] = self.drift[i].max(hermite_peak(xa, xb, va, vb, h).1);
+            let block = l.block(e);
+            let mut shear = el.force(xb, vb, &y1[block.clone()]).abs();
+            for s in drift.extrema() {
+                if s.is_nan() {
+                    continue;
+                }
+                let t = seg.t0 + s * h;
+                let mut states = [0.0; 2];
+                for (k, z) in block.clone().zip(states.iter_mut()) {
+                    *z = seg.dense.component(t, k);
+                }
+                shear = shear.max(el.force(drift.at(s), 0.0, &states[..block.len()]).abs());
+            }
+            self.shear[i] = self.shear[i].max(shear);
+        }
+        self.accelerations(sys, seg.t1, seg.rate1);
+    }
+
+    fn event(&mut self, ev: &EventInfo<'_, '_>) {
+        // The acceleration just after the event (a contact force may jump at touch).
+        self.accelerations(ev.system, ev.t, ev.rate);
+    }
+}
+
+/// The impact a contact element is in (or has just been released from).
+struct Tracker {
+    time: f64,
+    v_i: f64,
+    work0: f64,
+    peak: PeakTracker<ContactPiece>,
+    max_penetration: f64,
+    /// Index in the impact list once recorded (released, not yet re-armed).
+    recorded: Option<usize>,
+}
+
+/// Every impact of every contact element.
+pub(super) struct Impacts {
+    contacts: Vec<ContactRef>,
+    /// Position in `contacts` of each element (`usize::MAX` for storeys).
+    slot: Vec<usize>,
+    trackers: Vec<Option<Tracker>>,
+    pub impacts: Vec<Impact>,
+}
+
+impl Impacts {
+    pub fn new(m: &Model) -> Self {
+        let mut slot = vec![usize::MAX; m.system.elements().len()];
+        for (k, c) in m.contacts.iter().enumerate() {
+            slot[c.element] = k;
+        }
+        Self {
+            contacts: m.contacts.clone(),
+            slot,
+            trackers: m.contacts.iter().map(|_| None).collect(),
+            impacts: Vec::new(),
+        }
+    }
+
+    /// Impacts started so far (ended or not).
+    pub fn count(&self) -> usize {
+        self.impacts.len() + self.trackers.iter().flatten().count()
+    }
+
+    fn impact(c: &ContactRef, tr: &mut Tracker, t: f64, v_out: Option<f64>, work: f64) -> Impact {
+        let (time_of_peak_force, peak_force) = tr.peak.finish();
+        Impact {
+            link: c.link,
+            floors: c.floors,
+            time: tr.time,
+            v_i: tr.v_i,
+            v_out,
+            e_post: v_out.and_then(|v| (tr.v_i > 0.0).then(|| -v / tr.v_i)),
+            peak_force,
+            time_of_peak_force,
+            max_penetration: tr.max_penetration,
+            duration: t - tr.time,
+            dissipated_energy: work - tr.work0,
+        }
+    }
+
+    /// Ends the record: impacts still going on at `t`, and every impact in order of touch.
+    pub fn finish(mut self, sys: &System, t: f64, y: &[f64]) -> Vec<Impact> {
+        for (k, c) in self.contacts.iter().enumerate() {
+            let engaged = matches!(
+                &sys.elements()[c.element].kind,
+                Kind::Contact(ct) if matches!(ct.state(), crate::element::Engagement::Contact { .. })
+            );
+            if let (Some(tr), true) = (self.trackers[k].as_mut(), engaged) {
+                let work = y[sys.layout().block(c.element).start];
+                self.impacts.push(Self::impact(c, tr, t, None, work));
+            }
+        }
+        self.impacts.sort_by(|a, b| a.time.total_cmp(&b.time));
+        self.impacts
+    }
+}
+
+impl Observer for Impacts {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let sys = seg.system;
+        for (c, tr) in self.contacts.iter().zip(self.trackers.iter_mut()) {
+            let (Some(tr), Kind::Contact(ct)) = (tr.as_mut(), &sys.elements()[c.element].kind)
+            else {
+                continue;
+            };
+            let (x, v) = sys.deformation_interpolants(c.element, seg.dense);
+            if let Some(piece) = ct.piece((seg.t0, seg.t1), x, v) {
+                let (x1, v1) = sys.deformation(c.element, seg.y1);
+                tr.peak.push(piece, ct.reported_force(x1, v1));
+                tr.max_penetration = tr.max_penetration.max(x1 - ct.gap());
+            }
+        }
+    }
+
+    fn event(&mut self, ev: &EventInfo<'_, '_>) {
+        let k = self.slot[ev.element];
+        if k == usize::MAX {
+            return;
+        }
+        let sys = ev.system;
+        let c = self.contacts[k];
+        let Kind::Contact(ct) = &sys.elements()[c.element].kind else {
+            return;
+        };
+        let (x, v) = sys.deformation(c.element, ev.y);
+        let work = ev.y[sys.layout().block(c.element).start];
+        match ev.event {
+            Event::Touch => {
+                self.trackers[k] = Some(Tracker {
+                    time: ev.t,
+                    v_i: v,
+                    work0: work,
+                    peak: PeakTracker::new(ev.t, ct.reported_force(x, v)),
+                    max_penetration: 0.0,
+                    recorded: None,
+                });
+            }
+            Event::Turn => {
+                if let Some(tr) = self.trackers[k].as_mut() {
+                    tr.max_penetration = tr.max_penetration.max(x - ct.gap());
+                }
+            }
+            Event::ZeroForce => {
+                if let Some(tr) = self.trackers[k].as_mut() {
+                    self.impacts.push(Self::impact(&c, tr, ev.t, Some(v), work));
+                    tr.recorded = Some(self.impacts.len() - 1);
+                }
+            }
+            Event::Separation => {
+                if let Some(mut tr) = self.trackers[k].take() {
+                    self.impacts
+                        .push(Self::impact(&c, &mut tr, ev.t, Some(v), work));
+                }
+            }
+            Event::Rearm => self.trackers[k] = None,
+            Event::Resume => {
+                // The same impact goes on: withdraw its record.
+                if let Some(i) = self.trackers[k].as_mut().and_then(|tr| tr.recorded.take()) {
+                    self.impacts.remove(i);
+                    for j in self
+                        .trackers
+                        .iter_mut()
+                        .flatten()
+                        .filter_map(|t| t.recorded.as_mut())
+                    {
+                        if *j > i {
+                            *j -= 1;
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The worst energy imbalance over the run, at every node.
+#[derive(Default)]
+pub(super) struct Balance {
+    pub worst: f64,
+    pub scale: f64,
+}
+
+impl Observer for Balance {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let e = seg.system.energies(seg.y1);
+        self.worst = self.worst.max(e.imbalance().abs());
+        self.scale = self.scale.max(e.scale());
+    }
+}
+
+/// Histories at the output interval.
+pub(super) struct HistoryRecorder {
+    pub hist: Histories,
+    times: Vec<f64>,
+    next: usize,
+    offsets: Vec<usize>,
+    first_storey: Vec<usize>,
+    contacts: Vec<ContactRef>,
+    ys: Vec<f64>,
+    rate: Vec<f64>,
+}
+
+impl HistoryRecorder {
+    /// Samples at `k dt` (the last one at `t_end`), `n_out` of them.
+    pub fn new(
+        m: &Model,
+        storeys: &[usize],
+        links: &[usize],
+        n_out: usize,
+        dt: f64,
+        t_end: f64,
+    ) -> Self {
+        let dim = m.system.layout().dim();
+        let per = |counts: &[usize]| -> Vec<Vec<Vec<f64>>> {
+            counts
+                .iter()
+                .map(|&c| vec![Vec::with_capacity(n_out); c])
+                .collect()
+        };
+        Self {
+            hist: Histories {
+                t: Vec::with_capacity(n_out),
+                ground_acceleration: Vec::with_capacity(n_out),
+                displacement: per(storeys),
+                absolute_acceleration: per(storeys),
+                storey_shear: per(storeys),
+                force: per(links),
+                energy: std::array::from_fn(|_| Vec::with_capacity(n_out)),
+            },
+            times: (0..n_out).map(|k| (k as f64 * dt).min(t_end)).collect(),
+            next: 0,
+            offsets: m.offsets.clone(),
+            first_storey: m.first_storey.clone(),
+            contacts: m.contacts.clone(),
+            ys: vec![0.0; dim],
+            rate: vec![0.0; dim],
+        }
+    }
+}
+
+impl Observer for HistoryRecorder {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let sys = seg.system;
+        let l = sys.layout();
+        while let Some(&t) = self.times.get(self.next) {
+            if t > seg.t1 {
+                break;
+            }
+            use crate::integrate::OdeSystem;
+            seg.dense.eval(t.max(seg.t0), &mut self.ys);
+            sys.rhs(t, &self.ys, &mut self.rate);
+            let ag = sys.ground().at(t);
+            let h = &mut self.hist;
+            h.t.push(t);
+            h.ground_acceleration.push(ag);
+            for (b, (&o, &s0)) in self.offsets.iter().zip(&self.first_storey).enumerate() {
+                for (f, col) in h.displacement[b].iter_mut().enumerate() {
+                    col.push(self.ys[l.u(o + f)]);
+                }
+                for (f, col) in h.absolute_acceleration[b].iter_mut().enumerate() {
+                    col.push(self.rate[l.v(o + f)] + ag);
+                }
+                for (j, col) in h.storey_shear[b].iter_mut().enumerate() {
+                    col.push(sys.element_force(s0 + j, &self.ys));
+                }
+            }
+            let mut k = 0;
+            for link in h.force.iter_mut() {
+                for col in link.iter_mut() {
+                    let e = self.contacts[k].element;
+                    let (x, v) = sys.deformation(e, &self.ys);
+                    let f = match &sys.elements()[e].kind {
+                        Kind::Contact(c) => c.reported_force(x, v),
+                        Kind::Storey(_) => 0.0,
+                    };
+                    col.push(f);
+                    k += 1;
+                }
+            }
+            let e = sys.energies(&self.ys);
+            for (col, x) in h.energy.iter_mut().zip([
+                e.input,
+                e.kinetic,
+                e.strain,
+                e.damping,
+                e.hysteretic,
+                e.contact,
+            ]) {
+                col.push(x);
+            }
+            self.next += 1;
+        }
+    }
+}
+
+/// Everything a run keeps, and its progress reports.
+pub(super) struct Recorders<'p> {
+    pub peaks: Peaks,
+    pub impacts: Impacts,
+    pub balance: Balance,
+    pub histories: Option<HistoryRecorder>,
+    pub progress: &'p mut dyn FnMut(Progress),
+    pub t_end: f64,
+    last_report: f64,
+}
+
+impl<'p> Recorders<'p> {
+    pub fn new(
+        peaks: Peaks,
+        impacts: Impacts,
+        histories: Option<HistoryRecorder>,
+        progress: &'p mut dyn FnMut(Progress),
+        t_end: f64,
+    ) -> Self {
+        Self {
+            peaks,
+            impacts,
+            balance: Balance::default(),
+            histories,
+            progress,
+            t_end,
+            last_report: f64::NEG_INFINITY,
+        }
+    }
+}
+
+impl Observer for Recorders<'_> {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        self.peaks.segment(seg);
+        self.impacts.segment(seg);
+        self.balance.segment(seg);
+        if let Some(h) = self.histories.as_mut() {
+            h.segment(seg);
+        }
+        if seg.t1 - self.last_report >= 0.005 * self.t_end || seg.t1 >= self.t_end {
+            self.last_report = seg.t1;
+            (self.progress)(Progress {
+                t: seg.t1,
+                duration: self.t_end,
+                impacts: self.impacts.count(),
+            });
+        }
+    }
+
+    fn event(&mut self, ev: &EventInfo<'_, '_>) {
+        self.peaks.event(ev);
+        self.impacts.event(ev);
+    }
+}

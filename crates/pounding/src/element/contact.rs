@@ -1,0 +1,322 @@
+//! Contact elements: one impact after another between two ends (two floors, or a floor and a wall).
+//!
+//! The penetration is `d = x - gap` with `x = u_a - u_b` (m), its rate `v = x'` (m/s). Each impact is one
+//! touch: its onset is located as an event, so `v_i` is the rate at the moment of touch, and the law is
+//! built afresh for it ([`crate::contact::PreparedContact::law`], with the element's effective mass). Within
+//! an impact the phase follows the rate (approach while `v > 0`, restitution after each turning point), as in
+//! OpenSees' impact materials; a bilinear law reloads elastically up to its last turning point. The impact
+//! ends when `d` returns to 0, or, for a law whose force is clamped, when the force first reaches 0 in
+//! restitution; the contact then carries no force until `d` returns to 0 (if the ends approach again before
+//! that, the same impact resumes).
+
+use crate::contact::{ForceLaw, Phase, PreparedContact, Tension, Turn};
+use crate::element::{Event, Transition};
+use crate::engine::Piece;
+use crate::integrate::DenseComponent;
+use crate::Error;
+
+/// What a contact element is doing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Engagement {
+    /// Apart (or touching without force): waiting for `d` to exceed 0.
+    Open,
+    /// In contact, with the law of the current impact.
+    Contact {
+        /// The law of this impact.
+        law: ForceLaw,
+        /// Approach or restitution.
+        phase: Phase,
+        /// The last turning point.
+        turn: Turn,
+    },
+    /// A clamped force reached zero while `d > 0`: no force until `d <= 0` (or the ends approach again).
+    Released {
+        /// The law of the impact that was released.
+        law: ForceLaw,
+        /// Its last turning point.
+        turn: Turn,
+    },
+}
+
+/// Where the law of each impact comes from.
+#[derive(Clone, Debug)]
+pub enum LawSource {
+    /// Built at every touch from a prepared contact model, with the impact velocity floored at
+    /// `min_impact_velocity` (m/s).
+    Prepared {
+        /// The contact model with its damping parameter fixed.
+        contact: PreparedContact,
+        /// Smallest impact velocity used to build a law, m/s.
+        min_impact_velocity: f64,
+    },
+    /// One given law (a single impact that starts engaged).
+    Fixed,
+}
+
+/// A contact element.
+#[derive(Clone, Debug)]
+pub struct Contact {
+    gap: f64,
+    m_eff: f64,
+    tension: Tension,
+    source: LawSource,
+    stop_at_end: bool,
+    state: Engagement,
+}
+
+impl Contact {
+    /// An open contact with gap `gap` (m) at rest and effective mass `m_eff` (kg: `m_a m_b / (m_a + m_b)`, or
+    /// the floor's mass against a rigid wall).
+    pub fn new(contact: PreparedContact, gap: f64, m_eff: f64, min_impact_velocity: f64) -> Self {
+        Self {
+            gap,
+            m_eff,
+            tension: contact.spec().tension(),
+            source: LawSource::Prepared {
+                contact,
+                min_impact_velocity,
+            },
+            stop_at_end: false,
+            state: Engagement::Open,
+        }
+    }
+
+    /// A contact already touching (gap 0) at the start of an approach with `law`; the run stops when the
+    /// impact ends.
+    pub fn engaged(law: ForceLaw, tension: Tension, m_eff: f64) -> Self {
+        Self {
+            gap: 0.0,
+            m_eff,
+            tension,
+            source: LawSource::Fixed,
+            stop_at_end: true,
+            state: Engagement::Contact {
+                law,
+                phase: Phase::Approach,
+                turn: Turn::default(),
+            },
+        }
+    }
+
+    /// Gap at rest, m.
+    pub fn gap(&self) -> f64 {
+        self.gap
+    }
+    /// Effective mass of an impact, kg.
+    pub fn effective_mass(&self) -> f64 {
+        self.m_eff
+    }
+    /// Tension rule.
+    pub fn tension(&self) -> Tension {
+        self.tension
+    }
+    /// What the contact is doing.
+    pub fn state(&self) -> Engagement {
+        self.state
+    }
+
+    /// Contact force, N (positive pushes the ends apart), at deformation `x` and rate `v`: the law continued
+    /// smoothly past the end of contact, which is located as an event.
+    #[inline]
+    pub fn force(&self, x: f64, v: f64) -> f64 {
+        match self.state {
+            Engagement::Contact { law, phase, turn } => law.force(x - self.gap, v, phase, &turn),
+            _ => 0.0,
+        }
+    }
+
+    /// The force as reported: never negative for a clamped law, N.
+    #[inline]
+    pub fn reported_force(&self, x: f64, v: f64) -> f64 {
+        let f = self.force(x, v);
+        match self.tension {
+            Tension::Clamp => f.max(0.0),
+            Tension::Allow => f,
+        }
+    }
+
+    /// The events to watch in the current state.
+    pub fn watched(&self) -> &'static [Event] {
+        let kinked = |law: &ForceLaw| law.kink(0.0, Phase::Approach, &Turn::default()).is_some();
+        match self.state {
+            Engagement::Open => &[Event::Touch],
+            Engagement::Contact {
+                law,
+                phase: Phase::Approach,
+                ..
+            } => {
+                if kinked(&law) {
+                    &[Event::Turn, Event::Kink]
+                } else {
+                    &[Event::Turn]
+                }
+            }
+            Engagement::Contact {
+                law,
+                phase: Phase::Restitution,
+                ..
+            } => match (self.tension, kinked(&law)) {
+                (Tension::Clamp, true) => &[
+                    Event::Separation,
+                    Event::ZeroForce,
+                    Event::Reapproach,
+                    Event::Kink,
+                ],
+                (Tension::Clamp, false) => {
+                    &[Event::Separation, Event::ZeroForce, Event::Reapproach]
+                }
+                (Tension::Allow, true) => &[Event::Separation, Event::Reapproach, Event::Kink],
+                (Tension::Allow, false) => &[Event::Separation, Event::Reapproach],
+            },
+            Engagement::Released { .. } => &[Event::Rearm, Event::Resume],
+        }
+    }
+
+    /// Event function of `ev` at deformation `x` and rate `v`: positive before the event, <= 0 after.
+    #[inline]
+    pub fn event_value(&self, ev: Event, x: f64, v: f64) -> f64 {
+        let d = x - self.gap;
+        let (law, phase, turn) = match self.state {
+            Engagement::Contact { law, phase, turn } => (Some(law), phase, turn),
+            Engagement::Released { law, turn } => (Some(law), Phase::Restitution, turn),
+            Engagement::Open => (None, Phase::Approach, Turn::default()),
+        };
+        match ev {
+            Event::Touch => -d,
+            Event::Turn => v,
+            Event::Kink => law.and_then(|l| l.kink(d, phase, &turn)).unwrap_or(1.0),
+            Event::ZeroForce => law.map_or(1.0, |l| l.force(d, v, phase, &turn)),
+            Event::Separation | Event::Rearm => d,
+            Event::Reapproach => match law {
+                Some(ForceLaw::Bilinear { .. }) => turn.d - d,
+                _ => -v,
+            },
+            Event::Resume => -v,
+            _ => 1.0,
+        }
+    }
+
+    /// Applies `ev` at deformation `x` and rate `v`; `h` is the step the integrator would take next (s).
+    pub fn apply(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
+        let d = x - self.gap;
+        let mut out = Transition::default();
+        self.state = match (self.state, ev) {
+            (Engagement::Open, Event::Touch) => {
+                let law = match &self.source {
+                    LawSource::Prepared {
+                        contact,
+                        min_impact_velocity,
+                    } => {
+                        let v_law = v.max(*min_impact_velocity);
+                        let (law, _) = contact.law(self.m_eff, v_law)?;
+                        // Start each impact with a step well inside its time scale (far inside for a law that
+                        // is not smooth at touch, see `impact::simulate`).
+                        let tau = law.length_scale(self.m_eff, v_law) / v_law;
+                        let f = if law.smooth_at_touch() { 1e-2 } else { 1e-8 };
+                        out.h_max = Some(h.min(f * tau));
+                        law
+                    }
+                    LawSource::Fixed => return Ok(out),
+                };
+                Engagement::Contact {
+                    law,
+                    phase: Phase::Approach,
+                    turn: Turn::default(),
+                }
+            }
+            (Engagement::Contact { law, .. }, Event::Turn) => Engagement::Contact {
+                law,
+                phase: Phase::Restitution,
+                turn: Turn {
+                    d,
+                    force: law.force(d, v, Phase::Approach, &Turn::default()),
+                },
+            },
+            (Engagement::Contact { law, turn, .. }, Event::Reapproach) => Engagement::Contact {
+                law,
+                phase: Phase::Approach,
+                turn,
+            },
+            (Engagement::Contact { law, turn, .. }, Event::ZeroForce) => {
+                out.stop = self.stop_at_end;
+                Engagement::Released { law, turn }
+            }
+            (Engagement::Contact { .. }, Event::Separation) => {
+                out.stop = self.stop_at_end;
+                Engagement::Open
+            }
+            (Engagement::Released { .. }, Event::Rearm) => Engagement::Open,
+            (Engagement::Released { law, turn }, Event::Resume) => Engagement::Contact {
+                law,
+                phase: Phase::Approach,
+                turn,
+            },
+            (state, _) => state,
+        };
+        Ok(out)
+    }
+}
+
+/// The force of a contact over one segment of a run, kept for locating its peak
+/// ([`crate::engine::PeakTracker`]).
+#[derive(Clone, Copy, Debug)]
+pub struct ContactPiece {
+    /// Start and end of the segment, s.
+    pub span: (f64, f64),
+    /// Deformation `x`, m.
+    pub x: DenseComponent,
+    /// Its rate, m/s.
+    pub v: DenseComponent,
+    law: ForceLaw,
+    phase: Phase,
+    turn: Turn,
+    gap: f64,
+    tension: Tension,
+}
+
+impl ContactPiece {
+    /// Penetration (m), rate (m/s) and reported force (N) at `t`.
+    pub fn at(&self, t: f64) -> (f64, f64, f64) {
+        let (d, v) = (self.x.eval(t) - self.gap, self.v.eval(t));
+        let f = self.law.force(d, v, self.phase, &self.turn);
+        let f = match self.tension {
+            Tension::Clamp => f.max(0.0),
+            Tension::Allow => f,
+        };
+        (d, v, f)
+    }
+}
+
+impl Piece for ContactPiece {
+    fn span(&self) -> (f64, f64) {
+        self.span
+    }
+    fn value(&self, t: f64) -> f64 {
+        self.at(t).2
+    }
+}
+
+impl Contact {
+    /// The piece of force history on `span` with the interpolants of the deformation and its rate, if the
+    /// contact is engaged.
+    pub fn piece(
+        &self,
+        span: (f64, f64),
+        x: DenseComponent,
+        v: DenseComponent,
+    ) -> Option<ContactPiece> {
+        match self.state {
+            Engagement::Contact { law, phase, turn } => Some(ContactPiece {
+                span,
+                x,
+                v,
+                law,
+                phase,
+                turn,
+                gap: self.gap,
+                tension: self.tension,
+            }),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,215 @@
+//! The driver: step, locate the earliest event of any element, apply it, restart.
+
+use super::{EventInfo, Ground, Observer, Segment, System};
+use crate::element::Event;
+use crate::integrate::{brent_root, golden_max, DormandPrince, OdeSystem, Tolerance};
+use crate::Error;
+
+/// Accuracy and extent of a run.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    /// End time, s.
+    pub t_end: f64,
+    /// Relative tolerance (dimensionless).
+    pub rtol: f64,
+    /// Absolute tolerance of each state component, in its unit (see [`super::Layout`]).
+    pub atol: Vec<f64>,
+    /// First trial step, s.
+    pub h0: f64,
+    /// Largest number of accepted steps.
+    pub max_steps: usize,
+}
+
+/// Why a run ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ending {
+    /// It reached the end time.
+    Time,
+    /// An element asked to stop (a single impact's contact ended).
+    Stopped,
+    /// It took the largest number of steps allowed.
+    StepBudget,
+}
+
+/// The end of a run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Outcome {
+    /// Why it ended.
+    pub ending: Ending,
+    /// Time reached, s.
+    pub t: f64,
+    /// State there.
+    pub y: Vec<f64>,
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Events applied.
+    pub events: usize,
+}
+
+/// The earliest event of any element in the step `[t0, t1]` (states `y0`, `y1`): `(time, element, event)`.
+/// Every event function is positive before its event and <= 0 after it; the located time is nudged to the far
+/// side, so that a restarted step never finds the same event again.
+fn earliest_event(
+    sys: &System,
+    dp: &DormandPrince,
+    (t0, y0): (f64, &[f64]),
+) -> Option<(f64, usize, Event)> {
+    let (t1, y1, dense) = (dp.t(), dp.y(), dp.dense());
+    let mut first: Option<(f64, usize, Event)> = None;
+    for (e, el) in sys.elements().iter().enumerate() {
+        let watched = el.watched();
+        if watched.is_empty() {
+            continue;
+        }
+        let (xa, va) = sys.deformation(e, y0);
+        let (xb, vb) = sys.deformation(e, y1);
+        for &ev in watched {
+            let ga = el.event_value(ev, xa, va);
+            if ga <= 0.0 && el.keeps_phase(ev) {
+                continue;
+            }
+            let gb = el.event_value(ev, xb, vb);
+            let g = |t: f64| {
+                let (x, v) = sys.deformation_at(e, dense, t);
+                el.event_value(ev, x, v)
+            };
+            // The far end of the bracket: the step end, or, for a touch that comes and goes within one step
+            // (the ends turn back inside it), the largest penetration.
+            // An event is a crossing from positive to <= 0, or a function found negative at the step end; a
+            // function that stays at exactly 0 (a storey at rest: its drift rate is identically 0) is no event.
+            let far = if gb < 0.0 || (gb == 0.0 && ga > 0.0) {
+                Some((t1, gb))
+            } else if ev == Event::Touch && va > 0.0 && vb < 0.0 {
+                let (tm, gm) = golden_max(|t| -g(t), t0, t1, 1e-12 * (t1 - t0));
+                (-gm <= 0.0).then_some((tm, -gm))
+            } else {
+                None
+            };
+            let Some((tb, gb)) = far else { continue };
+            let xtol = 4.0 * f64::EPSILON * tb.abs() + 1e-300;
+            let mut te = brent_root(&g, t0, tb, ga.max(0.0), gb, xtol).unwrap_or(tb);
+            let mut nudge = xtol;
+            while te < tb && g(te) > 0.0 {
+                te = (te + nudge).min(tb);
+                nudge *= 2.0;
+            }
+            if first.is_none_or(|(tf, _, _)| te < tf) {
+                first = Some((te, e, ev));
+            }
+        }
+    }
+    first
+}
+
+/// Runs `sys` from `(t0, y0)` to `settings.t_end`, or until an element stops it, telling `observer` every
+/// segment and event. Steps end at every sample of a record (its acceleration has a kink there) and restart
+/// where the record ends (its acceleration jumps to 0) and at every event.
+pub fn run(
+    sys: &mut System,
+    (t_start, y_start): (f64, &[f64]),
+    settings: &Settings,
+    observer: &mut dyn Observer,
+) -> Result<Outcome, Error> {
+    let dim = sys.dim();
+    let mut dp = DormandPrince::new(Tolerance {
+        rtol: settings.rtol,
+        atol: settings.atol.clone(),
+    });
+    let mut y0 = y_start.to_vec();
+    let mut ye = vec![0.0; dim];
+    let mut rate = vec![0.0; dim];
+    dp.reset(sys, t_start, &y0, settings.h0);
+    let t_end = settings.t_end;
+    // Kinks of the ground motion: the samples of a record, and its end.
+    let (bp_first, bp_dt, bp_count, motion_end) = match sys.ground() {
+        Ground::Record(r) => (r.t0(), r.dt(), r.npts(), Some(r.duration())),
+        Ground::Constant(_) => (0.0, 1.0, 0, None),
+    };
+    let breakpoint = |k: usize| bp_first + k as f64 * bp_dt;
+    let mut k_bp = 0usize;
+    let mut t0 = t_start;
+    let mut events = 0usize;
+    // Events applied in a row without time advancing: a state that keeps firing is a bug or a model that
+    // chatters, reported instead of looping.
+    let mut stalled = 0usize;
+    let mut ending = Ending::Time;
+    while t0 < t_end {
+        while k_bp < bp_count && breakpoint(k_bp) <= t0 {
+            k_bp += 1;
+        }
+        let t_stop = if k_bp < bp_count {
+            breakpoint(k_bp).min(t_end)
+        } else {
+            t_end
+        };
+        dp.step_until(&*sys, t_stop)?;
+        let t1 = dp.t();
+        let first = earliest_event(sys, &dp, (t0, &y0));
+        let te = match first {
+            Some((te, _, _)) => {
+                dp.dense().eval(te, &mut ye);
+                sys.rhs(te, &ye, &mut rate);
+                te
+            }
+            None => {
+                ye.copy_from_slice(dp.y());
+                rate.copy_from_slice(dp.dydt());
+                t1
+            }
+        };
+        observer.segment(&Segment {
+            system: sys,
+            t0,
+            t1: te,
+            y0: &y0,
+            y1: &ye,
+            rate1: &rate,
+            dense: dp.dense(),
+        });
+        if let Some((te, e, ev)) = first {
+            events += 1;
+            stalled = if te > t0 { 0 } else { stalled + 1 };
+            if stalled > 1000 {
+                return Err(Error::EventChatter { t: te });
+            }
+            let (x, v) = sys.deformation(e, &ye);
+            let h = dp.h();
+            let tr = sys.elements_mut()[e].apply(ev, x, v, h)?;
+            dp.reset(&*sys, te, &ye, tr.h_max.unwrap_or(h));
+            observer.event(&EventInfo {
+                system: sys,
+                t: te,
+                element: e,
+                event: ev,
+                y: &ye,
+                rate: dp.dydt(),
+            });
+            if tr.stop {
+                ending = Ending::Stopped;
+                y0.copy_from_slice(&ye);
+                t0 = te;
+                break;
+            }
+        } else if Some(t1) == motion_end && t1 < t_end {
+            let h = dp.h();
+            dp.reset(&*sys, t1, &ye, h);
+        }
+        y0.copy_from_slice(&ye);
+        t0 = te;
+        if dp.counts().0 >= settings.max_steps {
+            ending = Ending::StepBudget;
+            break;
+        }
+    }
+    let (steps, rejected) = dp.counts();
+    Ok(Outcome {
+        ending,
+        t: t0,
+        y: y0,
+        steps,
+        rejected,
+        events,
+    })
+}
