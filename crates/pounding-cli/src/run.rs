@@ -293,7 +293,7 @@ fn print_results(s: &Scenario, r: &Results) {
         e.relative_error
     );
     println!(
-        "integration: {} steps ({} rejected), {} contact events",
+        "integration: {} steps ({} rejected), {} events (contact touch, turn, separation; storey yield, reversal)",
         r.statistics.steps, r.statistics.rejected, r.statistics.events
     );
 }
@@ -388,7 +388,7 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
         "statistics": {
             "steps": r.statistics.steps,
             "rejected_steps": r.statistics.rejected,
-            "contact_events": r.statistics.events,
+            "events": r.statistics.events,
         },
         "units": {
             "periods": "s", "mode_shapes": "roof = 1", "peak_displacement": "m", "time_of_peak_displacement": "s",

@@ -522,3 +522,179 @@ fn bad_scenarios_get_one_line_with_file_and_line_exit_2_and_no_output() {
         assert!(o.stdout.is_empty() || !String::from_utf8_lossy(&o.stdout).contains("wrote"));
     }
 }
+
+#[test]
+fn bad_inelastic_storeys_get_one_line_naming_key_and_building_exit_2_and_no_output() {
+    let base = std::fs::read_to_string(example("three-vs-eight-inelastic.toml")).unwrap();
+    let linear = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let dir = tmp("bad-inelastic");
+    let fy3 = "yield_forces = [4.5e6, 4.0e6, 4.0e6]";
+    let bw = "bouc_wen = { n = 2.0, beta = 0.5, gamma = 0.5 }";
+    // (scenario text, what the message must say, the text of the offending line).
+    let cases: Vec<(String, &str, &str)> = vec![
+        (
+            base.replace(fy3, "yield_forces = [4.5e6, 0.0, 4.0e6]"),
+            "building \"3-storey\", storey 2: yield_forces = 0 is not allowed",
+            "yield_forces = [4.5e6, 0.0",
+        ),
+        (
+            base.replacen("post_yield_ratio = 0.05", "post_yield_ratio = 1.0", 1),
+            "building \"3-storey\", storey 1: post_yield_ratio = 1 is not allowed",
+            "post_yield_ratio = 1.0",
+        ),
+        (
+            base.replace(bw, "bouc_wen = { n = 2.0, beta = -0.5, gamma = 0.5 }"),
+            "building \"8-storey\", storey 1: bouc_wen.beta = -0.5 is not allowed: beta >= 0",
+            "bouc_wen = {",
+        ),
+        (
+            base.replace(bw, "bouc_wen = { n = 2.0, beta = 0.5, gamma = -0.6 }"),
+            "bouc_wen.gamma = -0.6 is not allowed: beta + gamma > 0",
+            "bouc_wen = {",
+        ),
+        (
+            base.replace(bw, "bouc_wen = { n = 0.5 }"),
+            "bouc_wen.n = 0.5 is not allowed",
+            "bouc_wen = {",
+        ),
+        (
+            base.replace(fy3, "yield_forces = [4.5e6, 4.0e6]"),
+            "building \"3-storey\": yield_forces has 2 values, but there are 3 storeys",
+            "yield_forces = [4.5e6, 4.0e6]",
+        ),
+        (
+            base.replacen(
+                "storey_model = \"bilinear\"",
+                "storey_model = [\"bilinear\", \"linear\"]",
+                1,
+            ),
+            "storey_model has 2 values, but there are 3 storeys",
+            "storey_model = [",
+        ),
+        (
+            base.replacen(
+                "storey_model = \"bilinear\"",
+                "storey_model = \"elastoplastic\"",
+                1,
+            ),
+            "storey_model = \"elastoplastic\" is not allowed: one of linear, bilinear, bouc-wen",
+            "storey_model = \"elastoplastic\"",
+        ),
+        (
+            base.replacen(fy3, "", 1),
+            "building \"3-storey\": yield_forces (N) is required",
+            "storey_model = \"bilinear\"",
+        ),
+        (
+            base.replacen(
+                "post_yield_ratio = 0.05",
+                &format!("post_yield_ratio = 0.05\n{bw}"),
+                1,
+            ),
+            "building \"3-storey\": bouc_wen applies to bouc-wen storeys",
+            bw,
+        ),
+        (
+            linear.replacen(
+                "damping_ratio = 0.05",
+                "damping_ratio = 0.05\nyield_forces = 1.0e6",
+                1,
+            ),
+            "building \"left\": yield_forces applies to bilinear and bouc-wen storeys, and every storey is linear",
+            "yield_forces = 1.0e6",
+        ),
+    ];
+    for (i, (text, needle, place)) in cases.iter().enumerate() {
+        let file = dir.join(format!("case{i}.toml"));
+        std::fs::write(&file, text).unwrap();
+        let out = dir.join(format!("out{i}"));
+        let o = pounding(&[
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {i}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
+        assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
+        let line = text.lines().position(|l| l.contains(place)).unwrap() + 1;
+        assert!(
+            err.contains(&format!(":{line}:")),
+            "case {i}: {err} is not at line {line}"
+        );
+        assert!(!out.exists(), "case {i}: output written");
+    }
+}
+
+#[test]
+fn inelastic_run_reports_ductility_residuals_and_hysteresis_consistently() {
+    let dir = tmp("run-inelastic");
+    let out = dir.join("out");
+    let o = pounding(&[
+        "run",
+        &example("three-vs-eight-inelastic.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("null"));
+    assert!(s["energy_balance_error"].as_f64().unwrap() < 1e-6);
+    let nums = |v: &Value| -> Vec<f64> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect()
+    };
+    let mut hysteretic = 0.0;
+    for (b, k) in [
+        (0, vec![6.0e8, 5.0e8, 4.0e8]),
+        (
+            1,
+            vec![2.6e8, 2.4e8, 2.2e8, 2.0e8, 1.8e8, 1.6e8, 1.4e8, 1.2e8],
+        ),
+    ] {
+        let bj = &s["buildings"][b];
+        let storeys = k.len();
+        for key in [
+            "peak_absolute_acceleration",
+            "peak_storey_shear",
+            "residual_displacement",
+            "residual_drift",
+        ] {
+            assert_eq!(bj[key].as_array().unwrap().len(), storeys, "{key}");
+        }
+        // Every storey is inelastic here: ductility is the peak drift over the yield drift F_y / k.
+        let (listed, fy, mu) = (
+            nums(&bj["inelastic_storeys"]),
+            nums(&bj["yield_forces"]),
+            nums(&bj["ductility"]),
+        );
+        assert_eq!(listed, (1..=storeys).map(|j| j as f64).collect::<Vec<_>>());
+        let drift = nums(&bj["peak_drift"]);
+        for j in 0..storeys {
+            assert!((mu[j] - drift[j] / (fy[j] / k[j])).abs() <= 1e-12 * mu[j]);
+        }
+        assert!(mu.iter().any(|m| *m > 1.0), "some storey yields");
+        // Residual drifts are the differences of residual displacements.
+        let (u, d) = (
+            nums(&bj["residual_displacement"]),
+            nums(&bj["residual_drift"]),
+        );
+        assert!((d[0] - u[0]).abs() < 1e-12 && (d[2] - (u[2] - u[1])).abs() < 1e-12);
+        hysteretic += nums(&bj["hysteretic_energy"]).iter().sum::<f64>();
+    }
+    let e = f(&s["energy"], "hysteretic");
+    assert!((hysteretic - e).abs() <= 1e-9 * e && e > 0.0);
+    // The new columns: an absolute acceleration per floor and a shear per storey, in the documented order.
+    let csv = std::fs::read_to_string(out.join("response.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    assert_eq!(header.len(), 2 + 11 + 3 + 11 + 11);
+    assert_eq!(header[16], "3-storey_floor1_absolute_acceleration_m_per_s2");
+    assert_eq!(header[27], "3-storey_storey1_shear_N");
+    let energy = std::fs::read_to_string(out.join("energy.csv")).unwrap();
+    assert!(energy.starts_with("time_s,input_J,kinetic_J,strain_J,structural_damping_J,hysteretic_J,contact_J,balance_error_J\n"));
+}

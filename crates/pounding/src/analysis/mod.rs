@@ -1,27 +1,26 @@
 //! Time-history analysis of pounding between adjacent buildings under a uniform base excitation.
 //!
 //! Buildings stand in a row, listed left to right; positive displacement points right. Displacements are
-//! relative to the moving ground, so each floor obeys `M u'' + C u' + K u = -M 1 a_g(t) + F_contact`
-//! ([`crate::structure`] gives `M`, `C`, `K`). A [`Link`] joins two neighbours: at every pair of floors it
-//! names (by default every pair at the same height) a contact element closes when `u_L - u_R` exceeds the
-//! gap, so its penetration is `d = u_L - u_R - gap` and its rate `v = d'`.
+//! relative to the moving ground, so each floor obeys `m_i u_i'' = -m_i (a_g(t) + a0 u_i') + storey and
+//! contact forces`. The row is built as a system of the engine ([`crate::engine`]): one degree of freedom per
+//! floor, one storey element per storey (linear, bilinear or Bouc–Wen, [`crate::element::storey`], with the
+//! stiffness-proportional Rayleigh damping `a1 k_j` of its initial stiffness), and one contact element per
+//! floor pair of each [`Link`] ([`crate::element::contact`]): it closes when `u_L - u_R` exceeds the gap, so
+//! its penetration is `d = u_L - u_R - gap` and its rate `v = d'`.
 //!
 //! Each impact is one touch of one element. Its onset is located as an event on the integrator's
 //! interpolant, so `v_i` is the relative velocity at the moment of touch, and the element's law is built
-//! afresh for it with [`PreparedContact::law`] (effective mass `m_L m_R / (m_L + m_R)` of the two floors):
-//! every impact resets the contact's state. Within an impact the phase follows the rate (approach while
-//! `v > 0`, restitution after each turning point), as in OpenSees' impact materials; a bilinear law reloads
-//! elastically up to its last turning point. The impact ends when `d` returns to 0, or, for a law whose
-//! force is clamped, when the force first reaches 0 in restitution; the contact then carries no force until
-//! `d` returns to 0 (if the floors approach again before that, the same impact resumes).
+//! afresh for it with [`PreparedContact::law`] (effective mass `m_L m_R / (m_L + m_R)` of the two floors).
+//! Storeys' yield and reversal are events too, so force–drift loops are exact, not smeared over a step.
+//! Integration is adaptive Dormand–Prince 5(4) with steps that end at every sample of the record (the ground
+//! acceleration has a kink there) and restart at every event. One relative tolerance sets the accuracy of
+//! everything.
 //!
-//! Integration is adaptive Dormand–Prince 5(4) ([`crate::integrate`]) with steps that end at every sample
-//! of the record (the ground acceleration has a kink there) and restart at every contact event (touch,
-//! turn, kink, zero force, separation). One relative tolerance sets the accuracy of everything.
-//!
-//! The energy balance is integrated with the motion: input `E_I = -int a_g 1^T M u' dt`, kinetic
-//! `u'^T M u' / 2`, strain `u^T K u / 2`, structural damping `int u'^T C u' dt` and contact work
-//! `int F d' dt` (equal to the energy dissipated by the contacts once every impact has ended).
+//! The energy balance is integrated with the motion: input `E_I = -int a_g 1^T M u' dt` = kinetic
+//! `u'^T M u' / 2` + recoverable strain of the storeys + viscous damping `int u'^T C u' dt` + hysteretic
+//! dissipation of the storeys + contact work `int F d' dt` (equal to the energy dissipated by the contacts
+//! once every impact has ended). What a run keeps (peaks, impacts, energies, and optionally histories) is
+//! recorded by observers of the engine ([`RunOptions`]).
 
 mod model;
 mod record;
@@ -448,7 +447,8 @@ pub struct Statistics {
     pub steps: usize,
     /// Rejected steps.
     pub rejected: usize,
-    /// Contact events located (touch, turn, kink, zero force, separation, resume).
+    /// Events located and applied: contact touch, turn, kink, zero force, separation, resume; storey yield
+    /// and reversal.
     pub events: usize,
 }
 
