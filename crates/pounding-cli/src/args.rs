@@ -59,8 +59,9 @@ pub struct RunArgs {
     /// Print the summary as JSON on stdout.
     #[arg(long)]
     pub json: bool,
-    /// Also write the figures (SVG) into the output folder: displacement, contact-force,
-    /// relative-displacement, energy.
+    /// Also write the figures (SVG) into the output folder: displacement, envelopes (peaks over height),
+    /// hysteresis (storey shear against drift; hysteresis-storeys with 2+ inelastic storeys), and with
+    /// contacts contact-force, impact-restitution (once an impact ended), relative-displacement; energy.
     #[arg(long)]
     pub plots: bool,
     /// Also write each figure as PNG (with --plots).

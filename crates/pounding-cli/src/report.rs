@@ -92,6 +92,7 @@ th, td { border: 1px solid #d0d0d0; padding: 0.2em 0.6em; }
 th { background: #f2f2f2; font-weight: normal; text-align: center; }
 td { text-align: right; font-variant-numeric: tabular-nums; }
 td:first-child { text-align: left; }
+table[id^='storeys'] td:nth-child(2) { text-align: left; }
 pre { background: #f6f6f6; border: 1px solid #ddd; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }
 figure { margin: 1.5em 0; }
 figure svg { max-width: 100%; height: auto; border: 1px solid #eee; }
@@ -165,17 +166,28 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             .and_then(|a| a.last())
             .cloned()
             .unwrap_or(Value::Null);
+        // The storey with the largest ductility, if any storey is inelastic.
+        let most = b["ductility"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .zip(b["inelastic_storeys"].as_array().into_iter().flatten())
+            .filter_map(|(mu, j)| Some((mu.as_f64()?, j)))
+            .max_by(|a, c| a.0.total_cmp(&c.0))
+            .map(|(mu, j)| format!(", largest ductility {} (storey {j})", fmt_sig(mu, 3)))
+            .unwrap_or_default();
         dl(
             &mut h,
             &format!("building {}", b["name"].as_str().unwrap_or("")),
             format!(
-                "{} storey{}, T1 = {} s, roof peak displacement {} m",
+                "{} storey{} ({}), T1 = {} s, roof peak displacement {} m{most}",
                 b["storeys"],
                 if b["storeys"].as_u64() == Some(1) {
                     ""
                 } else {
                     "s"
                 },
+                e(&models(b)),
                 n(&b["periods"][0]),
                 n(&peak)
             ),
@@ -267,7 +279,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
         );
     }
 
-    // Peak response.
+    // Peak response: floors, then the storeys of each building.
     h.push_str("\n<h2 id=\"response\">Peak response</h2>");
     let mut rows = Vec::new();
     for b in s["buildings"].as_array().into_iter().flatten() {
@@ -279,27 +291,80 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 (f + 1).to_string(),
                 n(&b["peak_displacement"][f]),
                 n(&b["time_of_peak_displacement"][f]),
-                n(&b["peak_drift"][f]),
-                b["peak_drift_ratio"][f]
-                    .as_f64()
-                    .map_or("–".into(), |r| format!("{:.3}", 100.0 * r)),
+                n(&b["peak_absolute_acceleration"][f]),
+                n(&b["time_of_peak_absolute_acceleration"][f]),
+                n(&b["residual_displacement"][f]),
             ]);
         }
     }
     table(
         &mut h,
         "peaks",
-        "Largest displacement of each floor and drift of each storey",
+        "Largest displacement (relative to the ground) and absolute acceleration of each floor",
         &[
             "building",
-            "floor / storey",
+            "floor",
             "peak displacement (m)",
             "at (s)",
-            "peak drift (m)",
-            "drift ratio (%)",
+            "peak absolute acceleration (m/s²)",
+            "at (s)",
+            "residual displacement (m)",
         ],
         &rows,
     );
+    for (k, b) in s["buildings"].as_array().into_iter().flatten().enumerate() {
+        let storeys = b["storeys"].as_u64().unwrap_or(0) as usize;
+        let inelastic: Vec<u64> = b["inelastic_storeys"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter_map(Value::as_u64)
+            .collect();
+        let rows: Vec<Vec<String>> = (0..storeys)
+            .map(|j| {
+                // Ductility, yield force and hysteretic energy are listed for the inelastic storeys only.
+                let at = inelastic.iter().position(|&i| i == j as u64 + 1);
+                let only = |key: &str| at.map_or(String::new(), |i| n(&b[key][i]));
+                vec![
+                    (j + 1).to_string(),
+                    e(b["storey_models"][j].as_str().unwrap_or("linear")),
+                    n(&b["peak_drift"][j]),
+                    b["peak_drift_ratio"][j]
+                        .as_f64()
+                        .map_or("–".into(), |r| format!("{:.3}", 100.0 * r)),
+                    n(&b["peak_storey_shear"][j]),
+                    n(&b["residual_drift"][j]),
+                    only("yield_forces"),
+                    at.map_or(String::new(), |i| {
+                        b["ductility"][i]
+                            .as_f64()
+                            .map_or("–".into(), |mu| format!("{mu:.3}"))
+                    }),
+                    only("hysteretic_energy"),
+                ]
+            })
+            .collect();
+        table(
+            &mut h,
+            &format!("storeys-{k}"),
+            &format!(
+                "Storeys of building {} (shear: the restoring force; ductility: peak drift / yield drift, inelastic storeys only)",
+                b["name"].as_str().unwrap_or("")
+            ),
+            &[
+                "storey",
+                "model",
+                "peak drift (m)",
+                "drift ratio (%)",
+                "peak shear (N)",
+                "residual drift (m)",
+                "yield force (N)",
+                "ductility",
+                "hysteretic energy (J)",
+            ],
+            &rows,
+        );
+    }
 
     // Contacts and energy.
     h.push_str("\n<h2 id=\"contacts\">Contacts and energy</h2>");
@@ -360,12 +425,13 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
     table(
         &mut h,
         "energy",
-        "Energy at the end of the analysis (J): input = kinetic + strain + structural damping + contact",
+        "Energy at the end of the analysis (J): input = kinetic + strain + structural damping + storey hysteresis + contact",
         &[
             "input",
             "kinetic",
             "strain",
             "structural damping",
+            "storey hysteresis",
             "contact",
             "balance error (relative)",
         ],
@@ -374,6 +440,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             n(&en["kinetic"]),
             n(&en["strain"]),
             n(&en["structural_damping"]),
+            n(&en["hysteretic"]),
             n(&en["contact"]),
             n(&s["energy_balance_error"]),
         ]],
@@ -449,6 +516,38 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
     h.push_str("\n<footer><p class=\"meta\">Files: summary.json, response.csv, impacts.csv, energy.csv, scenario.toml (units in every column header).</p></footer>");
     h.push_str("\n</body>\n</html>\n");
     h
+}
+
+/// A building's storey models in a few words: "linear", "bilinear", or "1-2 bilinear, 3 linear".
+fn models(b: &Value) -> String {
+    let names: Vec<&str> = b["storey_models"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|m| m.as_str().unwrap_or("linear"))
+        .collect();
+    if names.windows(2).all(|w| w[0] == w[1]) {
+        return names.first().copied().unwrap_or("linear").to_string();
+    }
+    // Runs of storeys with the same model.
+    let mut runs: Vec<(usize, usize, &str)> = Vec::new();
+    for (j, m) in names.iter().enumerate() {
+        match runs.last_mut() {
+            Some(r) if r.2 == *m => r.1 = j + 1,
+            _ => runs.push((j + 1, j + 1, m)),
+        }
+    }
+    let runs: Vec<String> = runs
+        .iter()
+        .map(|(a, z, m)| {
+            if a == z {
+                format!("{a} {m}")
+            } else {
+                format!("{a}-{z} {m}")
+            }
+        })
+        .collect();
+    runs.join(", ")
 }
 
 fn between(c: &Value) -> String {

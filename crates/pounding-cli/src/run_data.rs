@@ -5,12 +5,21 @@ use crate::CliError;
 use serde_json::Value;
 use std::path::Path;
 
-/// One building's floor displacements.
+/// One building's histories, and its floor elevations if the scenario file gives them.
 pub struct BuildingData {
     /// Name.
     pub name: String,
     /// Displacement relative to the ground of each floor (floor 1 first), m, at [`RunData::t`].
     pub floors: Vec<Vec<f64>>,
+    /// Absolute acceleration of each floor (floor 1 first), m/s^2, at [`RunData::t`]. Read and checked
+    /// with the other columns; no figure draws it yet (the envelopes use summary.json's located peaks).
+    #[allow(dead_code)]
+    pub absolute_acceleration: Vec<Vec<f64>>,
+    /// Restoring force of each storey (storey 1 first), N, at [`RunData::t`].
+    pub storey_shear: Vec<Vec<f64>>,
+    /// Elevation of each floor above the ground (floor 1 first), m: the sums of the storey heights of
+    /// scenario.toml; `None` if the folder has no readable scenario file naming this building.
+    pub elevations: Option<Vec<f64>>,
 }
 
 /// One contact element (a pair of floors) of a contact.
@@ -134,6 +143,33 @@ fn column(dir: &Path, name: &str, rows: &[Vec<String>], k: usize) -> Result<Vec<
     rows.iter().map(|r| number(dir, name, &r[k])).collect()
 }
 
+/// The storey heights (m) of every `[[building]]` of a scenario file that has a name and positive heights;
+/// nothing for a file that does not parse (the figures then count floors instead).
+fn storey_heights(text: &str) -> Vec<(String, Vec<f64>)> {
+    let Ok(file) = text.parse::<toml::Table>() else {
+        return Vec::new();
+    };
+    let buildings = file.get("building").and_then(toml::Value::as_array);
+    buildings
+        .into_iter()
+        .flatten()
+        .filter_map(|b| {
+            let name = b.get("name")?.as_str()?.to_string();
+            let heights = b
+                .get("heights")?
+                .as_array()?
+                .iter()
+                .map(|h| {
+                    h.as_float()
+                        .or_else(|| h.as_integer().map(|i| i as f64))
+                        .filter(|h| h.is_finite() && *h > 0.0)
+                })
+                .collect::<Option<Vec<f64>>>()?;
+            Some((name, heights))
+        })
+        .collect()
+}
+
 impl RunData {
     /// Reads the files `pounding run` wrote into `dir`.
     pub fn load(dir: &Path) -> Result<Self, CliError> {
@@ -161,19 +197,19 @@ impl RunData {
                 )),
             }
         };
-        let mut buildings = Vec::new();
         let mut names = Vec::new();
+        let mut storeys = Vec::new();
         let mut columns = Vec::new();
         for b in list("buildings") {
             let name = b["name"].as_str().unwrap_or_default().to_string();
-            let storeys = b["storeys"].as_u64().unwrap_or(0) as usize;
+            let n = b["storeys"].as_u64().unwrap_or(0) as usize;
             let mut cols = Vec::new();
-            for f in 1..=storeys {
+            for f in 1..=n {
                 cols.push(expect(&format!("{name}_floor{f}_displacement_m"))?);
             }
-            names.push(name.clone());
+            names.push(name);
+            storeys.push(n);
             columns.push(cols);
-            buildings.push(name);
         }
         let mut contacts = Vec::new();
         let mut contact_columns = Vec::new();
@@ -216,19 +252,50 @@ impl RunData {
             );
             contacts.push((name, left, right, gap, e, elements));
         }
-        let buildings = buildings
-            .into_iter()
-            .zip(columns)
-            .map(|(name, cols)| {
-                Ok(BuildingData {
-                    name,
-                    floors: cols
-                        .iter()
-                        .map(|&k| column(dir, "response.csv", &rows, k))
-                        .collect::<Result<_, CliError>>()?,
-                })
-            })
-            .collect::<Result<Vec<_>, CliError>>()?;
+        // Then every building's floor accelerations, then every building's storey shears.
+        let mut acceleration_columns = Vec::new();
+        for (name, &n) in names.iter().zip(&storeys) {
+            let cols = (1..=n)
+                .map(|f| expect(&format!("{name}_floor{f}_absolute_acceleration_m_per_s2")))
+                .collect::<Result<Vec<_>, CliError>>()?;
+            acceleration_columns.push(cols);
+        }
+        let mut shear_columns = Vec::new();
+        for (name, &n) in names.iter().zip(&storeys) {
+            let cols = (1..=n)
+                .map(|j| expect(&format!("{name}_storey{j}_shear_N")))
+                .collect::<Result<Vec<_>, CliError>>()?;
+            shear_columns.push(cols);
+        }
+        let heights = scenario_text.as_deref().map(storey_heights);
+        let columns_of = |cols: &[usize]| {
+            cols.iter()
+                .map(|&k| column(dir, "response.csv", &rows, k))
+                .collect::<Result<Vec<_>, CliError>>()
+        };
+        let mut buildings = Vec::new();
+        for (b, name) in names.iter().enumerate() {
+            let elevations = heights
+                .as_ref()
+                .and_then(|h| h.iter().find(|(n, _)| n == name))
+                .map(|(_, h)| h)
+                .filter(|h| h.len() == storeys[b])
+                .map(|h| {
+                    h.iter()
+                        .scan(0.0, |z, dz| {
+                            *z += dz;
+                            Some(*z)
+                        })
+                        .collect()
+                });
+            buildings.push(BuildingData {
+                name: name.clone(),
+                floors: columns_of(&columns[b])?,
+                absolute_acceleration: columns_of(&acceleration_columns[b])?,
+                storey_shear: columns_of(&shear_columns[b])?,
+                elevations,
+            });
+        }
         let mut cc = contact_columns.into_iter();
         let contacts = contacts
             .into_iter()

@@ -413,8 +413,28 @@ fn run_figures_and_report_match_the_results() {
     assert_eq!(r.points[0].1.len(), n_impacts);
     assert_eq!(r.hlines[0].1, contact["e"].as_f64().unwrap());
 
+    // Linear storeys: the loop is of the storey with the largest peak drift ratio, with no yield lines.
+    let ratio = |b: usize| s["buildings"][b]["peak_drift_ratio"][0].as_f64().unwrap();
+    let most = if ratio(1) > ratio(0) { "right" } else { "left" };
+    assert!(
+        figure_title(&dir.join("hysteresis.svg")).contains(&format!("building {most}, storey 1")),
+        "{}",
+        figure_title(&dir.join("hysteresis.svg"))
+    );
+    let h = &read_panels(&dir.join("hysteresis.svg"))[0];
+    assert!(h.hlines.is_empty());
+    assert!(!dir.join("hysteresis-storeys.svg").exists());
+    // One storey: each envelope is one segment (floor values) or one step (storey values).
+    let env = read_panels(&dir.join("envelopes.svg"));
+    assert_eq!(env.len(), 4);
+    assert!(env
+        .iter()
+        .all(|p| p.lines.len() == 2 && p.lines[0].1.len() == 2));
+
     for name in [
         "displacement",
+        "envelopes",
+        "hysteresis",
         "contact-force",
         "relative-displacement",
         "energy",
@@ -442,6 +462,8 @@ fn run_figures_and_report_match_the_results() {
         figures,
         [
             "displacement",
+            "envelopes",
+            "hysteresis",
             "contact-force",
             "impact-restitution",
             "relative-displacement",
@@ -457,6 +479,8 @@ fn run_figures_and_report_match_the_results() {
         "modes-0",
         "modes-1",
         "peaks",
+        "storeys-0",
+        "storeys-1",
         "contacts",
         "energy",
         "impact-list",
@@ -472,6 +496,17 @@ fn run_figures_and_report_match_the_results() {
     };
     assert_eq!(rows("impact-list"), n_impacts);
     assert_eq!(rows("peaks"), 2);
+    assert_eq!(rows("storeys-0"), 1);
+    // Linear storeys have no ductility, yield force or hysteretic energy: blank cells.
+    let cells = |id: &str| -> Vec<String> {
+        table(id)
+            .descendants()
+            .filter(|n| n.has_tag_name("td"))
+            .map(|n| n.text().unwrap_or("").to_string())
+            .collect()
+    };
+    assert_eq!(cells("storeys-0")[1], "linear");
+    assert_eq!(&cells("storeys-0")[6..], ["", "", ""]);
     assert!(html.contains("gap = 0.02"), "the scenario file is shown");
     for n in doc.descendants() {
         assert!(
@@ -502,6 +537,236 @@ fn run_figures_and_report_match_the_results() {
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert_eq!(std::fs::read_to_string(&again).unwrap(), html);
+}
+
+/// The text of the `<title>` of an SVG figure.
+fn figure_title(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let t = doc
+        .root_element()
+        .children()
+        .find(|n| n.has_tag_name("title"))
+        .expect("a title");
+    t.text().unwrap_or("").to_string()
+}
+
+fn numbers(v: &Value) -> Vec<f64> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
+}
+
+fn extremes(v: impl IntoIterator<Item = f64>) -> (f64, f64) {
+    v.into_iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        })
+}
+
+#[test]
+fn inelastic_run_envelopes_and_loops_match_the_results() {
+    let dir = tmp("inelastic");
+    let s = ok_json(&[
+        "run",
+        &example("three-vs-eight-inelastic.toml"),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+        "--plots",
+        "--report",
+    ]);
+    let buildings = s["buildings"].as_array().unwrap();
+    // Floor elevations from the scenario's storey heights, ground first.
+    let scenario: toml::Table = std::fs::read_to_string(dir.join("scenario.toml"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    let levels: Vec<Vec<f64>> = scenario["building"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|b| {
+            let mut z = vec![0.0];
+            for h in b["heights"].as_array().unwrap() {
+                z.push(z.last().unwrap() + h.as_float().unwrap());
+            }
+            z
+        })
+        .collect();
+
+    // Envelopes: displacement, drift ratio (%), absolute acceleration, storey shear; one line per building,
+    // through the summary's peaks at the floors (0 and the PGA at the ground), or as steps over the storeys.
+    let env = read_panels(&dir.join("envelopes.svg"));
+    assert_eq!(env.len(), 4);
+    let pga = s["record"]["pga"].as_f64().unwrap();
+    for (b, bs) in buildings.iter().enumerate() {
+        let name = bs["name"].as_str().unwrap();
+        let z = &levels[b];
+        let n = z.len() - 1;
+        let curve = |p: usize| {
+            let found = env[p].lines.iter().find(|l| l.0 == name);
+            (&env[p], &found.unwrap_or_else(|| panic!("{name}")).1)
+        };
+        let close = |p: &Panel, (x, y): (f64, f64), (wx, wy): (f64, f64)| {
+            assert!(
+                (x - wx).abs() <= p.res.0 && (y - wy).abs() <= p.res.1,
+                "{}: ({x}, {y}) vs ({wx}, {wy})",
+                p.title
+            );
+        };
+        for (k, (key, ground, scale)) in [
+            ("peak_displacement", 0.0, 1.0),
+            ("peak_absolute_acceleration", pga, 1.0),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let (p, pts) = curve(2 * k);
+            let want = numbers(&bs[key]);
+            assert_eq!(pts.len(), n + 1, "{key}");
+            close(p, pts[0], (ground, 0.0));
+            for f in 1..=n {
+                close(p, pts[f], (scale * want[f - 1], z[f]));
+            }
+        }
+        for (k, (key, scale)) in [("peak_drift_ratio", 100.0), ("peak_storey_shear", 1.0)]
+            .into_iter()
+            .enumerate()
+        {
+            let (p, pts) = curve(2 * k + 1);
+            let want = numbers(&bs[key]);
+            assert_eq!(pts.len(), 2 * n, "{key}");
+            for j in 0..n {
+                close(p, pts[2 * j], (scale * want[j], z[j]));
+                close(p, pts[2 * j + 1], (scale * want[j], z[j + 1]));
+            }
+        }
+    }
+
+    // The loop: the storey of the largest ductility; its drift u_j - u_(j-1) and shear are the columns of
+    // response.csv (extremes and last point), its yield lines at +-F_y.
+    let (rh, rrows) = csv(&dir.join("response.csv"));
+    let loop_of = |b: usize, j: usize| {
+        let name = buildings[b]["name"].as_str().unwrap();
+        let u = |f: usize| col(&rh, &rrows, &format!("{name}_floor{f}_displacement_m"));
+        let drift: Vec<f64> = if j == 1 {
+            u(1)
+        } else {
+            u(j).iter().zip(u(j - 1)).map(|(a, c)| a - c).collect()
+        };
+        (
+            drift,
+            col(&rh, &rrows, &format!("{name}_storey{j}_shear_N")),
+        )
+    };
+    let check_loop = |p: &Panel, (drift, shear): &(Vec<f64>, Vec<f64>), fy: f64| {
+        let pts = &p.lines[0].1;
+        assert_eq!(pts.len(), drift.len(), "every sample, not thinned");
+        let (x, y) = (
+            extremes(pts.iter().map(|p| p.0)),
+            extremes(pts.iter().map(|p| p.1)),
+        );
+        let (wx, wy) = (
+            extremes(drift.iter().copied()),
+            extremes(shear.iter().copied()),
+        );
+        assert!(
+            (x.0 - wx.0).abs() <= p.res.0 && (x.1 - wx.1).abs() <= p.res.0,
+            "{}: drift {x:?} vs {wx:?}",
+            p.title
+        );
+        assert!(
+            (y.0 - wy.0).abs() <= p.res.1 && (y.1 - wy.1).abs() <= p.res.1,
+            "{}: shear {y:?} vs {wy:?}",
+            p.title
+        );
+        let mut lines: Vec<f64> = p.hlines.iter().map(|h| h.1).collect();
+        lines.sort_by(f64::total_cmp);
+        assert_eq!(lines, [-fy, fy], "{}", p.title);
+    };
+    let (mut best, mut at) = (0.0, (0, 0, 0));
+    for (b, bs) in buildings.iter().enumerate() {
+        for (k, (mu, j)) in numbers(&bs["ductility"])
+            .into_iter()
+            .zip(numbers(&bs["inelastic_storeys"]))
+            .enumerate()
+        {
+            if mu > best {
+                (best, at) = (mu, (b, j as usize, k));
+            }
+        }
+    }
+    let (b, j, k) = at;
+    let name = buildings[b]["name"].as_str().unwrap();
+    let title = figure_title(&dir.join("hysteresis.svg"));
+    assert!(
+        title.contains(&format!("building {name}, storey {j}")),
+        "{title}"
+    );
+    let p = &read_panels(&dir.join("hysteresis.svg"))[0];
+    let data = loop_of(b, j);
+    check_loop(p, &data, numbers(&buildings[b]["yield_forces"])[k]);
+    // The end of the analysis is marked, at the residual drift.
+    let end = p.points[0].1[0];
+    assert!((end.0 - data.0.last().unwrap()).abs() <= p.res.0);
+    assert!((end.1 - data.1.last().unwrap()).abs() <= p.res.1);
+    let residual = buildings[b]["residual_drift"][j - 1].as_f64().unwrap();
+    assert!((end.0 - residual).abs() <= p.res.0, "{end:?} vs {residual}");
+
+    // Every inelastic storey of that building, on common axes.
+    let all = read_panels(&dir.join("hysteresis-storeys.svg"));
+    let storeys = numbers(&buildings[b]["inelastic_storeys"]);
+    assert_eq!(all.len(), storeys.len());
+    for (k, (p, j)) in all.iter().zip(storeys).enumerate() {
+        assert!(p.title.starts_with(&format!("storey {j} ")), "{}", p.title);
+        check_loop(
+            p,
+            &loop_of(b, j as usize),
+            numbers(&buildings[b]["yield_forces"])[k],
+        );
+        assert_eq!((p.x, p.y), (all[0].x, all[0].y));
+    }
+
+    // The report has both figures and a row per storey with its ductility.
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    let opts = roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(&html, opts).expect("report is well-formed");
+    let figures: Vec<&str> = doc
+        .descendants()
+        .filter_map(|n| n.attribute("data-figure"))
+        .collect();
+    for id in ["envelopes", "hysteresis", "hysteresis-storeys"] {
+        assert!(figures.contains(&id), "{id} in {figures:?}");
+    }
+    for (b, bs) in buildings.iter().enumerate() {
+        let t = doc
+            .descendants()
+            .find(|n| n.attribute("id") == Some(&format!("storeys-{b}")))
+            .unwrap();
+        let rows: Vec<Vec<String>> = t
+            .descendants()
+            .filter(|n| n.has_tag_name("tr"))
+            .skip(1)
+            .map(|r| {
+                r.children()
+                    .filter(|c| c.has_tag_name("td"))
+                    .map(|c| c.text().unwrap_or("").to_string())
+                    .collect()
+            })
+            .collect();
+        let mu = numbers(&bs["ductility"]);
+        assert_eq!(rows.len(), mu.len());
+        for (r, mu) in rows.iter().zip(mu) {
+            assert_eq!(r[7], format!("{mu:.3}"));
+        }
+    }
+    assert_eq!(every_svg_reads_back(&dir), 8);
 }
 
 #[test]

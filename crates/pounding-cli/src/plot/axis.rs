@@ -65,8 +65,9 @@ impl Axis {
         let biggest = ticks.iter().fold(0.0f64, |m, t| m.max(t.abs()));
         let prefix = prefix_for(q.unit, biggest);
         let scaled_step = step / 10f64.powi(prefix);
+        // 2.5 and 0.25 need one more decimal than their power of ten; 25 and 250 do not.
         let decimals = (-(scaled_step.log10() - 1e-9).floor()).max(0.0) as usize
-            + usize::from(is_quarter(scaled_step));
+            + usize::from(is_quarter(scaled_step) && scaled_step < 10.0);
         let unit = format!("{}{}", prefix_symbol(prefix), q.unit);
         let label = if unit.is_empty() {
             q.name.clone()
@@ -246,5 +247,7 @@ mod tests {
         let b = Axis::new(&Quantity::new("x", ""), 0.0, 12.0, false);
         assert_eq!(b.tick_label(2.5), "2.5");
         assert_eq!(b.tick_label(5.0), "5.0");
+        let c = Axis::new(&Quantity::new("x", ""), 0.0, 120.0, false);
+        assert_eq!(c.tick_label(25.0), "25");
     }
 }

@@ -1,8 +1,10 @@
 //! The tool's figures: one impact (force against time and against penetration), several models on one
-//! impact, the seed's Table 1 as curves, and the four figures of a pounding run.
+//! impact, the seed's Table 1 as curves, and the figures of a pounding run.
 
-use super::{Figure, Legend, Mark, Panel, Quantity, Series, Style};
+use super::{Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
+use crate::output::fmt_sig;
 use crate::run_data::RunData;
+use serde_json::Value;
 
 /// A force history to plot: label, time since touch (s), penetration (m), force (N).
 pub struct ForceHistory<'a> {
@@ -71,6 +73,7 @@ pub fn impact(prefix: &str, title: &str, subtitle: &str, runs: &[ForceHistory]) 
             subtitle: subtitle.into(),
             panels: vec![time],
             columns: 1,
+            plot: PLOT,
         },
         Figure {
             id: format!("{prefix}-force-penetration"),
@@ -78,6 +81,7 @@ pub fn impact(prefix: &str, title: &str, subtitle: &str, runs: &[ForceHistory]) 
             subtitle: subtitle.into(),
             panels: vec![loop_],
             columns: 1,
+            plot: PLOT,
         },
     ]
 }
@@ -148,6 +152,7 @@ pub fn table1(groups: &[(&str, Vec<Curve>)]) -> Vec<Figure> {
             subtitle: subtitle.into(),
             panels: delivered,
             columns: 1,
+            plot: PLOT,
         },
         Figure {
             id: "table1-error".into(),
@@ -157,12 +162,14 @@ pub fn table1(groups: &[(&str, Vec<Curve>)]) -> Vec<Figure> {
             ),
             panels: error,
             columns: 1,
+            plot: PLOT,
         },
     ]
 }
 
-/// The four figures of a pounding run: floor displacements with impact instants, contact forces,
-/// relative displacement against the gap, and the energy balance.
+/// The figures of a pounding run: floor displacements with impact instants, peak response over height,
+/// the force-drift loop of the most strained storey (and of every inelastic storey of its building),
+/// contact forces, delivered e, relative displacement against the gap, and the energy balance.
 pub fn run(d: &RunData) -> Vec<Figure> {
     let time = || Quantity::new("time", "s");
     let impact_style = Style {
@@ -314,6 +321,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
     }
 
     let mut energy = Panel::new("", time(), Quantity::new("energy", "J"));
+    let mut hysteretic = false;
     energy.x_tight = true;
     energy.y_zero = true;
     energy.legend = Legend::Right;
@@ -338,8 +346,11 @@ pub fn run(d: &RunData) -> Vec<Figure> {
     ];
     for ((name, e), st) in names.iter().zip(&d.energy).zip(styles) {
         // Linear storeys dissipate nothing by hysteresis: no line for them.
-        if name.contains("hysteresis") && e.iter().all(|x| *x == 0.0) {
-            continue;
+        if name.contains("hysteresis") {
+            if e.iter().all(|x| *x == 0.0) {
+                continue;
+            }
+            hysteretic = true;
         }
         energy
             .series
@@ -352,7 +363,12 @@ pub fn run(d: &RunData) -> Vec<Figure> {
         subtitle: d.subtitle.clone(),
         panels: displacement,
         columns: 1,
+        plot: PLOT,
     }];
+    if !d.buildings.is_empty() {
+        figs.push(envelopes(d));
+        figs.extend(hysteresis(d));
+    }
     if !d.contacts.is_empty() {
         figs.push(Figure {
             id: "contact-force".into(),
@@ -360,6 +376,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             subtitle: d.subtitle.clone(),
             panels: forces,
             columns: 1,
+            plot: PLOT,
         });
         if d.impacts.iter().any(|i| i.e_post.is_some()) {
             figs.push(Figure {
@@ -368,6 +385,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
                 subtitle: d.subtitle.clone(),
                 panels: vec![restitution],
                 columns: 1,
+                plot: PLOT,
             });
         }
         figs.push(Figure {
@@ -376,16 +394,391 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             subtitle: d.subtitle.clone(),
             panels: closing,
             columns: 1,
+            plot: PLOT,
         });
     }
     figs.push(Figure {
         id: "energy".into(),
-        title: "Energy balance: input = kinetic + strain + structural damping + contact".into(),
+        title: if hysteretic {
+            "Energy balance: input = kinetic + strain + structural damping + storey hysteresis + contact"
+        } else {
+            "Energy balance: input = kinetic + strain + structural damping + contact"
+        }
+        .into(),
         subtitle: d.subtitle.clone(),
         panels: vec![energy],
         columns: 1,
+        plot: PLOT,
     });
     figs
+}
+
+/// The numbers of a JSON array (NaN for a missing or non-numeric entry: not drawn).
+fn numbers(v: &Value) -> Vec<f64> {
+    v.as_array()
+        .into_iter()
+        .flatten()
+        .map(|x| x.as_f64().unwrap_or(f64::NAN))
+        .collect()
+}
+
+/// Each building's levels from the ground up (ground = 0, then every floor) and the quantity of the height
+/// axis: elevations in m from the scenario file, or floor numbers if the folder has none for some building.
+fn levels(d: &RunData) -> (Vec<Vec<f64>>, Quantity) {
+    let with_ground = |z: &[f64]| std::iter::once(0.0).chain(z.iter().copied()).collect();
+    if d.buildings.iter().all(|b| b.elevations.is_some()) {
+        let z = d
+            .buildings
+            .iter()
+            .map(|b| with_ground(b.elevations.as_deref().unwrap_or_default()))
+            .collect();
+        (z, Quantity::new("height above ground", "m"))
+    } else {
+        let z = d
+            .buildings
+            .iter()
+            .map(|b| (0..=b.floors.len()).map(|f| f as f64).collect())
+            .collect();
+        (z, Quantity::new("floor (0 = ground)", ""))
+    }
+}
+
+/// A storey quantity as steps over height: `v[j]` from level `z[j]` to level `z[j + 1]`.
+fn steps(v: &[f64], z: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let mut x = Vec::with_capacity(2 * v.len());
+    let mut y = Vec::with_capacity(2 * v.len());
+    for (j, &vj) in v.iter().enumerate() {
+        x.extend([vj, vj]);
+        y.extend([z[j], z[j + 1]]);
+    }
+    (x, y)
+}
+
+/// Peak response over height, one line per building, four panels side by side: floor displacement and
+/// absolute acceleration at the floors (0 and the record's PGA at the ground), storey drift ratio and storey
+/// shear as steps over each storey's height.
+fn envelopes(d: &RunData) -> Figure {
+    let (z, height) = levels(d);
+    let panel = |title: &str, q: Quantity| {
+        let mut p = Panel::new(title, q, height.clone());
+        p.x_zero = true;
+        p.y_zero = true;
+        p.legend = Legend::None;
+        p
+    };
+    let mut disp = panel(
+        "floor displacement",
+        Quantity::new("peak displacement", "m"),
+    );
+    let mut drift = panel(
+        "storey drift (steps)",
+        Quantity::new("peak drift ratio", "%"),
+    );
+    let mut acc = panel(
+        "floor acceleration",
+        Quantity::new("peak absolute acceleration", "m/s\u{b2}"),
+    );
+    let mut shear = panel(
+        "storey shear (steps)",
+        Quantity::new("peak storey shear", "N"),
+    );
+    let pga = d.summary["record"]["pga"].as_f64().unwrap_or(f64::NAN);
+    for (b, bd) in d.buildings.iter().enumerate() {
+        let s = &d.summary["buildings"][b];
+        let z = &z[b];
+        let line = Style {
+            width: 1.8,
+            ..Style::nth(b)
+        };
+        let dotted = Style {
+            marker: true,
+            ..line
+        };
+        let at_floors = |ground: f64, v: Vec<f64>| std::iter::once(ground).chain(v).collect();
+        disp.series.push(Series::line(
+            &bd.name,
+            at_floors(0.0, numbers(&s["peak_displacement"])),
+            z.clone(),
+            dotted,
+        ));
+        let ratio: Vec<f64> = numbers(&s["peak_drift_ratio"])
+            .iter()
+            .map(|r| 100.0 * r)
+            .collect();
+        let (x, y) = steps(&ratio, z);
+        drift.series.push(Series::line(&bd.name, x, y, line));
+        acc.series.push(Series::line(
+            &bd.name,
+            at_floors(pga, numbers(&s["peak_absolute_acceleration"])),
+            z.clone(),
+            dotted,
+        ));
+        let (x, y) = steps(&numbers(&s["peak_storey_shear"]), z);
+        shear.series.push(Series::line(&bd.name, x, y, line));
+    }
+    disp.legend = Legend::Inside;
+    Figure {
+        id: "envelopes".into(),
+        title: "Peak response over height".into(),
+        subtitle: format!(
+            "{}; floor values as dots at the floors (at the ground: 0 and the record's PGA), storey values as steps over each storey",
+            d.subtitle
+        ),
+        panels: vec![disp, drift, acc, shear],
+        columns: 4,
+        plot: (240.0, 360.0),
+    }
+}
+
+/// One storey's identity and numbers from summary.json: building, storey (from 0), model, yield force
+/// (inelastic storeys), ductility and hysteretic energy.
+struct StoreyInfo {
+    building: usize,
+    storey: usize,
+    model: String,
+    yield_force: Option<f64>,
+    ductility: Option<f64>,
+    hysteretic_energy: Option<f64>,
+}
+
+/// The storeys of building `b`, from summary.json.
+fn storey_info(d: &RunData, b: usize) -> Vec<StoreyInfo> {
+    let s = &d.summary["buildings"][b];
+    let n = d.buildings[b].storey_shear.len();
+    let inelastic: Vec<usize> = s["inelastic_storeys"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|v| v.as_u64().map(|j| j as usize))
+        .collect();
+    let (fy, mu, eh) = (
+        numbers(&s["yield_forces"]),
+        numbers(&s["ductility"]),
+        numbers(&s["hysteretic_energy"]),
+    );
+    (0..n)
+        .map(|j| {
+            let k = inelastic.iter().position(|&i| i == j + 1);
+            let pick = |v: &[f64]| k.and_then(|k| v.get(k).copied()).filter(|x| x.is_finite());
+            StoreyInfo {
+                building: b,
+                storey: j,
+                model: s["storey_models"][j]
+                    .as_str()
+                    .unwrap_or("linear")
+                    .to_string(),
+                yield_force: pick(&fy),
+                ductility: pick(&mu),
+                hysteretic_energy: pick(&eh),
+            }
+        })
+        .collect()
+}
+
+/// The drift history of storey `j` of building `b`: u_j - u_(j-1), the ground not moving (m).
+fn drift(d: &RunData, b: usize, j: usize) -> Vec<f64> {
+    let floors = &d.buildings[b].floors;
+    match j {
+        0 => floors[0].clone(),
+        _ => floors[j]
+            .iter()
+            .zip(&floors[j - 1])
+            .map(|(a, c)| a - c)
+            .collect(),
+    }
+}
+
+/// The ±F_y lines of an inelastic storey (the upper one labelled if `label`).
+fn yield_lines(p: &mut Panel, fy: f64, label: bool) {
+    let st = Style::reference();
+    p.series.push(Series {
+        label: if label {
+            format!("yield force \u{b1}F_y = \u{b1}{}", si(fy, "N"))
+        } else {
+            String::new()
+        },
+        mark: Mark::HLine(fy),
+        style: st,
+    });
+    p.series.push(Series {
+        label: String::new(),
+        mark: Mark::HLine(-fy),
+        style: st,
+    });
+}
+
+/// A storey's name with its numbers, for titles: "storey 1 (bouc-wen, ductility 3.02)".
+fn storey_title(i: &StoreyInfo) -> String {
+    match i.ductility {
+        Some(mu) => format!(
+            "storey {} ({}, ductility {})",
+            i.storey + 1,
+            i.model,
+            fmt_sig(mu, 3)
+        ),
+        None => format!("storey {} ({})", i.storey + 1, i.model),
+    }
+}
+
+/// The force-drift loop of the most strained storey: the largest ductility over every building, or, with
+/// no inelastic storey, the largest peak drift ratio. With two or more inelastic storeys in its building, a
+/// second figure has the loop of each of them on common axes.
+fn hysteresis(d: &RunData) -> Vec<Figure> {
+    let all: Vec<StoreyInfo> = (0..d.buildings.len())
+        .flat_map(|b| storey_info(d, b))
+        .collect();
+    let ratio = |i: &StoreyInfo| {
+        d.summary["buildings"][i.building]["peak_drift_ratio"][i.storey]
+            .as_f64()
+            .unwrap_or(0.0)
+    };
+    let most = all
+        .iter()
+        .filter(|i| i.ductility.is_some())
+        .max_by(|a, b| {
+            a.ductility
+                .unwrap_or(0.0)
+                .total_cmp(&b.ductility.unwrap_or(0.0))
+        })
+        .or_else(|| all.iter().max_by(|a, b| ratio(a).total_cmp(&ratio(b))));
+    let Some(most) = most else {
+        return Vec::new();
+    };
+    let name = &d.buildings[most.building].name;
+    let drift_q = || Quantity::new("storey drift", "m");
+    let shear_q = || Quantity::new("storey shear", "N");
+    let loop_style = Style {
+        width: 1.2,
+        ..Style::nth(0)
+    };
+    let end_style = Style {
+        width: 2.0,
+        ..Style::nth(1)
+    };
+    let j = most.storey;
+    let u = drift(d, most.building, j);
+    let v = d.buildings[most.building].storey_shear[j].clone();
+    let mut p = Panel::new(
+        match most.hysteretic_energy {
+            Some(e) => format!("{}, hysteretic energy {}", storey_title(most), si(e, "J")),
+            None => storey_title(most),
+        },
+        drift_q(),
+        shear_q(),
+    );
+    p.x_zero = true;
+    p.y_zero = true;
+    if let (Some(&ue), Some(&ve)) = (u.last(), v.last()) {
+        p.series
+            .push(Series::line("", u.clone(), v.clone(), loop_style));
+        p.series.push(Series::points(
+            format!("end of the analysis: drift {}", si(ue, "m")),
+            vec![ue],
+            vec![ve],
+            end_style,
+        ));
+    }
+    if let Some(fy) = most.yield_force {
+        yield_lines(&mut p, fy, true);
+    }
+    let why = if most.ductility.is_some() {
+        "the largest ductility of the run"
+    } else {
+        "no inelastic storey; the largest peak drift ratio of the run"
+    };
+    let mut figs = vec![Figure {
+        id: "hysteresis".into(),
+        title: format!(
+            "Storey shear against drift: building {name}, storey {}",
+            j + 1
+        ),
+        subtitle: format!(
+            "{}; {why}; drift u_j\u{2212}u_(j\u{2212}1) (u_0=0), shear: the storey's restoring force (no damping force)",
+            d.subtitle
+        ),
+        panels: vec![p],
+        columns: 1,
+        plot: (620.0, 380.0),
+    }];
+
+    // Every inelastic storey of that building, on common axes so that the loops compare.
+    let mine: Vec<&StoreyInfo> = all
+        .iter()
+        .filter(|i| i.building == most.building && i.ductility.is_some())
+        .collect();
+    if mine.len() >= 2 {
+        let curves: Vec<(Vec<f64>, &Vec<f64>)> = mine
+            .iter()
+            .map(|i| {
+                (
+                    drift(d, i.building, i.storey),
+                    &d.buildings[i.building].storey_shear[i.storey],
+                )
+            })
+            .collect();
+        // The range of every loop (shears with the yield forces) and a little more, so that neither a loop
+        // nor a yield line lies on the frame.
+        let range = |vs: &mut dyn Iterator<Item = f64>, pad: f64| {
+            let (lo, hi) = vs.fold((0.0f64, 0.0f64), |(a, b), x| (a.min(x), b.max(x)));
+            let pad = pad * (hi - lo);
+            (lo - pad, hi + pad)
+        };
+        let xr = range(&mut curves.iter().flat_map(|c| c.0.iter().copied()), 0.03);
+        let yr = range(
+            &mut curves.iter().flat_map(|c| c.1.iter().copied()).chain(
+                mine.iter()
+                    .filter_map(|i| i.yield_force)
+                    .flat_map(|f| [f, -f]),
+            ),
+            0.06,
+        );
+        let panels = mine
+            .iter()
+            .zip(curves)
+            .map(|(i, (u, v))| {
+                let mut p = Panel::new(storey_title(i), drift_q(), shear_q());
+                p.x_range = Some(xr);
+                p.y_range = Some(yr);
+                p.legend = Legend::None;
+                p.series.push(Series::line("", u, v.clone(), loop_style));
+                if let Some(fy) = i.yield_force {
+                    yield_lines(&mut p, fy, false);
+                }
+                p
+            })
+            .collect();
+        figs.push(Figure {
+            id: "hysteresis-storeys".into(),
+            title: format!("Storey shear against drift: every inelastic storey of building {name}"),
+            subtitle: format!(
+                "{}; common axes; dashed: \u{b1}F_y of the storey",
+                d.subtitle
+            ),
+            panels,
+            columns: mine.len().min(4),
+            plot: (260.0, 190.0),
+        });
+    }
+    figs
+}
+
+/// A value with an SI prefix and 4 significant digits: "2.5 MN", "186.6 kJ", "1.27 mm".
+fn si(v: f64, unit: &str) -> String {
+    let e = if v == 0.0 || !v.is_finite() {
+        0
+    } else {
+        ((v.abs().log10() / 3.0).floor() as i32 * 3).clamp(-9, 9)
+    };
+    let prefix = match e {
+        -9 => "n",
+        -6 => "\u{b5}",
+        -3 => "m",
+        3 => "k",
+        6 => "M",
+        9 => "G",
+        _ => "",
+    };
+    format!("{} {prefix}{unit}", fmt_sig(v / 10f64.powi(e), 4)).replace('-', "\u{2212}")
 }
 
 /// Floors from light to dark up the building, the roof in the darkest blue.

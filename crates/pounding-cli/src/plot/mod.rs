@@ -37,6 +37,8 @@ pub struct Style {
     pub dash: Dash,
     /// Line width (or point radius), px.
     pub width: f64,
+    /// A line also marks each of its points with a dot (short lines: profiles over floors).
+    pub marker: bool,
 }
 
 impl Style {
@@ -51,6 +53,7 @@ impl Style {
             color: PALETTE[i % PALETTE.len()],
             dash,
             width: 1.6,
+            marker: false,
         }
     }
 
@@ -60,6 +63,7 @@ impl Style {
             color: "#555555",
             dash: Dash::Dashed,
             width: 1.2,
+            marker: false,
         }
     }
 }
@@ -140,6 +144,8 @@ pub struct Panel {
     pub y: Quantity,
     /// Keep the x axis at the data range (time axes) instead of rounding to ticks.
     pub x_tight: bool,
+    /// Make the x axis include 0.
+    pub x_zero: bool,
     /// Make the y axis include 0.
     pub y_zero: bool,
     /// Logarithmic y axis (needs `y_range`; values below it are drawn below the frame and clipped).
@@ -162,6 +168,7 @@ impl Panel {
             x,
             y,
             x_tight: false,
+            x_zero: false,
             y_zero: false,
             y_log: false,
             x_range: None,
@@ -208,4 +215,9 @@ pub struct Figure {
     pub panels: Vec<Panel>,
     /// Panels per row.
     pub columns: usize,
+    /// Size of each panel's plot area (inside the frame), px: [`PLOT`] for most figures.
+    pub plot: (f64, f64),
 }
+
+/// The usual plot area, px: wide and low, for histories.
+pub const PLOT: (f64, f64) = (620.0, 250.0);

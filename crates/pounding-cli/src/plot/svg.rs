@@ -6,9 +6,6 @@ use super::font::text_width;
 use super::{Dash, Figure, Legend, Mark, Panel, Series, Style};
 use std::fmt::Write as _;
 
-/// Size of one plot area, px.
-const PLOT_W: f64 = 620.0;
-const PLOT_H: f64 = 250.0;
 /// Font sizes, px.
 const TITLE: f64 = 16.0;
 const SUBTITLE: f64 = 12.0;
@@ -24,12 +21,16 @@ pub const FONT_FAMILY: &str = "DejaVu Sans, Verdana, Arial, Helvetica, sans-seri
 /// The figure as a standalone SVG document.
 pub fn render(fig: &Figure) -> String {
     let columns = fig.columns.max(1);
+    let size = Size {
+        w: fig.plot.0,
+        h: fig.plot.1,
+    };
     let axes: Vec<(Axis, Axis)> = fig.panels.iter().map(axes_of).collect();
     let places: Vec<Place> = fig
         .panels
         .iter()
         .zip(&axes)
-        .map(|(p, (xa, ya))| place_legend(p, xa, ya))
+        .map(|(p, (xa, ya))| place_legend(p, xa, ya, size))
         .collect();
     // One left margin and one legend width for all panels, so that plots line up.
     let tick_w = axes
@@ -53,8 +54,8 @@ pub fn render(fig: &Figure) -> String {
     let right = 18.0 + legend_w;
     let top = 28.0;
     let bottom = 8.0 + TICK + 10.0 + LABEL + 12.0;
-    let cell_w = left + PLOT_W + right;
-    let cell_h = top + PLOT_H + bottom;
+    let cell_w = left + size.w + right;
+    let cell_h = top + size.h + bottom;
     let width = cell_w * columns as f64;
     let sub = wrap(&fig.subtitle, SUBTITLE, width - 40.0);
     let head = (14.0 + TITLE + 6.0 + (SUBTITLE + 4.0) * sub.len() as f64 + 6.0).ceil();
@@ -97,7 +98,8 @@ pub fn render(fig: &Figure) -> String {
         let x0 = col as f64 * cell_w + left;
         let y0 = head + row as f64 * cell_h + top;
         let clip = format!("{}-clip{k}", fig.id);
-        panel_svg(&mut s, panel, (xa, ya), places[k], (x0, y0), &clip);
+        let m = Map::new(xa, ya, (x0, y0), size);
+        panel_svg(&mut s, panel, &m, places[k], &clip);
     }
     s.push_str("\n</svg>\n");
     s
@@ -105,7 +107,10 @@ pub fn render(fig: &Figure) -> String {
 
 /// The axes of a panel: fixed ranges where given, otherwise the data's (y including 0 if asked).
 fn axes_of(p: &Panel) -> (Axis, Axis) {
-    let (xl, xh) = p.x_range.or_else(|| p.data_range(0)).unwrap_or((0.0, 1.0));
+    let (mut xl, mut xh) = p.x_range.or_else(|| p.data_range(0)).unwrap_or((0.0, 1.0));
+    if p.x_zero && p.x_range.is_none() {
+        (xl, xh) = (xl.min(0.0), xh.max(0.0));
+    }
     let (mut yl, mut yh) = p.y_range.or_else(|| p.data_range(1)).unwrap_or((0.0, 1.0));
     if p.y_zero && p.y_range.is_none() {
         (yl, yh) = (yl.min(0.0), yh.max(0.0));
@@ -168,42 +173,44 @@ fn stroke(st: &Style) -> String {
     )
 }
 
+/// Width and height of a plot area (inside the frame), px.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Size {
+    w: f64,
+    h: f64,
+}
+
 /// Maps data to pixels inside one plot area.
 struct Map<'a> {
     xa: &'a Axis,
     ya: &'a Axis,
     x0: f64,
-    y1: f64,
+    y0: f64,
+    size: Size,
 }
 
 impl<'a> Map<'a> {
-    fn new(xa: &'a Axis, ya: &'a Axis, (x0, y0): (f64, f64)) -> Self {
+    fn new(xa: &'a Axis, ya: &'a Axis, (x0, y0): (f64, f64), size: Size) -> Self {
         Self {
             xa,
             ya,
             x0,
-            y1: y0 + PLOT_H,
+            y0,
+            size,
         }
     }
     fn px(&self, v: f64) -> f64 {
-        self.x0 + self.xa.fraction(v) * PLOT_W
+        self.x0 + self.xa.fraction(v) * self.size.w
     }
     fn py(&self, v: f64) -> f64 {
-        self.y1 - self.ya.fraction(v) * PLOT_H
+        self.y0 + self.size.h - self.ya.fraction(v) * self.size.h
     }
 }
 
-fn panel_svg(
-    s: &mut String,
-    p: &Panel,
-    (xa, ya): (&Axis, &Axis),
-    place: Place,
-    origin: (f64, f64),
-    clip: &str,
-) {
-    let (x0, y0) = origin;
-    let (x1, y1) = (x0 + PLOT_W, y0 + PLOT_H);
-    let m = Map::new(xa, ya, origin);
+fn panel_svg(s: &mut String, p: &Panel, m: &Map, place: Place, clip: &str) {
+    let (xa, ya) = (m.xa, m.ya);
+    let (x0, y0) = (m.x0, m.y0);
+    let (x1, y1) = (x0 + m.size.w, y0 + m.size.h);
     let _ = write!(
         s,
         "\n<g class=\"panel\" data-title=\"{}\" data-y-scale=\"{}\" data-x-lo=\"{}\" data-x-hi=\"{}\" data-y-lo=\"{}\" data-y-hi=\"{}\" \
@@ -224,8 +231,8 @@ fn panel_svg(
         "\n<clipPath id=\"{clip}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>",
         px(x0),
         px(y0),
-        px(PLOT_W),
-        px(PLOT_H)
+        px(m.size.w),
+        px(m.size.h)
     );
     // Grid and ticks.
     let mut grid = String::new();
@@ -295,16 +302,20 @@ fn panel_svg(
     // Data, clipped to the plot area.
     let _ = write!(s, "\n<g clip-path=\"url(#{clip})\">");
     for ser in &p.series {
-        series_svg(s, ser, &m, y0);
+        series_svg(s, ser, m);
     }
     s.push_str("\n</g>");
+    // Markers are not clipped: a dot on the largest value, at the frame, stays whole.
+    for ser in p.series.iter().filter(|s| s.style.marker) {
+        markers_svg(s, ser, m);
+    }
     let _ = write!(
         s,
         "\n<rect class=\"frame\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#222222\" stroke-width=\"1\"/>",
         px(x0),
         px(y0),
-        px(PLOT_W),
-        px(PLOT_H)
+        px(m.size.w),
+        px(m.size.h)
     );
     legend_svg(s, p, place, (x0, y0, x1));
     s.push_str("\n</g>");
@@ -321,19 +332,19 @@ fn pixels(ser: &Series, m: &Map) -> Vec<(f64, f64)> {
                 .map(|(a, b)| (m.px(*a), m.py(*b)))
                 .collect();
             if matches!(ser.mark, Mark::Line { .. }) {
-                thin(&pts).into_iter().map(|i| pts[i]).collect()
+                thin(&pts, m.size.w).into_iter().map(|i| pts[i]).collect()
             } else {
                 pts
             }
         }
         Mark::HLine(v) => (0..=20)
-            .map(|i| (m.x0 + PLOT_W * f64::from(i) / 20.0, m.py(*v)))
+            .map(|i| (m.x0 + m.size.w * f64::from(i) / 20.0, m.py(*v)))
             .collect(),
         Mark::Rug(_) => Vec::new(),
     }
 }
 
-fn series_svg(s: &mut String, ser: &Series, m: &Map, y0: f64) {
+fn series_svg(s: &mut String, ser: &Series, m: &Map) {
     let label = esc(&ser.label);
     match &ser.mark {
         Mark::Line { x, y } => {
@@ -343,7 +354,7 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map, y0: f64) {
                 .filter(|(a, b)| a.is_finite() && b.is_finite())
                 .map(|(a, b)| (m.px(*a), m.py(*b)))
                 .collect();
-            let keep = thin(&pts);
+            let keep = thin(&pts, m.size.w);
             let mut d = String::with_capacity(keep.len() * 16);
             for (k, &i) in keep.iter().enumerate() {
                 if k > 0 {
@@ -381,7 +392,7 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map, y0: f64) {
                 s,
                 "\n<line class=\"hline\" data-label=\"{label}\" data-value=\"{v}\" x1=\"{}\" x2=\"{}\" y1=\"{}\" y2=\"{}\" {}/>",
                 px(m.x0),
-                px(m.x0 + PLOT_W),
+                px(m.x0 + m.size.w),
                 px(y),
                 px(y),
                 stroke(&ser.style)
@@ -390,7 +401,7 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map, y0: f64) {
         Mark::Rug(t) => {
             let mut d = String::new();
             for &v in t {
-                let _ = write!(d, "M{} {}v{}", px(m.px(v)), px(y0), px(9.0));
+                let _ = write!(d, "M{} {}v{}", px(m.px(v)), px(m.y0), px(9.0));
             }
             let _ = write!(
                 s,
@@ -402,11 +413,38 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map, y0: f64) {
     }
 }
 
+/// The dots of a line drawn with markers, at its points inside the plot area.
+fn markers_svg(s: &mut String, ser: &Series, m: &Map) {
+    let Mark::Line { x, y } = &ser.mark else {
+        return;
+    };
+    let _ = write!(
+        s,
+        "\n<g class=\"markers\" data-label=\"{}\" fill=\"{}\">",
+        esc(&ser.label),
+        ser.style.color
+    );
+    let inside = |v: f64, a: f64, b: f64| v.is_finite() && v >= a - 0.5 && v <= b + 0.5;
+    for (a, b) in x.iter().zip(y) {
+        let (cx, cy) = (m.px(*a), m.py(*b));
+        if inside(cx, m.x0, m.x0 + m.size.w) && inside(cy, m.y0, m.y0 + m.size.h) {
+            let _ = write!(
+                s,
+                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>",
+                px(cx),
+                px(cy),
+                px(ser.style.width + 1.4)
+            );
+        }
+    }
+    s.push_str("</g>");
+}
+
 /// Indices of the points to draw: all of them for short lines or lines that turn back in x (loops);
 /// otherwise, per pixel column, the first, lowest, highest and last point, in order.
-fn thin(pts: &[(f64, f64)]) -> Vec<usize> {
+fn thin(pts: &[(f64, f64)], width: f64) -> Vec<usize> {
     let monotone = pts.windows(2).all(|w| w[1].0 >= w[0].0);
-    if pts.len() <= 4 * PLOT_W as usize || !monotone {
+    if pts.len() <= 4 * width as usize || !monotone {
         return (0..pts.len()).collect();
     }
     let mut keep = Vec::new();
@@ -456,7 +494,7 @@ enum Place {
 
 /// An inside legend goes in the first corner (top right, top left, bottom right, bottom left) where it hides
 /// no data; if every corner hides some, it goes to the right of the plot.
-fn place_legend(p: &Panel, xa: &Axis, ya: &Axis) -> Place {
+fn place_legend(p: &Panel, xa: &Axis, ya: &Axis, size: Size) -> Place {
     let (w, h) = legend_size(p);
     match p.legend {
         _ if h <= 8.0 => return Place::Nowhere,
@@ -464,14 +502,15 @@ fn place_legend(p: &Panel, xa: &Axis, ya: &Axis) -> Place {
         Legend::Right => return Place::Right,
         Legend::Inside => {}
     }
-    let m = Map::new(xa, ya, (0.0, 0.0));
+    let m = Map::new(xa, ya, (0.0, 0.0), size);
     let dots: Vec<(f64, f64)> = p.series.iter().flat_map(|s| pixels(s, &m)).collect();
     let pad = 8.0;
+    let (pw, ph) = (size.w, size.h);
     let corners = [
-        (PLOT_W - pad - w, pad + 10.0),
+        (pw - pad - w, pad + 10.0),
         (pad, pad + 10.0),
-        (PLOT_W - pad - w, PLOT_H - pad - h),
-        (pad, PLOT_H - pad - h),
+        (pw - pad - w, ph - pad - h),
+        (pad, ph - pad - h),
     ];
     // A line between two drawn points can cross the box with both points outside: test the segments too.
     let hides = |&(cx, cy): &(f64, f64)| {
@@ -540,6 +579,16 @@ fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, 
                     px(cy),
                     stroke(&ser.style)
                 );
+                if ser.style.marker {
+                    let _ = write!(
+                        s,
+                        "\n<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>",
+                        px(sx + 11.0),
+                        px(cy),
+                        px(ser.style.width + 1.4),
+                        ser.style.color
+                    );
+                }
             }
         }
         let _ = write!(
@@ -564,14 +613,14 @@ mod tests {
         let mut pts: Vec<(f64, f64)> = (0..n)
             .map(|i| {
                 (
-                    i as f64 * PLOT_W / n as f64,
+                    i as f64 * 620.0 / n as f64,
                     100.0 + 50.0 * (i as f64 * 0.37).sin(),
                 )
             })
             .collect();
         pts[54_321].1 = -400.0;
-        let keep = thin(&pts);
-        assert!(keep.len() <= 4 * (PLOT_W as usize + 1));
+        let keep = thin(&pts, 620.0);
+        assert!(keep.len() <= 4 * (620 + 1));
         assert!(keep.windows(2).all(|w| w[0] < w[1]));
         assert!(keep.contains(&54_321));
         let ys = |v: &Vec<usize>| {
