@@ -1,9 +1,11 @@
 //! Pounding time histories: the two-SDOF example of `bench/opensees/` (the OpenSeesPy peer measures the
-//! same problems), a 20-storey pair, and how cost grows with storeys and with record length.
+//! same problems), a 20-storey pair, how cost grows with storeys and with record length, and inelastic
+//! storeys against the same linear runs (`bench/opensees/scenarios-inelastic/`).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use pounding::analysis::{Building, Scenario};
+use pounding::analysis::{Building, RunOptions, Scenario};
 use pounding::contact::{ContactModel, Model};
+use pounding::element::StoreyLaw;
 use pounding::ground_motion::Record;
 use pounding::structure::ShearBuilding;
 
@@ -59,6 +61,99 @@ fn repeated(times: usize) -> Record {
     Record::new("el-centro-repeated", r.dt(), r.t0(), acc).unwrap()
 }
 
+/// The laws of `bench/opensees/scenarios-inelastic/`: yield forces per storey, a = 0.05.
+fn laws(kind: &str, fy: &[f64]) -> Vec<StoreyLaw> {
+    fy.iter()
+        .map(|&f| match kind {
+            "bilinear" => StoreyLaw::bilinear(f, 0.05).unwrap(),
+            "bouc-wen" => StoreyLaw::bouc_wen(f, 0.05, 1.0, 0.5, 0.5).unwrap(),
+            _ => StoreyLaw::Linear,
+        })
+        .collect()
+}
+
+/// `bilinear-sdof.toml` (and its linear and Bouc–Wen twins): the hertzdamp two-SDOF pair, F_y 2.5e6 and
+/// 1.2e6 N.
+fn sdof_pair(kind: &str) -> Scenario {
+    let mut s = pair(1, Record::el_centro_1940(), Model::Hertzdamp, 2.0e10);
+    let mut b = s.buildings().to_vec();
+    b[0].structure = b[0]
+        .structure
+        .clone()
+        .with_storey_laws(laws(kind, &[2.5e6]))
+        .unwrap();
+    b[1].structure = b[1]
+        .structure
+        .clone()
+        .with_storey_laws(laws(kind, &[1.2e6]))
+        .unwrap();
+    s = Scenario::new(b, Record::el_centro_1940()).unwrap();
+    s.with_link(
+        "left",
+        "right",
+        0.02,
+        &ContactModel::new(Model::Hertzdamp, 2.0e10, 0.65).unwrap(),
+        None,
+    )
+    .unwrap()
+}
+
+/// `bilinear-mdof.toml`: the 3-storey and 8-storey buildings of the examples, hertzdamp contact at floors
+/// 1-3, 40 mm, the whole record.
+fn mdof_pair(kind: &str) -> Scenario {
+    let with = |name: &str, m: Vec<f64>, k: Vec<f64>, fy: &[f64]| Building {
+        name: name.into(),
+        structure: ShearBuilding::new(m, k, vec![3.0; fy.len()], 0.05)
+            .unwrap()
+            .with_storey_laws(laws(kind, fy))
+            .unwrap(),
+    };
+    Scenario::new(
+        vec![
+            with(
+                "3",
+                vec![4.0e5, 4.0e5, 3.5e5],
+                vec![6.0e8, 5.0e8, 4.0e8],
+                &[4.5e6, 4.0e6, 4.0e6],
+            ),
+            with(
+                "8",
+                vec![4.0e5, 4.0e5, 4.0e5, 4.0e5, 4.0e5, 4.0e5, 4.0e5, 3.0e5],
+                vec![2.6e8, 2.4e8, 2.2e8, 2.0e8, 1.8e8, 1.6e8, 1.4e8, 1.2e8],
+                &[2.5e6, 2.5e6, 2.5e6, 3.0e6, 3.5e6, 4.0e6, 4.0e6, 4.0e6],
+            ),
+        ],
+        Record::el_centro_1940(),
+    )
+    .unwrap()
+    .with_link(
+        "3",
+        "8",
+        0.04,
+        &ContactModel::new(Model::Hertzdamp, 2.0e10, 0.65).unwrap(),
+        None,
+    )
+    .unwrap()
+}
+
+fn inelastic(c: &mut Criterion) {
+    let mut g = c.benchmark_group("inelastic");
+    g.sample_size(20);
+    for kind in ["linear", "bilinear", "bouc-wen"] {
+        let s = sdof_pair(kind);
+        g.bench_function(format!("sdof_pair/{kind}"), |b| b.iter(|| s.run().unwrap()));
+        let s = mdof_pair(kind);
+        g.bench_function(format!("mdof_pair/{kind}"), |b| b.iter(|| s.run().unwrap()));
+    }
+    // A study keeps only the summary: no histories.
+    let s = mdof_pair("bilinear");
+    let summary_only = RunOptions { histories: false };
+    g.bench_function("mdof_pair/bilinear/summary_only", |b| {
+        b.iter(|| s.run_with_options(&summary_only, &mut |_| {}).unwrap())
+    });
+    g.finish();
+}
+
 fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("two_sdof_el_centro");
     g.sample_size(20);
@@ -98,6 +193,6 @@ fn benches(c: &mut Criterion) {
 #[allow(missing_docs)]
 mod group {
     use super::*;
-    criterion_group!(pounding_benches, benches);
+    criterion_group!(pounding_benches, benches, inelastic);
 }
 criterion_main!(group::pounding_benches);

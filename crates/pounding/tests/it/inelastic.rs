@@ -284,3 +284,80 @@ fn linear_storey_shear_is_stiffness_times_drift_and_acceleration_is_absolute() {
         assert!((a + k / m * u).abs() <= 1e-9 * b.peak_absolute_acceleration[0]);
     }
 }
+
+/// `bench/opensees/scenarios-inelastic/{bilinear,bouc-wen}-sdof.toml`: the hertzdamp two-SDOF pair with
+/// inelastic storeys (F_y 2.5e6 and 1.2e6 N, a = 0.05).
+fn inelastic_sdof_pair(law: &dyn Fn(f64) -> StoreyLaw) -> Scenario {
+    let mut l = building("left", &[5.0e5], &[7.8957e7], 0.05);
+    let mut r = building("right", &[5.0e5], &[1.9739e7], 0.05);
+    l.structure = l.structure.with_storey_laws(vec![law(2.5e6)]).unwrap();
+    r.structure = r.structure.with_storey_laws(vec![law(1.2e6)]).unwrap();
+    Scenario::new(vec![l, r], Record::el_centro_1940())
+        .unwrap()
+        .with_link(
+            "left",
+            "right",
+            0.02,
+            &ContactModel::new(Model::Hertzdamp, 2.0e10, 0.65).unwrap(),
+            None,
+        )
+        .unwrap()
+}
+
+#[test]
+fn inelastic_pounding_agrees_with_converged_opensees() {
+    // OpenSeesPy 3.7.1 (bench/opensees/inelastic.py, results-inelastic.json): Steel01 at dt = 5e-6 s, which
+    // agrees with dt = 1e-5 to 3e-6; BoucWen (first order in dt) extrapolated as 2 q(5e-6) - q(1e-5), which
+    // agrees with the extrapolation from 1e-4 and 1e-5 to 7e-7. Per building: peak |u|, u at 31.18 s (m),
+    // peak storey force (N); impacts. Our default tolerance is within 2e-5 of these (compare_inelastic.py);
+    // the issue asks for 0.5 % on peaks, 2 % of the peak on residuals and impact counts within one.
+    // (law, per building (peak |u|, u at the end, peak force), impacts).
+    type Expected = [(f64, f64, f64); 2];
+    let cases: [(StoreyLaw, Expected, usize); 2] = [
+        (
+            StoreyLaw::bilinear(1.0, 0.05).unwrap(),
+            [
+                (
+                    0.03958015552793759,
+                    -0.00788574245680818,
+                    2531256.5170009686,
+                ),
+                (0.11100661472952635, 0.0481941705410907, 1249557.9784073061),
+            ],
+            5,
+        ),
+        (
+            StoreyLaw::bouc_wen(1.0, 0.05, 1.0, 0.5, 0.5).unwrap(),
+            [
+                (
+                    0.045938661961900155,
+                    -0.007904546605386859,
+                    1915914.6955817393,
+                ),
+                (0.07969536686438425, 0.012457197025175715, 910071.8940138625),
+            ],
+            4,
+        ),
+    ];
+    for (kind, expected, impacts) in cases {
+        let law = |fy: f64| match kind {
+            StoreyLaw::Bilinear { .. } => StoreyLaw::bilinear(fy, 0.05).unwrap(),
+            _ => StoreyLaw::bouc_wen(fy, 0.05, 1.0, 0.5, 0.5).unwrap(),
+        };
+        let r = inelastic_sdof_pair(&law).run().unwrap();
+        for (b, (peak, end, force)) in r.buildings.iter().zip(expected) {
+            assert!(
+                (b.peak_displacement[0] - peak).abs() <= 1e-4 * peak,
+                "{} vs {peak}",
+                b.peak_displacement[0]
+            );
+            assert!(
+                (b.residual_displacement[0] - end).abs() <= 1e-4 * peak,
+                "{} vs {end}",
+                b.residual_displacement[0]
+            );
+            assert!((b.peak_storey_shear[0] - force).abs() <= 1e-4 * force);
+        }
+        assert_eq!(r.impacts.len(), impacts);
+    }
+}
