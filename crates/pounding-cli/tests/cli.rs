@@ -500,27 +500,34 @@ fn bad_scenarios_get_one_line_with_file_and_line_exit_2_and_no_output() {
         ),
     ];
     for (i, (text, needle, place)) in cases.iter().enumerate() {
-        let file = dir.join(format!("case{i}.toml"));
-        std::fs::write(&file, text).unwrap();
-        let out = dir.join(format!("out{i}"));
-        let o = pounding(&[
-            "run",
-            file.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "case {i}: {err}");
-        assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
+        let err = refused(&dir, i, text);
         assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
         let place = match text.lines().position(|l| l.contains(place)) {
             Some(n) if !place.contains('.') || place.contains(' ') => format!(":{}:", n + 1),
             _ => place.to_string(),
         };
         assert!(err.contains(&place), "case {i}: {err} lacks {place}");
-        assert!(!out.exists(), "case {i}: output written");
-        assert!(o.stdout.is_empty() || !String::from_utf8_lossy(&o.stdout).contains("wrote"));
     }
+}
+
+/// Runs `pounding run` on `text`, written as scenario `case{i}` in `dir`: it must be refused with exit code 2,
+/// one line on stderr and no output. Returns that line.
+fn refused(dir: &std::path::Path, i: usize, text: &str) -> String {
+    let file = dir.join(format!("case{i}.toml"));
+    std::fs::write(&file, text).unwrap();
+    let out = dir.join(format!("out{i}"));
+    let o = pounding(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "case {i}: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
+    assert!(!out.exists(), "case {i}: output written");
+    assert!(o.stdout.is_empty() || !String::from_utf8_lossy(&o.stdout).contains("wrote"));
+    err
 }
 
 #[test]
@@ -605,25 +612,13 @@ fn bad_inelastic_storeys_get_one_line_naming_key_and_building_exit_2_and_no_outp
         ),
     ];
     for (i, (text, needle, place)) in cases.iter().enumerate() {
-        let file = dir.join(format!("case{i}.toml"));
-        std::fs::write(&file, text).unwrap();
-        let out = dir.join(format!("out{i}"));
-        let o = pounding(&[
-            "run",
-            file.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "case {i}: {err}");
-        assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
+        let err = refused(&dir, i, text);
         assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
         let line = text.lines().position(|l| l.contains(place)).unwrap() + 1;
         assert!(
             err.contains(&format!(":{line}:")),
             "case {i}: {err} is not at line {line}"
         );
-        assert!(!out.exists(), "case {i}: output written");
     }
 }
 

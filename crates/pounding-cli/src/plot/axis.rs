@@ -182,7 +182,8 @@ fn prefix_for(unit: &str, biggest: f64) -> i32 {
     e.clamp(-9, max)
 }
 
-fn prefix_symbol(e: i32) -> &'static str {
+/// The SI prefix of the power of ten `e` (a multiple of 3 from -9 to 9).
+pub(crate) fn prefix_symbol(e: i32) -> &'static str {
     match e {
         -9 => "n",
         -6 => "\u{b5}",

@@ -769,15 +769,7 @@ fn si(v: f64, unit: &str) -> String {
     } else {
         ((v.abs().log10() / 3.0).floor() as i32 * 3).clamp(-9, 9)
     };
-    let prefix = match e {
-        -9 => "n",
-        -6 => "\u{b5}",
-        -3 => "m",
-        3 => "k",
-        6 => "M",
-        9 => "G",
-        _ => "",
-    };
+    let prefix = super::axis::prefix_symbol(e);
     format!("{} {prefix}{unit}", fmt_sig(v / 10f64.powi(e), 4)).replace('-', "\u{2212}")
 }
 

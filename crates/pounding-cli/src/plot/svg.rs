@@ -375,14 +375,7 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map) {
                 ser.style.color
             );
             for (a, b) in x.iter().zip(y) {
-                let (cx, cy) = (m.px(*a), m.py(*b));
-                let _ = write!(
-                    s,
-                    "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>",
-                    px(cx),
-                    px(cy),
-                    px(ser.style.width + 1.2)
-                );
+                circle(s, m.px(*a), m.py(*b), ser.style.width + 1.2);
             }
             s.push_str("</g>");
         }
@@ -413,6 +406,17 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map) {
     }
 }
 
+/// One dot of radius `r` at `(cx, cy)`, px.
+fn circle(s: &mut String, cx: f64, cy: f64, r: f64) {
+    let _ = write!(
+        s,
+        "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>",
+        px(cx),
+        px(cy),
+        px(r)
+    );
+}
+
 /// The dots of a line drawn with markers, at its points inside the plot area.
 fn markers_svg(s: &mut String, ser: &Series, m: &Map) {
     let Mark::Line { x, y } = &ser.mark else {
@@ -428,13 +432,7 @@ fn markers_svg(s: &mut String, ser: &Series, m: &Map) {
     for (a, b) in x.iter().zip(y) {
         let (cx, cy) = (m.px(*a), m.py(*b));
         if inside(cx, m.x0, m.x0 + m.size.w) && inside(cy, m.y0, m.y0 + m.size.h) {
-            let _ = write!(
-                s,
-                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>",
-                px(cx),
-                px(cy),
-                px(ser.style.width + 1.4)
-            );
+            circle(s, cx, cy, ser.style.width + 1.4);
         }
     }
     s.push_str("</g>");
