@@ -23,6 +23,8 @@ pub(super) struct Model<'a> {
     pub offsets: Vec<usize>,
     /// Element index of storey 1 of each building (its storeys follow in order).
     pub first_storey: Vec<usize>,
+    /// Element index of the storey under each floor (degree of freedom).
+    pub storey_under: Vec<usize>,
     /// The contact elements, link by link, floor pair by floor pair.
     pub contacts: Vec<ContactRef>,
 }
@@ -33,6 +35,7 @@ impl<'a> Model<'a> {
         let mut elements = Vec::new();
         let mut offsets = Vec::new();
         let mut first_storey = Vec::new();
+        let mut storey_under = Vec::new();
         for b in s.buildings() {
             let st = &b.structure;
             let (a0, a1) = st.rayleigh();
@@ -45,6 +48,7 @@ impl<'a> Model<'a> {
                 } else {
                     End::Dof(offset + j - 1)
                 };
+                storey_under.push(elements.len());
                 // Rayleigh damping on the initial stiffness (OpenSees' betaKinit).
                 elements.push(Element::storey(
                     offset + j,
@@ -80,6 +84,7 @@ impl<'a> Model<'a> {
             system: System::new(&dofs, elements, Ground::Record(s.record())),
             offsets,
             first_storey,
+            storey_under,
             contacts,
         }
     }

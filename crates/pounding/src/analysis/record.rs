@@ -35,15 +35,8 @@ pub(super) struct Peaks {
 impl Peaks {
     pub fn new(m: &Model) -> Self {
         let n = m.system.layout().dofs();
-        let mut storey = vec![0; n];
-        for (&offset, &first) in m.offsets.iter().zip(&m.first_storey) {
-            let next = m.offsets.iter().copied().find(|&o| o > offset).unwrap_or(n);
-            for (j, s) in storey[offset..next].iter_mut().enumerate() {
-                *s = first + j;
-            }
-        }
         Self {
-            storey,
+            storey: m.storey_under.clone(),
             displacement: vec![Peak::default(); n],
             acceleration: vec![Peak::default(); n],
             drift: vec![0.0; n],
@@ -156,7 +149,7 @@ impl Impacts {
     }
 
     /// Ends the record: impacts still going on at `t`, and every impact in order of touch.
-    pub fn finish(mut self, sys: &System, t: f64, y: &[f64]) -> Vec<Impact> {
+    pub fn finish(&mut self, sys: &System, t: f64, y: &[f64]) -> Vec<Impact> {
         for (k, c) in self.contacts.iter().enumerate() {
             let engaged = matches!(
                 &sys.elements()[c.element].kind,
@@ -167,8 +160,9 @@ impl Impacts {
                 self.impacts.push(Self::impact(c, tr, t, None, work));
             }
         }
-        self.impacts.sort_by(|a, b| a.time.total_cmp(&b.time));
-        self.impacts
+        let mut impacts = std::mem::take(&mut self.impacts);
+        impacts.sort_by(|a, b| a.time.total_cmp(&b.time));
+        impacts
     }
 }
 

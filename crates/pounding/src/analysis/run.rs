@@ -118,7 +118,7 @@ pub(super) fn run(
             }
         })
         .collect();
-    let impacts = std::mem::replace(&mut rec.impacts, Impacts::new(&model)).finish(sys, out.t, y);
+    let impacts = rec.impacts.finish(sys, out.t, y);
     let links = (0..s.links().len())
         .map(|li| {
             let mine = impacts.iter().filter(|i| i.link == li);
