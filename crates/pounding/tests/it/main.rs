@@ -4,6 +4,7 @@
 
 mod buildings;
 mod calibration;
+mod engine;
 mod exact_relations;
 mod ground_motion;
 mod inelastic;
