@@ -763,6 +763,40 @@ pub fn load_record(a: &RecordArgs) -> Result<Record, CliError> {
 
 /// Loads a built-in record called `source`, or the file at `source` in `format` (default: at2 for
 /// `*.at2`, time-acc otherwise), with values in `units` multiplied by `scale`.
+/// Largest record file read, bytes (1e7 samples at 25 characters each).
+pub const RECORD_FILE_LIMIT: u64 = 256 << 20;
+
+/// Largest scenario file read, bytes.
+pub const SCENARIO_FILE_LIMIT: u64 = 16 << 20;
+
+/// The text of a regular file of at most `limit` bytes; anything else (a FIFO or a device, which could block or
+/// never end; a file too large; text that is not UTF-8) is a one-line message naming `what`.
+pub fn read_text_file(path: &Path, what: &str, limit: u64) -> Result<String, String> {
+    use std::io::Read;
+    let shown = path.display();
+    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read {what} {shown}: {e}"))?;
+    if !meta.is_file() {
+        return Err(format!(
+            "cannot read {what} {shown}: not a regular file (a folder, device or pipe)"
+        ));
+    }
+    if meta.len() > limit {
+        return Err(format!(
+            "{what} {shown} has {} bytes; allowed: at most {} MiB",
+            meta.len(),
+            limit >> 20
+        ));
+    }
+    let mut text = String::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(limit + 1).read_to_string(&mut text))
+        .map_err(|e| format!("cannot read {what} {shown}: {e}"))?;
+    if text.len() as u64 > limit {
+        return Err(format!("{what} {shown} is larger than {} MiB", limit >> 20));
+    }
+    Ok(text)
+}
+
 pub fn load_record_from(
     source: &str,
     format: Option<FormatArg>,
@@ -776,12 +810,8 @@ pub fn load_record_from(
         Some(r) => r,
         None => {
             let path = Path::new(source);
-            let text = std::fs::read_to_string(path).map_err(|e| {
-                input(format!(
-                    "cannot read record file {}: {e} (built-in records: el-centro-1940)",
-                    path.display()
-                ))
-            })?;
+            let text = read_text_file(path, "record file", RECORD_FILE_LIMIT)
+                .map_err(|e| input(format!("{e} (built-in records: el-centro-1940)")))?;
             let is_at2 = path
                 .extension()
                 .is_some_and(|x| x.eq_ignore_ascii_case("at2"));

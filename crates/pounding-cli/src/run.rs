@@ -17,6 +17,7 @@ use std::path::Path;
 pub fn run(a: &RunArgs) -> Result<(), CliError> {
     let Loaded {
         mut scenario,
+        text,
         record_source,
         scale,
     } = load(&a.scenario)?;
@@ -51,6 +52,7 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
             b.set_position((1000.0 * p.t / p.duration) as u64);
             b.set_message(format!("{:.2} s, {} impacts", p.t, p.impacts));
         }
+        std::ops::ControlFlow::Continue(())
     });
     if let Some(b) = &bar {
         b.finish_and_clear();
@@ -59,11 +61,10 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
 
     let summary = summary_json(&scenario, &results, &a.scenario, &record_source, scale);
     // The scenario as run travels with the results (the report shows it).
-    let scenario_text = std::fs::read_to_string(&a.scenario)
-        .map_err(|e| input(format!("cannot read {}: {e}", a.scenario.display())))?;
+
     // Everything is formatted before the first file is written.
     let files = [
-        ("scenario.toml", scenario_text),
+        ("scenario.toml", text),
         (
             "summary.json",
             serde_json::to_string_pretty(&summary).expect("JSON") + "\n",

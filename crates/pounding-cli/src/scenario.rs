@@ -145,6 +145,8 @@ fn concrete_e() -> f64 {
 /// A loaded scenario, with what the report needs to say where it came from.
 pub struct Loaded {
     pub scenario: Scenario,
+    /// The scenario file's text, as read.
+    pub text: String,
     /// The ground-motion source as given (built-in name or path).
     pub record_source: String,
     pub scale: f64,
@@ -325,9 +327,12 @@ fn storey_laws(
 
 /// Reads and validates the scenario file at `path`.
 pub fn load(path: &Path) -> Result<Loaded, CliError> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        CliError::Input(format!("cannot read scenario file {}: {e}", path.display()))
-    })?;
+    let text = crate::commands::read_text_file(
+        path,
+        "scenario file",
+        crate::commands::SCENARIO_FILE_LIMIT,
+    )
+    .map_err(CliError::Input)?;
     let at = At { path, text: &text };
     let file: File = toml::from_str(&text).map_err(|e| {
         let msg = e.message().trim().replace('\n', " ");
@@ -399,11 +404,15 @@ pub fn load(path: &Path) -> Result<Loaded, CliError> {
     for b in file.building {
         let span = b.span();
         let b = b.into_inner();
-        if b.name.is_empty() || b.name.contains([',', '"', '\n', '|']) {
+        if b.name.is_empty()
+            || b.name.len() > 64
+            || b.name.contains([',', '"', '|'])
+            || b.name.chars().any(char::is_control)
+        {
             return Err(at.err(
                 span,
                 format!(
-                    "name = {:?} is not allowed: a non-empty name without commas, quotes or |",
+                    "name = {:?} is not allowed: 1 to 64 bytes, without commas, quotes, | or control characters",
                     b.name
                 ),
             ));
@@ -442,11 +451,11 @@ pub fn load(path: &Path) -> Result<Loaded, CliError> {
             scenario = scenario.with_min_impact_velocity(v).map_err(lib)?;
         }
     }
-    if scenario.output_samples() > 10_000_000 {
+    if scenario.output_samples() > pounding::limits::MAX_OUTPUT_SAMPLES {
         return Err(CliError::Input(format!(
-            "{}: duration / output_dt = {} output samples; allowed: at most 1e7 (raise output_dt)",
+            "{}: duration / output_dt = {:e} output samples; allowed: at most 1e7 (raise output_dt)",
             path.display(),
-            scenario.output_samples()
+            scenario.duration() / scenario.output_dt()
         )));
     }
 
@@ -525,6 +534,7 @@ pub fn load(path: &Path) -> Result<Loaded, CliError> {
             .map_err(lib)?;
     }
     Ok(Loaded {
+        text,
         record_source: source,
         scale: gm.scale,
         scenario,

@@ -693,3 +693,49 @@ fn inelastic_run_reports_ductility_residuals_and_hysteresis_consistently() {
     let energy = std::fs::read_to_string(out.join("energy.csv")).unwrap();
     assert!(energy.starts_with("time_s,input_J,kinetic_J,strain_J,structural_damping_J,hysteretic_J,contact_J,balance_error_J\n"));
 }
+
+#[test]
+fn devices_pipes_and_hostile_names_are_refused_without_blocking() {
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let dir = tmp("hostile");
+    // A record that never ends, a name with a carriage return, a floor pair given twice.
+    let cases = [
+        (
+            base.replace(
+                "record = \"el-centro-1940\"",
+                "file = \"/dev/zero\"\nformat = \"at2\"",
+            ),
+            "not a regular file",
+        ),
+        (
+            base.replacen("name = \"left\"", "name = \"le\\rft\"", 1),
+            "control characters",
+        ),
+        (
+            base.replace(
+                "stiffness = 2.0e9",
+                "stiffness = 2.0e9\nfloors = [[1, 1], [1, 1]]",
+            ),
+            "[1, 1] twice",
+        ),
+    ];
+    for (i, (text, needle)) in cases.iter().enumerate() {
+        let err = refused(&dir, i, text);
+        assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
+    }
+    // A named pipe as the scenario file: refused at once instead of blocking on the read.
+    let fifo = dir.join("pipe.toml");
+    let _ = std::fs::remove_file(&fifo);
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    if made.is_ok_and(|s| s.success()) {
+        let o = pounding(&[
+            "run",
+            fifo.to_str().unwrap(),
+            "--out",
+            dir.join("o").to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains("not a regular file"), "{err}");
+    }
+}

@@ -149,7 +149,10 @@ fn inelastic(c: &mut Criterion) {
     let s = mdof_pair("bilinear");
     let summary_only = RunOptions { histories: false };
     g.bench_function("mdof_pair/bilinear/summary_only", |b| {
-        b.iter(|| s.run_with_options(&summary_only, &mut |_| {}).unwrap())
+        b.iter(|| {
+            s.run_with_options(&summary_only, &mut |_| std::ops::ControlFlow::Continue(()))
+                .unwrap()
+        })
     });
     g.finish();
 }

@@ -57,6 +57,20 @@ pub enum Error {
         /// Impact velocity, m/s.
         v_i: f64,
     },
+    /// The analysis would take (or took) more integration steps than its budget.
+    #[error("the analysis needs more than {allowed:e} integration steps ({reason}); allowed: at most {allowed:e} (limits::MAX_WORK / the number of states)")]
+    StepBudget {
+        /// The budget, steps.
+        allowed: f64,
+        /// Why: the highest natural frequency, or the time reached.
+        reason: String,
+    },
+    /// The caller stopped the run (its progress callback asked to).
+    #[error("the run was cancelled at t = {t:e} s")]
+    Cancelled {
+        /// Time reached, s.
+        t: f64,
+    },
     /// Events kept firing without time advancing.
     #[error(
         "more than 1000 events at t = {t:e} s without time advancing (a phase that keeps changing)"

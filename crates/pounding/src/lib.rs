@@ -28,6 +28,7 @@ pub mod engine;
 pub mod ground_motion;
 pub mod impact;
 pub mod integrate;
+pub mod limits;
 pub mod paper;
 pub mod structure;
 

@@ -31,6 +31,7 @@ use crate::error::check;
 use crate::ground_motion::Record;
 use crate::structure::ShearBuilding;
 use crate::Error;
+use std::ops::ControlFlow;
 
 pub use run::Progress;
 
@@ -81,11 +82,11 @@ impl Scenario {
     /// A scenario with the buildings (left to right; at least one, unique names) under `record`, for the
     /// record's duration, output every 0.005 s, at [`DEFAULT_TOLERANCE`].
     pub fn new(buildings: Vec<Building>, record: Record) -> Result<Self, Error> {
-        if buildings.is_empty() {
+        if buildings.is_empty() || buildings.len() > crate::limits::MAX_BUILDINGS {
             return Err(Error::Choice {
                 name: "building",
-                value: "none".into(),
-                allowed: "at least one building".into(),
+                value: format!("{} buildings", buildings.len()),
+                allowed: "1 to 50 buildings (limits::MAX_BUILDINGS)".into(),
             });
         }
         for (i, b) in buildings.iter().enumerate() {
@@ -174,7 +175,14 @@ impl Scenario {
                         allowed: "at least one pair [floor of left, floor of right]".into(),
                     });
                 }
-                for &(i, j) in &f {
+                for (k, &(i, j)) in f.iter().enumerate() {
+                    if f[..k].contains(&(i, j)) {
+                        return Err(Error::Choice {
+                            name: "floors",
+                            value: format!("[{i}, {j}] twice"),
+                            allowed: "each pair of floors once (two elements on one pair would double its contact)".into(),
+                        });
+                    }
                     if !(1..=sl.storeys()).contains(&i) || !(1..=sr.storeys()).contains(&j) {
                         return Err(Error::Choice {
                             name: "floors",
@@ -296,25 +304,39 @@ impl Scenario {
         self.tolerance
     }
     /// Number of output samples in the histories.
+    /// (Saturates at `usize::MAX` instead of wrapping: compare with [`crate::limits::MAX_OUTPUT_SAMPLES`].)
     pub fn output_samples(&self) -> usize {
-        (self.duration / self.output_dt * (1.0 + 1e-12)).floor() as usize + 1
+        let n = (self.duration / self.output_dt * (1.0 + 1e-12)).floor() + 1.0;
+        if n < 1e15 {
+            n as usize
+        } else {
+            usize::MAX
+        }
     }
 
     /// Runs the analysis, keeping the histories.
     pub fn run(&self) -> Result<Results, Error> {
-        run::run(self, &RunOptions::default(), &mut |_| {})
+        run::run(self, &RunOptions::default(), &mut |_| {
+            ControlFlow::Continue(())
+        })
     }
 
-    /// Runs the analysis, telling `progress` how far it has got (for progress bars).
-    pub fn run_with(&self, progress: &mut dyn FnMut(Progress)) -> Result<Results, Error> {
+    /// Runs the analysis, telling `progress` how far it has got (for progress bars); `progress` returns
+    /// `ControlFlow::Break(())` to cancel the run ([`Error::Cancelled`]).
+    pub fn run_with(
+        &self,
+        progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+    ) -> Result<Results, Error> {
         run::run(self, &RunOptions::default(), progress)
     }
 
-    /// Runs the analysis with `options` (for example without histories, for studies of many runs).
+    /// Runs the analysis with `options` (for example without histories, for studies of many runs). Every run
+    /// has a step budget ([`crate::limits::step_budget`]): a run that would exceed it is refused before it
+    /// starts, or stopped, with [`Error::StepBudget`].
     pub fn run_with_options(
         &self,
         options: &RunOptions,
-        progress: &mut dyn FnMut(Progress),
+        progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
     ) -> Result<Results, Error> {
         run::run(self, options, progress)
     }

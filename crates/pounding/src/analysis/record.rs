@@ -5,6 +5,7 @@ use super::model::{ContactRef, Model};
 use super::{Histories, Impact, Progress};
 use crate::element::{ContactPiece, Event, Kind};
 use crate::engine::{hermite_peak, EventInfo, Hermite, Observer, PeakTracker, Segment, System};
+use std::ops::ControlFlow;
 
 /// A largest value and its time, s.
 #[derive(Clone, Copy, Debug, Default)]
@@ -371,7 +372,8 @@ pub(super) struct Recorders<'p> {
     pub impacts: Impacts,
     pub balance: Balance,
     pub histories: Option<HistoryRecorder>,
-    pub progress: &'p mut dyn FnMut(Progress),
+    pub progress: &'p mut dyn FnMut(Progress) -> ControlFlow<()>,
+    cancelled: bool,
     pub t_end: f64,
     last_report: f64,
 }
@@ -381,7 +383,7 @@ impl<'p> Recorders<'p> {
         peaks: Peaks,
         impacts: Impacts,
         histories: Option<HistoryRecorder>,
-        progress: &'p mut dyn FnMut(Progress),
+        progress: &'p mut dyn FnMut(Progress) -> ControlFlow<()>,
         t_end: f64,
     ) -> Self {
         Self {
@@ -390,6 +392,7 @@ impl<'p> Recorders<'p> {
             balance: Balance::default(),
             histories,
             progress,
+            cancelled: false,
             t_end,
             last_report: f64::NEG_INFINITY,
         }
@@ -406,16 +409,21 @@ impl Observer for Recorders<'_> {
         }
         if seg.t1 - self.last_report >= 0.005 * self.t_end || seg.t1 >= self.t_end {
             self.last_report = seg.t1;
-            (self.progress)(Progress {
+            let flow = (self.progress)(Progress {
                 t: seg.t1,
                 duration: self.t_end,
                 impacts: self.impacts.count(),
             });
+            self.cancelled = flow.is_break();
         }
     }
 
     fn event(&mut self, ev: &EventInfo<'_, '_>) {
         self.peaks.event(ev);
         self.impacts.event(ev);
+    }
+
+    fn cancelled(&self) -> bool {
+        self.cancelled
     }
 }

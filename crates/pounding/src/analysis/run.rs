@@ -8,6 +8,7 @@ use super::{
 use crate::element::Kind;
 use crate::engine::{self, Settings};
 use crate::Error;
+use std::ops::ControlFlow;
 
 /// How far a run has got, for progress reports.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,8 +24,15 @@ pub struct Progress {
 pub(super) fn run(
     s: &Scenario,
     opts: &RunOptions,
-    progress: &mut dyn FnMut(Progress),
+    progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
 ) -> Result<Results, Error> {
+    if opts.histories && s.output_samples() > crate::limits::MAX_OUTPUT_SAMPLES {
+        return Err(Error::Parameter {
+            name: "output_dt",
+            value: s.output_dt(),
+            allowed: "at most 1e7 output samples over the duration (limits::MAX_OUTPUT_SAMPLES; raise output_dt)",
+        });
+    }
     let mut model = Model::new(s);
     let (atol, h0) = model.tolerances(s, s.tolerance());
     let t_end = s.duration();
@@ -52,12 +60,30 @@ pub(super) fn run(
         t_end,
     );
     let dim = model.system.layout().dim();
+    // The work is bounded before the run: an explicit step resolves the highest natural frequency, so a run
+    // needs at least about w_max t_end / 3 steps (Dormand–Prince is stable to h w of about 3.3).
+    let budget = crate::limits::step_budget(dim);
+    let w_max = s
+        .buildings()
+        .iter()
+        .flat_map(|b| b.structure.modes().omega.iter().copied())
+        .fold(0.0, f64::max);
+    if w_max * t_end / 3.0 > budget as f64 {
+        return Err(Error::StepBudget {
+            allowed: budget as f64,
+            reason: format!(
+                "the highest natural frequency, {:e} Hz, needs about {:e} steps over {t_end:e} s: check the masses and stiffnesses",
+                w_max / (2.0 * std::f64::consts::PI),
+                w_max * t_end / 3.0
+            ),
+        });
+    }
     let settings = Settings {
         t_end,
         rtol: s.tolerance(),
         atol,
         h0,
-        max_steps: usize::MAX,
+        max_steps: budget,
     };
     let out = engine::run(
         &mut model.system,
@@ -65,6 +91,19 @@ pub(super) fn run(
         &settings,
         &mut rec,
     )?;
+    match out.ending {
+        engine::Ending::StepBudget => {
+            return Err(Error::StepBudget {
+                allowed: budget as f64,
+                reason: format!(
+                    "it had reached t = {:e} s of {t_end:e} s, with {} events: impacts or yielding too stiff or too frequent to resolve",
+                    out.t, out.events
+                ),
+            })
+        }
+        engine::Ending::Cancelled => return Err(Error::Cancelled { t: out.t }),
+        engine::Ending::Time | engine::Ending::Stopped => {}
+    }
     let sys = &model.system;
     let y = &out.y;
     let l = sys.layout();

@@ -29,6 +29,8 @@ pub enum Ending {
     Stopped,
     /// It took the largest number of steps allowed.
     StepBudget,
+    /// An observer asked to stop.
+    Cancelled,
 }
 
 /// The end of a run.
@@ -200,6 +202,10 @@ pub fn run(
         t0 = te;
         if dp.counts().0 >= settings.max_steps {
             ending = Ending::StepBudget;
+            break;
+        }
+        if observer.cancelled() {
+            ending = Ending::Cancelled;
             break;
         }
     }

@@ -45,6 +45,10 @@ pub trait Observer {
     fn segment(&mut self, seg: &Segment<'_, '_>);
     /// An event, applied at the end of the segment just observed.
     fn event(&mut self, _ev: &EventInfo<'_, '_>) {}
+    /// Whether the run should stop here (asked after every segment; a cancelled run).
+    fn cancelled(&self) -> bool {
+        false
+    }
 }
 
 impl Observer for () {

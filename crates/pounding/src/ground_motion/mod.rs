@@ -89,11 +89,11 @@ impl Record {
     pub fn new(name: impl Into<String>, dt: f64, t0: f64, acc: Vec<f64>) -> Result<Self, Error> {
         check("dt", dt, dt > 0.0, "dt > 0 (s)")?;
         check("t0", t0, t0 >= 0.0, "t0 >= 0 (s)")?;
-        if acc.is_empty() {
+        if acc.is_empty() || acc.len() > crate::limits::MAX_RECORD_SAMPLES {
             return Err(Error::Parameter {
                 name: "npts",
-                value: 0.0,
-                allowed: "at least one acceleration value",
+                value: acc.len() as f64,
+                allowed: "1 to 1e7 acceleration values (limits::MAX_RECORD_SAMPLES)",
             });
         }
         if let Some(bad) = acc.iter().find(|a| !a.is_finite()) {

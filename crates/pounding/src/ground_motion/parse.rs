@@ -79,7 +79,8 @@ pub fn at2(text: &str) -> Result<(f64, Vec<f64>), ParseError> {
         ));
     }
     let npts = npts as usize;
-    let mut values = Vec::with_capacity(npts);
+    // Reserve what the file can hold (at least two characters a value), not what its header claims.
+    let mut values = Vec::with_capacity(npts.min(text.len() / 2 + 1));
     'lines: for (i, l) in lines.iter().enumerate().skip(hline + 1) {
         for tok in l.split_whitespace() {
             match tok.parse::<f64>() {

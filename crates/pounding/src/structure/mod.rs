@@ -85,11 +85,11 @@ impl ShearBuilding {
         heights: Vec<f64>,
         damping_ratio: f64,
     ) -> Result<Self, Error> {
-        if masses.is_empty() {
+        if masses.is_empty() || masses.len() > crate::limits::MAX_STOREYS {
             return Err(Error::Parameter {
                 name: "masses",
-                value: 0.0,
-                allowed: "at least one floor mass (kg)",
+                value: masses.len() as f64,
+                allowed: "1 to 200 floor masses (kg), one per storey (limits::MAX_STOREYS)",
             });
         }
         for (name, list) in [("stiffnesses", &stiffnesses), ("heights", &heights)] {
@@ -108,7 +108,12 @@ impl ShearBuilding {
             check("stiffness", k, k > 0.0, "storey stiffnesses > 0 (N/m)")?;
         }
         for &h in &heights {
-            check("height", h, h > 0.0, "storey heights > 0 (m)")?;
+            check(
+                "height",
+                h,
+                (1e-3..=1e4).contains(&h),
+                "storey heights from 1e-3 to 1e4 m",
+            )?;
         }
         check(
             "damping_ratio",
@@ -124,6 +129,20 @@ impl ShearBuilding {
             2.0 * damping_ratio * w1 * w2 / (w1 + w2),
             2.0 * damping_ratio / (w1 + w2),
         );
+        // Masses and stiffnesses whose ratios leave the range of f64 give modes that are not numbers.
+        let finite = |x: &f64| x.is_finite();
+        if !(w.iter().all(|w| w.is_finite() && *w > 0.0)
+            && modes.shapes.iter().flatten().all(finite)
+            && modes.shapes_roof_normalised().iter().flatten().all(finite)
+            && finite(&rayleigh.0)
+            && finite(&rayleigh.1))
+        {
+            return Err(Error::Parameter {
+                name: "stiffnesses",
+                value: stiffnesses.iter().fold(f64::INFINITY, |a, k| a.min(*k)),
+                allowed: "stiffnesses and masses whose natural frequencies and mode shapes are finite numbers (k / m from about 1e-250 to 1e250 1/s^2)",
+            });
+        }
         Ok(Self {
             masses,
             stiffnesses,

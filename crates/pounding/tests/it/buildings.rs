@@ -179,13 +179,7 @@ fn isolated_impact(contact: &ContactModel) -> (Results, f64) {
     .unwrap()
     .with_tolerance(1e-10)
     .unwrap();
-    let r = s
-        .run_with(&mut |p| {
-            if std::env::var("DBG").is_ok() {
-                eprintln!("{p:?}")
-            }
-        })
-        .unwrap();
+    let r = s.run().unwrap();
     let imp = &r.impacts[0];
     // Largest storey-spring acceleration difference during the run times the contact duration.
     let u_max = r

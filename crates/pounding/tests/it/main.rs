@@ -10,6 +10,7 @@ mod ground_motion;
 mod inelastic;
 mod integrated;
 mod paper;
+mod reliability;
 
 use pounding::contact::{ContactModel, Damping, ForceLaw, Model, Tension};
 use pounding::impact::{simulate, ImpactOptions, ImpactResult, ImpactSetup};

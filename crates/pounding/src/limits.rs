@@ -1,0 +1,25 @@
+//! Sizes the library accepts, checked before anything is allocated or solved, so that no input can make a
+//! run abort on memory or crawl through an eigen-analysis (`docs/reliability.md`).
+
+/// Largest number of storeys of one building. Modes take about 0.1 s at this size; taller shear-building
+/// models are outside what the lumped shear model is used for.
+pub const MAX_STOREYS: usize = 200;
+
+/// Largest number of buildings in a row.
+pub const MAX_BUILDINGS: usize = 50;
+
+/// Largest number of samples of a ground-motion record (80 MB of accelerations).
+pub const MAX_RECORD_SAMPLES: usize = 10_000_000;
+
+/// Largest number of output samples of a run's histories.
+pub const MAX_OUTPUT_SAMPLES: usize = 10_000_000;
+
+/// Largest work of one analysis, in integration steps times state components: about 20 s on one core. The
+/// step budget of a run is this divided by its number of states (at least 1e5 steps), checked before the run
+/// from its highest natural frequency and during the run step by step.
+pub const MAX_WORK: f64 = 5e8;
+
+/// The step budget of a system of `dim` state components.
+pub fn step_budget(dim: usize) -> usize {
+    (MAX_WORK / dim.max(1) as f64).max(1e5) as usize
+}
