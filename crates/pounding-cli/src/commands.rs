@@ -859,6 +859,12 @@ pub fn load_record_from(
 fn record_info(a: &RecordArgs) -> Result<(), CliError> {
     let r = load_record(a)?;
     let p = r.peaks();
+    if ![p.pga, p.pgv, p.pgd].iter().all(|x| x.is_finite()) {
+        return Err(input(format!(
+            "record {}: its peak velocity or displacement is not a finite number (accelerations and duration too large)",
+            r.name()
+        )));
+    }
     let g = pounding::impact::STANDARD_GRAVITY;
     let mut rep = Report::default();
     rep.add("record", r.name(), "")

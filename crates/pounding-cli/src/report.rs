@@ -380,11 +380,14 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 .map(|p| format!("{}-{}", p[0], p[1]))
                 .collect();
             let param = match &c["damping_parameter"] {
-                Value::Object(p) => format!(
+                Value::Object(p) if p.contains_key("value") => format!(
                     "{} = {}",
                     e(p.get("name").and_then(Value::as_str).unwrap_or("")),
                     p.get("value").map_or("–".into(), n)
                 ),
+                Value::Object(p) if p.get("name").and_then(Value::as_str) == Some("none") => {
+                    "none (elastic)".into()
+                }
                 _ => "set per impact".into(),
             };
             vec![

@@ -59,7 +59,24 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     }
     let results = results.map_err(|e| CliError::Input(format!("analysis failed: {e}")))?;
 
-    let summary = summary_json(&scenario, &results, &a.scenario, &record_source, scale);
+    let mut summary = summary_json(&scenario, &results, &a.scenario, &record_source, scale);
+    // Accuracy that holds itself to account: a balance error above 1e-4 is said on stderr and in the summary.
+    let mut warnings = Vec::new();
+    if results.energy.relative_error > BALANCE_WARNING {
+        warnings.push(format!(
+            "energy balance error {:.2e} is above 1e-4: the integration is not as accurate as the tolerance asks; rerun with a smaller --tolerance",
+            results.energy.relative_error
+        ));
+    }
+    for w in &warnings {
+        eprintln!("warning: {w}");
+    }
+    summary["warnings"] = json!(warnings);
+    if let Some(path) = first_null(&summary, "summary") {
+        return Err(input(format!(
+            "the result {path} is not a finite number: the scenario's scales leave the range of floating-point numbers"
+        )));
+    }
     // The scenario as run travels with the results (the report shows it).
 
     // Everything is formatted before the first file is written.
@@ -354,7 +371,11 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
                 "e": num(spec.restitution()),
                 "stiffness": num(spec.stiffness()),
                 "exponent": num(spec.exponent()),
-                "damping_parameter": param.map(|(n, v)| json!({ "name": n, "value": num(v) })),
+                "damping_parameter": match (link.contact.parameter(), param) {
+                    (None, _) => json!({ "name": "per-impact" }),
+                    (Some(_), None) => json!({ "name": "none" }),
+                    (Some(_), Some((n, v))) => json!({ "name": n, "value": num(v) }),
+                },
                 "impacts": lr.impacts,
                 "peak_force": num(lr.peak_force),
                 "max_penetration": num(lr.max_penetration),
@@ -401,9 +422,28 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
             "hysteretic_energy": "J", "gap": "m", "stiffness": "N/m^exponent",
             "peak_force": "N", "max_penetration": "m", "dissipated_energy": "J", "energy": "J",
             "energy_balance_error": "max |input - kinetic - strain - damping - hysteretic - contact| / max energy",
+            "warnings": "what the run says about its own accuracy (an energy balance error above 1e-4)",
             "duration": "s", "output_dt": "s", "record.dt": "s", "record.pga": "m/s^2",
         },
     })
+}
+
+/// Largest energy balance error accepted without a warning.
+const BALANCE_WARNING: f64 = 1e-4;
+
+/// The path of the first `null` in `v` (JSON has no NaN or infinity: `num` writes them as null).
+fn first_null(v: &Value, path: &str) -> Option<String> {
+    match v {
+        Value::Null => Some(path.to_string()),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(i, x)| first_null(x, &format!("{path}[{i}]"))),
+        Value::Object(o) => o
+            .iter()
+            .find_map(|(k, x)| first_null(x, &format!("{path}.{k}"))),
+        _ => None,
+    }
 }
 
 fn nums(xs: &[f64]) -> Vec<Value> {

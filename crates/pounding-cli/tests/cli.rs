@@ -739,3 +739,48 @@ fn devices_pipes_and_hostile_names_are_refused_without_blocking() {
         assert!(err.contains("not a regular file"), "{err}");
     }
 }
+
+#[test]
+fn a_run_says_when_its_energy_balance_is_poor_and_never_writes_null() {
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let dir = tmp("warnings");
+    // The loosest tolerance allowed: the balance error is about 6e-3, said on stderr and in the summary.
+    let loose = dir.join("loose.toml");
+    std::fs::write(
+        &loose,
+        base.replace("[analysis]", "[analysis]\ntolerance = 1e-3"),
+    )
+    .unwrap();
+    let o = pounding(&[
+        "run",
+        loose.to_str().unwrap(),
+        "--out",
+        dir.join("o1").to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(o.status.success());
+    let s: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(f(&s, "energy_balance_error") > 1e-4);
+    assert_eq!(s["warnings"].as_array().unwrap().len(), 1);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("warning: energy balance error"));
+    // An elastic contact (no damping parameter) and the default tolerance: no warning, no null anywhere.
+    let hooke = dir.join("hooke.toml");
+    std::fs::write(
+        &hooke,
+        base.replace("model = \"papi\"", "model = \"hooke\""),
+    )
+    .unwrap();
+    let o = pounding(&[
+        "run",
+        hooke.to_str().unwrap(),
+        "--out",
+        dir.join("o2").to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(!text.contains("null"), "{text}");
+    let s: Value = serde_json::from_str(&text).unwrap();
+    assert!(s["warnings"].as_array().unwrap().is_empty());
+    assert_eq!(s["contacts"][0]["damping_parameter"]["name"], "none");
+}

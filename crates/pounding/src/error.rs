@@ -71,6 +71,12 @@ pub enum Error {
         /// Time reached, s.
         t: f64,
     },
+    /// A result is not a finite number (the scenario's scales leave the range of `f64`).
+    #[error("the result {what} is not a finite number: the scenario's scales leave the range of floating-point numbers")]
+    NotFinite {
+        /// Which result.
+        what: String,
+    },
     /// Events kept firing without time advancing.
     #[error(
         "more than 1000 events at t = {t:e} s without time advancing (a phase that keeps changing)"

@@ -23,3 +23,13 @@ pub const MAX_WORK: f64 = 5e8;
 pub fn step_budget(dim: usize) -> usize {
     (MAX_WORK / dim.max(1) as f64).max(1e5) as usize
 }
+
+/// Largest |ground acceleration|, m/s^2 (about 1e4 g): beyond any earthquake, and far from where the energies
+/// of a run leave the range of `f64`.
+pub const MAX_GROUND_ACCELERATION: f64 = 1e5;
+
+/// Smallest time step of a record, s.
+pub const MIN_RECORD_DT: f64 = 1e-5;
+
+/// Largest time step of a record, s.
+pub const MAX_RECORD_DT: f64 = 10.0;

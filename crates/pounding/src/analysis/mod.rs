@@ -474,6 +474,63 @@ pub struct Statistics {
     pub events: usize,
 }
 
+impl Results {
+    /// The first quantity that is not a finite number (its name), if any: a run returns
+    /// [`Error::NotFinite`] rather than such a result.
+    pub fn first_non_finite(&self) -> Option<String> {
+        let bad = |xs: &[f64]| xs.iter().any(|x| !x.is_finite());
+        for (b, r) in self.buildings.iter().enumerate() {
+            for (name, xs) in [
+                ("peak_displacement", &r.peak_displacement),
+                ("peak_drift", &r.peak_drift),
+                ("peak_absolute_acceleration", &r.peak_absolute_acceleration),
+                ("peak_storey_shear", &r.peak_storey_shear),
+                ("residual_drift", &r.residual_drift),
+                ("hysteretic_energy", &r.hysteretic_energy),
+            ] {
+                if bad(xs) {
+                    return Some(format!("{name} of building {}", b + 1));
+                }
+            }
+        }
+        let e = &self.energy;
+        if bad(&[
+            e.input,
+            e.kinetic,
+            e.strain,
+            e.damping,
+            e.hysteretic,
+            e.contact,
+        ]) {
+            return Some("energy".into());
+        }
+        if self.impacts.iter().any(|i| {
+            bad(&[
+                i.v_i,
+                i.peak_force,
+                i.max_penetration,
+                i.duration,
+                i.dissipated_energy,
+            ]) || i.e_post.is_some_and(|x| !x.is_finite())
+        }) {
+            return Some("impacts".into());
+        }
+        let h = &self.histories;
+        let groups = [
+            &h.displacement,
+            &h.absolute_acceleration,
+            &h.storey_shear,
+            &h.force,
+        ];
+        if groups.iter().any(|g| g.iter().flatten().any(|c| bad(c)))
+            || h.energy.iter().any(|c| bad(c))
+        {
+            return Some("histories".into());
+        }
+        None
+    }
+}
+
 /// Everything a run produces.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Results {

@@ -176,7 +176,7 @@ pub(super) fn run(
         .collect();
     let e = sys.energies(y);
     let balance = &rec.balance;
-    Ok(Results {
+    let results = Results {
         buildings,
         links,
         impacts,
@@ -199,5 +199,9 @@ pub(super) fn run(
             rejected: out.rejected,
             events: out.events,
         },
-    })
+    };
+    match results.first_non_finite() {
+        Some(what) => Err(Error::NotFinite { what }),
+        None => Ok(results),
+    }
 }

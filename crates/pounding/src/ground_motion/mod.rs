@@ -87,8 +87,13 @@ impl Record {
     /// A record named `name` with time step `dt` (s, > 0), first sample time `t0` (s, >= 0) and accelerations
     /// in m/s^2 (at least one, all finite).
     pub fn new(name: impl Into<String>, dt: f64, t0: f64, acc: Vec<f64>) -> Result<Self, Error> {
-        check("dt", dt, dt > 0.0, "dt > 0 (s)")?;
-        check("t0", t0, t0 >= 0.0, "t0 >= 0 (s)")?;
+        check(
+            "dt",
+            dt,
+            (crate::limits::MIN_RECORD_DT..=crate::limits::MAX_RECORD_DT).contains(&dt),
+            "1e-5 <= dt <= 10 (s)",
+        )?;
+        check("t0", t0, (0.0..=1e4).contains(&t0), "0 <= t0 <= 1e4 (s)")?;
         if acc.is_empty() || acc.len() > crate::limits::MAX_RECORD_SAMPLES {
             return Err(Error::Parameter {
                 name: "npts",
@@ -96,11 +101,14 @@ impl Record {
                 allowed: "1 to 1e7 acceleration values (limits::MAX_RECORD_SAMPLES)",
             });
         }
-        if let Some(bad) = acc.iter().find(|a| !a.is_finite()) {
+        if let Some(bad) = acc
+            .iter()
+            .find(|a| !(a.abs() <= crate::limits::MAX_GROUND_ACCELERATION))
+        {
             return Err(Error::Parameter {
                 name: "acceleration",
                 value: *bad,
-                allowed: "finite values (m/s^2)",
+                allowed: "finite values of at most 1e5 m/s^2 (about 1e4 g) in magnitude",
             });
         }
         Ok(Self {
@@ -157,7 +165,13 @@ impl Record {
 
     /// The same record with accelerations multiplied by `scale` (finite).
     pub fn scaled(mut self, scale: f64) -> Result<Self, Error> {
-        check("scale", scale, true, "a finite scale factor")?;
+        let peak = self.acc.iter().fold(0.0f64, |m, a| m.max(a.abs()));
+        check(
+            "scale",
+            scale,
+            (peak * scale).abs() <= crate::limits::MAX_GROUND_ACCELERATION,
+            "a finite scale that keeps the peak acceleration at most 1e5 m/s^2",
+        )?;
         self.acc.iter_mut().for_each(|a| *a *= scale);
         Ok(self)
     }

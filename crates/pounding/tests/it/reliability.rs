@@ -109,3 +109,38 @@ fn duplicate_floor_pairs_are_refused() {
     let r = pair(7.8957e7, 5.0e5).with_link("L", "R", 0.02, &c, Some(vec![(1, 1), (1, 1)]));
     assert!(matches!(r, Err(Error::Choice { name: "floors", .. })));
 }
+
+#[test]
+fn a_gap_never_closed_does_not_loosen_the_error_control() {
+    // It used to scale every floor's absolute tolerance: gap 1e10 m gave a balance error of 0.37.
+    let c = ContactModel::new(Model::Papi, 2e9, 0.65).unwrap();
+    for gap in [0.02, 1e5, 1e10] {
+        let r = pair(7.8957e7, 5.0e5)
+            .with_link("L", "R", gap, &c, None)
+            .unwrap()
+            .run()
+            .unwrap();
+        assert!(
+            r.energy.relative_error < 1e-5,
+            "gap {gap}: {}",
+            r.energy.relative_error
+        );
+    }
+}
+
+#[test]
+fn records_beyond_physical_ranges_are_refused() {
+    assert!(matches!(
+        Record::new("r", 1e-15, 0.0, vec![1.0; 10]),
+        Err(Error::Parameter { name: "dt", .. })
+    ));
+    assert!(matches!(
+        Record::new("r", 1e300, 0.0, vec![1.0; 10]),
+        Err(Error::Parameter { name: "dt", .. })
+    ));
+    assert!(matches!(
+        Record::el_centro_1940().scaled(1e30),
+        Err(Error::Parameter { name: "scale", .. })
+    ));
+    assert!(Record::new("r", 0.01, 0.0, vec![2e5]).is_err());
+}
