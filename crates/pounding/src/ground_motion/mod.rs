@@ -103,7 +103,7 @@ impl Record {
         }
         if let Some(bad) = acc
             .iter()
-            .find(|a| !(a.abs() <= crate::limits::MAX_GROUND_ACCELERATION))
+            .find(|a| !a.is_finite() || a.abs() > crate::limits::MAX_GROUND_ACCELERATION)
         {
             return Err(Error::Parameter {
                 name: "acceleration",
