@@ -3,6 +3,7 @@
 mod args;
 mod commands;
 mod output;
+mod output_set;
 mod plot;
 mod report;
 mod run;

@@ -32,6 +32,8 @@ pub fn command(a: &ReportArgs) -> Result<(), CliError> {
             out.display()
         )));
     }
+    crate::output_set::verify(&a.dir)
+        .map_err(|m| CliError::Input(format!("{}: {m}", a.dir.display())))?;
     let data = RunData::load(&a.dir)?;
     let figs = crate::plot::figures::run(&data);
     let name = write(&data, &figs, &out)?;

@@ -3,7 +3,7 @@
 
 use crate::args::RunArgs;
 use crate::commands::{contact_label, input};
-use crate::output::{fmt_num, fmt_sig, num, write_atomic, write_figures};
+use crate::output::{fmt_num, fmt_sig, num, write_figures};
 use crate::run_data::RunData;
 use crate::scenario::{load, Loaded};
 use crate::CliError;
@@ -26,12 +26,8 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
             .with_tolerance(t)
             .map_err(|e| crate::commands::Style::Flag.error(e))?;
     }
-    if a.out.is_file() {
-        return Err(input(format!(
-            "--out {} is a file; give a folder (it is created if missing)",
-            a.out.display()
-        )));
-    }
+    // The output folder must be new, empty or an earlier run's, checked before any work.
+    crate::output_set::OutputSet::check(&a.out)?;
     if !a.json {
         print_setup(&scenario, &a.scenario, &record_source, scale);
     }
@@ -90,29 +86,28 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         ("impacts.csv", impacts_csv(&scenario, &results)),
         ("energy.csv", energy_csv(&results)),
     ];
-    std::fs::create_dir_all(&a.out)
-        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
+    // The whole set is written into a folder beside --out and appears there in one rename.
+    let mut set = crate::output_set::OutputSet::begin(&a.out)?;
     for (name, text) in &files {
-        let p = a.out.join(name);
-        write_atomic(&p, text.as_bytes())
-            .map_err(|e| CliError::Io(format!("cannot write {}: {e}", p.display())))?;
+        set.write_data(name, text.as_bytes())?;
     }
     let mut written: Vec<String> = files.iter().map(|f| f.0.to_string()).collect();
     if a.plots || a.report {
         // Figures and report are made from the files just written, exactly as `pounding report` makes them.
-        let data = RunData::load(&a.out)?;
+        let data = RunData::load(set.dir())?;
         let figs = crate::plot::figures::run(&data);
         if a.plots {
-            written.extend(write_figures(&a.out, &figs, a.png)?);
+            written.extend(write_figures(set.dir(), &figs, a.png)?);
         }
         if a.report {
             written.push(crate::report::write(
                 &data,
                 &figs,
-                &a.out.join("report.html"),
+                &set.dir().join("report.html"),
             )?);
         }
     }
+    set.commit()?;
     if a.json {
         println!("{}", serde_json::to_string_pretty(&summary).expect("JSON"));
     } else {

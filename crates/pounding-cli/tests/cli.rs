@@ -784,3 +784,67 @@ fn a_run_says_when_its_energy_balance_is_poor_and_never_writes_null() {
     assert!(s["warnings"].as_array().unwrap().is_empty());
     assert_eq!(s["contacts"][0]["damping_parameter"]["name"], "none");
 }
+
+#[test]
+fn output_sets_appear_whole_replace_only_runs_and_report_refuses_mixes() {
+    let dir = tmp("sets");
+    let out = dir.join("out");
+    let run = |out: &std::path::Path, ex: &str| {
+        pounding(&[
+            "run",
+            &example(ex),
+            "--out",
+            out.to_str().unwrap(),
+            "--quiet",
+            "--json",
+        ])
+    };
+    assert!(run(&out, "two-sdof.toml").status.success());
+    let names = |d: &std::path::Path| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    };
+    assert_eq!(
+        names(&out),
+        [
+            ".pounding-run",
+            "energy.csv",
+            "impacts.csv",
+            "response.csv",
+            "scenario.toml",
+            "summary.json"
+        ]
+    );
+    // A second run replaces the first as a whole; nothing temporary is left beside or inside.
+    assert!(run(&out, "three-vs-eight-storey.toml").status.success());
+    assert!(std::fs::read_to_string(out.join("summary.json"))
+        .unwrap()
+        .contains("8-storey"));
+    assert_eq!(names(&dir), ["out"]);
+    // Mixing files of two runs is refused by `report`.
+    let other = dir.join("other");
+    assert!(run(&other, "two-sdof.toml").status.success());
+    std::fs::copy(other.join("response.csv"), out.join("response.csv")).unwrap();
+    let o = pounding(&["report", out.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("response.csv is not the file this run wrote"),
+        "{err}"
+    );
+    // A folder a run did not write is never replaced.
+    let mine = dir.join("mine");
+    std::fs::create_dir_all(&mine).unwrap();
+    std::fs::write(mine.join("notes.txt"), "keep me").unwrap();
+    let o = run(&mine, "two-sdof.toml");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("not the output folder of an earlier run"));
+    assert_eq!(names(&mine), ["notes.txt"]);
+    // A 250-byte folder name works: no temporary name is longer than it.
+    let long = dir.join("x".repeat(250));
+    assert!(run(&long, "two-sdof.toml").status.success());
+}

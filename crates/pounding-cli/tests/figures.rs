@@ -797,7 +797,11 @@ fn figure_options_fail_cleanly() {
             "is a file",
         ),
         (vec!["report", missing.to_str().unwrap()], "not a folder"),
-        (vec!["report", dir.to_str().unwrap()], "summary.json"),
+        // A folder no run wrote (no marker): refused before anything is read.
+        (
+            vec!["report", dir.to_str().unwrap()],
+            "not an output folder of `pounding run`",
+        ),
         (
             vec!["compare", "--models", "papi,nope", "--e", "0.5"],
             "nope",
