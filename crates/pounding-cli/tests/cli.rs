@@ -848,3 +848,111 @@ fn output_sets_appear_whole_replace_only_runs_and_report_refuses_mixes() {
     let long = dir.join("x".repeat(250));
     assert!(run(&long, "two-sdof.toml").status.success());
 }
+
+/// Runs `pounding` with `args`, killing it after `limit` s: `None` if it had to be killed.
+fn pounding_within(args: &[&str], limit: f64) -> Option<Output> {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed().as_secs_f64() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            return None;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    Some(child.wait_with_output().unwrap())
+}
+
+#[test]
+fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
+    // Bounded fuzzing of the scenario loader and of whole runs: lines of the examples deleted, duplicated or
+    // given extreme values, from a fixed seed (POUNDING_FUZZ_CASES=N for a longer campaign).
+    let cases: usize = std::env::var("POUNDING_FUZZ_CASES")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(24);
+    let extremes = [
+        "0",
+        "-1",
+        "0.0",
+        "1e308",
+        "-1e308",
+        "5e-324",
+        "nan",
+        "inf",
+        "1e30",
+        "1e-30",
+        "\"x\"",
+        "[]",
+        "[0.0]",
+        "[1e300, 1e-300]",
+        "\"\\r\"",
+    ];
+    let texts: Vec<String> = ["two-sdof.toml", "three-vs-eight-inelastic.toml"]
+        .iter()
+        .map(|e| std::fs::read_to_string(example(e)).unwrap())
+        .collect();
+    let dir = tmp("fuzz");
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut next = |n: usize| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((seed >> 33) as usize) % n
+    };
+    for i in 0..cases {
+        let mut lines: Vec<String> = texts[i % 2].lines().map(String::from).collect();
+        for _ in 0..1 + next(3) {
+            let k = next(lines.len());
+            match next(3) {
+                0 => {
+                    lines.remove(k);
+                }
+                1 => {
+                    let l = lines[k].clone();
+                    lines.insert(k, l);
+                }
+                _ => {
+                    if let Some((key, _)) = lines[k].split_once('=') {
+                        lines[k] = format!("{key}= {}", extremes[next(extremes.len())]);
+                    }
+                }
+            }
+        }
+        let text = lines.join("\n");
+        let file = dir.join(format!("m{i}.toml"));
+        std::fs::write(&file, &text).unwrap();
+        let out = dir.join(format!("o{i}"));
+        let o = pounding_within(
+            &[
+                "run",
+                file.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--quiet",
+                "--json",
+            ],
+            20.0,
+        )
+        .unwrap_or_else(|| panic!("case {i} hung:\n{text}"));
+        let err = String::from_utf8_lossy(&o.stderr);
+        match o.status.code() {
+            Some(0) => {
+                let s = std::fs::read_to_string(out.join("summary.json")).unwrap();
+                assert!(!s.contains("null"), "case {i}: null in summary\n{text}");
+                assert!(out.join(".pounding-run").is_file());
+            }
+            Some(2) => {
+                assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}\n{text}");
+                assert!(!out.exists(), "case {i}: output written\n{text}");
+            }
+            code => panic!("case {i}: exit {code:?}: {err}\n{text}"),
+        }
+    }
+}

@@ -144,3 +144,55 @@ fn records_beyond_physical_ranges_are_refused() {
     ));
     assert!(Record::new("r", 0.01, 0.0, vec![2e5]).is_err());
 }
+
+mod fuzz {
+    //! Bounded fuzzing of the record parsers (48 cases each in CI; PROPTEST_CASES=N for longer): any text
+    //! gives a record or an error, never a panic, and a record holds only finite, bounded accelerations.
+    use pounding::ground_motion::{Format, Record, Units};
+    use proptest::prelude::*;
+
+    fn cases() -> u32 {
+        std::env::var("PROPTEST_CASES")
+            .ok()
+            .and_then(|c| c.parse().ok())
+            .unwrap_or(48)
+    }
+
+    /// Text that looks like a record: header words, numbers of every size, separators, junk.
+    fn recordish() -> impl Strategy<Value = String> {
+        let token = prop_oneof![
+            Just("PEER".to_string()),
+            Just("NPTS=".to_string()),
+            Just("DT=".to_string()),
+            Just("SEC".to_string()),
+            Just(",".to_string()),
+            Just("\n".to_string()),
+            Just(";".to_string()),
+            Just("#".to_string()),
+            Just("nan".to_string()),
+            Just("inf".to_string()),
+            Just("1e400".to_string()),
+            any::<f64>().prop_map(|x| format!("{x:e}")),
+            (0u64..1u64 << 62).prop_map(|n| n.to_string()),
+            (-1e3f64..1e3).prop_map(|x| format!("{x}")),
+            "[ -~]{0,8}",
+        ];
+        prop::collection::vec(token, 0..60).prop_map(|t| t.join(" "))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(cases()))]
+
+        #[test]
+        fn parsers_never_panic_and_records_are_bounded(text in recordish(), dt in prop_oneof![Just(0.01), any::<f64>()]) {
+            for format in [Format::At2, Format::TimeAcc, Format::Values { dt }] {
+                for units in [Units::G, Units::MPerS2] {
+                    if let Ok(r) = Record::parse("fuzz", &text, format, units) {
+                        prop_assert!(r.accelerations().iter().all(|a| a.is_finite() && a.abs() <= 1e5));
+                        prop_assert!(r.dt() >= 1e-5 && r.dt() <= 10.0);
+                    }
+                }
+            }
+        }
+    }
+}
