@@ -125,6 +125,7 @@ struct ContactEntry {
     #[serde(default = "concrete_e")]
     e: f64,
     stiffness: f64,
+    stiffness_unit: Option<String>,
     exponent: Option<f64>,
     damping: Option<String>,
     alpha: Option<Alpha>,
@@ -325,6 +326,19 @@ fn storey_laws(
         .collect()
 }
 
+/// The exponent `n` of a stiffness unit `N/m` (1) or `N/m^n`.
+fn stiffness_exponent(unit: &str) -> Option<f64> {
+    let u: String = unit.chars().filter(|c| !c.is_whitespace()).collect();
+    match u.strip_prefix("N/m") {
+        Some("") => Some(1.0),
+        Some(rest) => rest
+            .strip_prefix('^')
+            .and_then(|x| x.trim_matches(['(', ')']).parse::<f64>().ok())
+            .filter(|n| n.is_finite() && *n > 0.0),
+        None => None,
+    }
+}
+
 /// Reads and validates the scenario file at `path`.
 pub fn load(path: &Path) -> Result<Loaded, CliError> {
     let text = crate::commands::read_text_file(
@@ -505,6 +519,48 @@ pub fn load(path: &Path) -> Result<Loaded, CliError> {
             max_penetration: c.max_penetration,
             yield_ratio: c.yield_ratio.unwrap_or(0.1),
         };
+        // The stiffness states its unit, so that changing the model cannot silently change what it means.
+        let n = c.exponent.unwrap_or(model.info().default_n);
+        let unit_for = |n: f64| {
+            if n == 1.0 {
+                "N/m".to_string()
+            } else {
+                format!("N/m^{}", crate::output::fmt_num(n))
+            }
+        };
+        match c.stiffness_unit.as_deref() {
+            None => {
+                return Err(at.err(
+                    at.key_span(span.clone(), "stiffness"),
+                    format!(
+                        "contact {a:?}-{b:?}: stiffness_unit is required with stiffness: \"{}\" for {} (exponent {}), so that the stiffness keeps its meaning if the model changes",
+                        unit_for(n),
+                        model.name(),
+                        crate::output::fmt_num(n)
+                    ),
+                ))
+            }
+            Some(u) => {
+                let given = stiffness_exponent(u).ok_or_else(|| {
+                    at.err(
+                        at.key_span(span.clone(), "stiffness_unit"),
+                        format!("contact {a:?}-{b:?}: stiffness_unit = {u:?} is not allowed: \"N/m\" or \"N/m^n\" (for example \"N/m^1.5\")"),
+                    )
+                })?;
+                if (given - n).abs() > 1e-12 {
+                    return Err(at.err(
+                        at.key_span(span.clone(), "stiffness_unit"),
+                        format!(
+                            "contact {a:?}-{b:?}: stiffness_unit = {u:?} does not match the exponent {} of {}: its stiffness is in {} (convert it, or set exponent = {})",
+                            crate::output::fmt_num(n),
+                            model.name(),
+                            unit_for(n),
+                            crate::output::fmt_num(given)
+                        ),
+                    ));
+                }
+            }
+        }
         let spec = contact(&args, c.stiffness, Style::Key).map_err(|e| match e {
             CliError::Input(m) => {
                 // Messages start with the key (`e = 1.5 is not allowed ...`): point at its line.

@@ -718,6 +718,15 @@ fn devices_pipes_and_hostile_names_are_refused_without_blocking() {
             ),
             "[1, 1] twice",
         ),
+        // A change of model cannot silently change what the stiffness means: its unit is stated and checked.
+        (
+            base.replace("model = \"papi\"", "model = \"jankowski\""),
+            "stiffness_unit = \"N/m\" does not match the exponent 1.5 of jankowski",
+        ),
+        (
+            base.replace("stiffness_unit = \"N/m\"", ""),
+            "stiffness_unit is required with stiffness: \"N/m\" for papi",
+        ),
     ];
     for (i, (text, needle)) in cases.iter().enumerate() {
         let err = refused(&dir, i, text);
