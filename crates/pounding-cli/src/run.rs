@@ -490,12 +490,12 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
 
 fn impacts_csv(s: &Scenario, r: &Results) -> String {
     let mut out = String::from(
-        "time_s,contact,floor_left,floor_right,v_i_m_per_s,e_post,peak_force_N,time_of_peak_force_s,duration_s,dissipated_energy_J,max_penetration_m,ended\n",
+        "time_s,contact,floor_left,floor_right,v_i_m_per_s,e_post,peak_force_N,time_of_peak_force_s,duration_s,dissipated_energy_J,max_penetration_m,ended,resting\n",
     );
     for i in &r.impacts {
         let _ = writeln!(
             out,
-            "{:e},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{}",
+            "{:e},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{}",
             i.time,
             link_name(s, i.link),
             i.floors.0,
@@ -507,7 +507,8 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
             i.duration,
             i.dissipated_energy,
             i.max_penetration,
-            i.e_post.is_some()
+            i.ended,
+            i.resting
         );
     }
     out

@@ -369,8 +369,15 @@ pub struct Impact {
     pub v_i: f64,
     /// Relative velocity when the impact ended, m/s (negative: separating); `None` if it had not ended.
     pub v_out: Option<f64>,
-    /// Delivered coefficient of restitution `-v_out / v_i`; `None` if the impact had not ended.
+    /// Delivered coefficient of restitution `-v_out / v_i`; `None` if the impact had not ended, or for a resting
+    /// contact (where `v_i` is too small for the ratio to mean anything).
     pub e_post: Option<f64>,
+    /// Whether the impact had ended before the analysis stopped.
+    pub ended: bool,
+    /// A resting contact: the ends closed from rest, at a relative velocity below the smallest impact
+    /// velocity used to build a law ([`Scenario::with_min_impact_velocity`]); its law was built with that
+    /// velocity, and it has no meaningful `e_post`.
+    pub resting: bool,
     /// Largest contact force, N.
     pub peak_force: f64,
     /// Time of the largest force, s.

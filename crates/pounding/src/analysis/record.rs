@@ -3,7 +3,7 @@
 
 use super::model::{ContactRef, Model};
 use super::{Histories, Impact, Progress};
-use crate::element::{ContactPiece, Event, Kind};
+use crate::element::{ContactPiece, Engagement, Event, Kind};
 use crate::engine::{hermite_peak, EventInfo, Hermite, Observer, PeakTracker, Segment, System};
 use std::ops::ControlFlow;
 
@@ -100,6 +100,8 @@ struct Tracker {
     work0: f64,
     peak: PeakTracker<ContactPiece>,
     max_penetration: f64,
+    /// A resting contact (closing at less than the smallest impact velocity).
+    resting: bool,
     /// Index in the impact list once recorded (released, not yet re-armed).
     recorded: Option<usize>,
 }
@@ -140,7 +142,9 @@ impl Impacts {
             time: tr.time,
             v_i: tr.v_i,
             v_out,
-            e_post: v_out.and_then(|v| (tr.v_i > 0.0).then(|| -v / tr.v_i)),
+            e_post: v_out.and_then(|v| (!tr.resting).then(|| -v / tr.v_i)),
+            ended: v_out.is_some(),
+            resting: tr.resting,
             peak_force,
             time_of_peak_force,
             max_penetration: tr.max_penetration,
@@ -154,7 +158,7 @@ impl Impacts {
         for (k, c) in self.contacts.iter().enumerate() {
             let engaged = matches!(
                 &sys.elements()[c.element].kind,
-                Kind::Contact(ct) if matches!(ct.state(), crate::element::Engagement::Contact { .. })
+                Kind::Contact(ct) if matches!(ct.state(), Engagement::Contact { .. })
             );
             if let (Some(tr), true) = (self.trackers[k].as_mut(), engaged) {
                 let work = y[sys.layout().block(c.element).start];
@@ -196,17 +200,21 @@ impl Observer for Impacts {
         };
         let (x, v) = sys.deformation(c.element, ev.y);
         let work = ev.y[sys.layout().block(c.element).start];
+        let start = || Tracker {
+            time: ev.t,
+            v_i: v,
+            work0: work,
+            peak: PeakTracker::new(ev.t, ct.reported_force(x, v)),
+            max_penetration: 0.0,
+            resting: v < ct.min_impact_velocity(),
+            recorded: None,
+        };
+        let engaged = matches!(ct.state(), Engagement::Contact { .. });
         match ev.event {
-            Event::Touch => {
-                self.trackers[k] = Some(Tracker {
-                    time: ev.t,
-                    v_i: v,
-                    work0: work,
-                    peak: PeakTracker::new(ev.t, ct.reported_force(x, v)),
-                    max_penetration: 0.0,
-                    recorded: None,
-                });
-            }
+            // A touch while the ends part (grazing) starts no impact: the contact rests without force.
+            Event::Touch if engaged => self.trackers[k] = Some(start()),
+            // Closing again from rest starts an impact.
+            Event::Resume if self.trackers[k].is_none() => self.trackers[k] = Some(start()),
             Event::Turn => {
                 if let Some(tr) = self.trackers[k].as_mut() {
                     tr.max_penetration = tr.max_penetration.max(x - ct.gap());

@@ -29,6 +29,10 @@ pub enum Engagement {
         /// The last turning point.
         turn: Turn,
     },
+    /// Touching without closing: the penetration reached 0 while the ends were not approaching (a grazing
+    /// touch, or ends at rest against each other). No force until they close (an impact starts) or part
+    /// (`d <= 0`).
+    Resting,
     /// A clamped force reached zero while `d > 0`: no force until `d <= 0` (or the ends approach again).
     Released {
         /// The law of the impact that was released.
@@ -168,7 +172,7 @@ impl Contact {
                 (Tension::Allow, true) => &[Event::Separation, Event::Reapproach, Event::Kink],
                 (Tension::Allow, false) => &[Event::Separation, Event::Reapproach],
             },
-            Engagement::Released { .. } => &[Event::Rearm, Event::Resume],
+            Engagement::Released { .. } | Engagement::Resting => &[Event::Rearm, Event::Resume],
         }
     }
 
@@ -179,7 +183,7 @@ impl Contact {
         let (law, phase, turn) = match self.state {
             Engagement::Contact { law, phase, turn } => (Some(law), phase, turn),
             Engagement::Released { law, turn } => (Some(law), Phase::Restitution, turn),
-            Engagement::Open => (None, Phase::Approach, Turn::default()),
+            Engagement::Open | Engagement::Resting => (None, Phase::Approach, Turn::default()),
         };
         match ev {
             Event::Touch => -d,
@@ -196,34 +200,55 @@ impl Contact {
         }
     }
 
+    /// Smallest impact velocity used to build a law, m/s (0 for a fixed law).
+    pub fn min_impact_velocity(&self) -> f64 {
+        match &self.source {
+            LawSource::Prepared {
+                min_impact_velocity,
+                ..
+            } => *min_impact_velocity,
+            LawSource::Fixed => 0.0,
+        }
+    }
+
+    /// The law of an impact starting at rate `v` (m/s), and the first step inside its time scale; `None` for
+    /// a fixed law (it does not re-engage).
+    fn impact_law(&self, v: f64, h: f64, out: &mut Transition) -> Result<Option<ForceLaw>, Error> {
+        let LawSource::Prepared {
+            contact,
+            min_impact_velocity,
+        } = &self.source
+        else {
+            return Ok(None);
+        };
+        let v_law = v.max(*min_impact_velocity);
+        let (law, _) = contact.law(self.m_eff, v_law)?;
+        // Start each impact with a step well inside its time scale (far inside for a law that is not smooth
+        // at touch, see `impact::simulate`).
+        let tau = law.length_scale(self.m_eff, v_law) / v_law;
+        let f = if law.smooth_at_touch() { 1e-2 } else { 1e-8 };
+        out.h_max = Some(h.min(f * tau));
+        Ok(Some(law))
+    }
+
     /// Applies `ev` at deformation `x` and rate `v`; `h` is the step the integrator would take next (s).
     pub fn apply(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
         let d = x - self.gap;
         let mut out = Transition::default();
         self.state = match (self.state, ev) {
-            (Engagement::Open, Event::Touch) => {
-                let law = match &self.source {
-                    LawSource::Prepared {
-                        contact,
-                        min_impact_velocity,
-                    } => {
-                        let v_law = v.max(*min_impact_velocity);
-                        let (law, _) = contact.law(self.m_eff, v_law)?;
-                        // Start each impact with a step well inside its time scale (far inside for a law that
-                        // is not smooth at touch, see `impact::simulate`).
-                        let tau = law.length_scale(self.m_eff, v_law) / v_law;
-                        let f = if law.smooth_at_touch() { 1e-2 } else { 1e-8 };
-                        out.h_max = Some(h.min(f * tau));
-                        law
-                    }
-                    LawSource::Fixed => return Ok(out),
-                };
-                Engagement::Contact {
-                    law,
-                    phase: Phase::Approach,
-                    turn: Turn::default(),
+            // A touch while the ends are not closing starts no impact (a grazing touch, or resting contact).
+            (Engagement::Open, Event::Touch) if v <= 0.0 => Engagement::Resting,
+            (Engagement::Open, Event::Touch) | (Engagement::Resting, Event::Resume) => {
+                match self.impact_law(v, h, &mut out)? {
+                    Some(law) => Engagement::Contact {
+                        law,
+                        phase: Phase::Approach,
+                        turn: Turn::default(),
+                    },
+                    None => return Ok(out),
                 }
             }
+            (Engagement::Resting, Event::Rearm) => Engagement::Open,
             (Engagement::Contact { law, .. }, Event::Turn) => Engagement::Contact {
                 law,
                 phase: Phase::Restitution,
