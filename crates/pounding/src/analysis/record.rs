@@ -359,14 +359,7 @@ impl Observer for HistoryRecorder {
                 }
             }
             let e = sys.energies(&self.ys);
-            for (col, x) in h.energy.iter_mut().zip([
-                e.input,
-                e.kinetic,
-                e.strain,
-                e.damping,
-                e.hysteretic,
-                e.contact,
-            ]) {
+            for (col, x) in h.energy.iter_mut().zip(e.terms()) {
                 col.push(x);
             }
             self.next += 1;

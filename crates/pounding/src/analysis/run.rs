@@ -1,7 +1,7 @@
 //! A pounding run: the row as a system of the engine, its recorders, and the results they kept.
 
 use super::model::Model;
-use super::record::{HistoryRecorder, Impacts, Peaks, Recorders};
+use super::record::{HistoryRecorder, Impacts, Peak, Peaks, Recorders};
 use super::{
     BuildingResponse, EnergyBalance, LinkResponse, Results, RunOptions, Scenario, Statistics,
 };
@@ -19,6 +19,16 @@ pub struct Progress {
     pub duration: f64,
     /// Impacts so far.
     pub impacts: usize,
+}
+
+/// The values of `peaks`.
+fn values(peaks: &[Peak]) -> Vec<f64> {
+    peaks.iter().map(|p| p.value).collect()
+}
+
+/// The times of `peaks`, s.
+fn times(peaks: &[Peak]) -> Vec<f64> {
+    peaks.iter().map(|p| p.time).collect()
 }
 
 pub(super) fn run(
@@ -123,23 +133,11 @@ pub(super) fn run(
             let residual_drift: Vec<f64> =
                 storeys.clone().map(|e| sys.deformation(e, y).0).collect();
             BuildingResponse {
-                peak_displacement: peaks.displacement[r.clone()]
-                    .iter()
-                    .map(|p| p.value)
-                    .collect(),
-                time_of_peak_displacement: peaks.displacement[r.clone()]
-                    .iter()
-                    .map(|p| p.time)
-                    .collect(),
+                peak_displacement: values(&peaks.displacement[r.clone()]),
+                time_of_peak_displacement: times(&peaks.displacement[r.clone()]),
                 peak_drift: peaks.drift[r.clone()].to_vec(),
-                peak_absolute_acceleration: peaks.acceleration[r.clone()]
-                    .iter()
-                    .map(|p| p.value)
-                    .collect(),
-                time_of_peak_absolute_acceleration: peaks.acceleration[r.clone()]
-                    .iter()
-                    .map(|p| p.time)
-                    .collect(),
+                peak_absolute_acceleration: values(&peaks.acceleration[r.clone()]),
+                time_of_peak_absolute_acceleration: times(&peaks.acceleration[r.clone()]),
                 peak_storey_shear: peaks.shear[r.clone()].to_vec(),
                 residual_displacement: r.clone().map(|i| y[l.u(i)]).collect(),
                 residual_drift,

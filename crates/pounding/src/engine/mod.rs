@@ -76,6 +76,18 @@ impl Energies {
     pub fn imbalance(&self) -> f64 {
         self.input - self.kinetic - self.strain - self.damping - self.hysteretic - self.contact
     }
+    /// The six terms in the order input, kinetic, strain, damping, hysteretic, contact, J.
+    pub fn terms(&self) -> [f64; 6] {
+        [
+            self.input,
+            self.kinetic,
+            self.strain,
+            self.damping,
+            self.hysteretic,
+            self.contact,
+        ]
+    }
+
     /// `kinetic + strain + damping + hysteretic + |contact|`, J: the scale of the balance.
     pub fn scale(&self) -> f64 {
         self.kinetic + self.strain + self.damping + self.hysteretic + self.contact.abs()
