@@ -58,11 +58,11 @@ pub enum Error {
         v_i: f64,
     },
     /// The analysis would take (or took) more integration steps than its budget.
-    #[error("the analysis needs more than {allowed:e} integration steps ({reason}); allowed: at most {allowed:e} (limits::MAX_WORK / the number of states)")]
+    #[error("the analysis needs more than {allowed:e} integration steps ({reason}); allowed: at most {allowed:e} (limits::MAX_WORK / (the number of states + 8))")]
     StepBudget {
         /// The budget, steps.
         allowed: f64,
-        /// Why: the highest natural frequency, or the time reached.
+        /// Why: the highest natural frequency, the samples of the record, or the time reached.
         reason: String,
     },
     /// The caller stopped the run (its progress callback asked to).

@@ -94,7 +94,7 @@ impl<'a> Model<'a> {
     /// acceleration (or, for a building so flexible that it barely responds within the analysis, of a mode
     /// with the analysis duration as period), and the velocity that goes with it; energies from those. Gaps
     /// play no part: a floor reaches what its building can reach.
-    pub fn tolerances(&self, s: &Scenario, rtol: f64) -> (Vec<f64>, f64) {
+    pub fn tolerances(&mut self, s: &Scenario, rtol: f64) -> (Vec<f64>, f64) {
         let sys = &self.system;
         let l = sys.layout();
         let n = l.dofs();
@@ -108,6 +108,7 @@ impl<'a> Model<'a> {
         let mut u_scale = vec![0.0; n];
         let mut v_scale = vec![0.0; n];
         let mut w_max: f64 = 0.0;
+        let mut resolutions = Vec::new();
         for (b, &offset) in s.buildings().iter().zip(&self.offsets) {
             let omega = &b.structure.modes().omega;
             w_max = omega.iter().copied().fold(w_max, f64::max);
@@ -137,6 +138,9 @@ impl<'a> Model<'a> {
             match &el.kind {
                 crate::element::Kind::Contact(c) => {
                     atol[r.start] = rtol * c.effective_mass() * v * v;
+                    // Ten times the local error allowed in each end's rate (atol + rtol |v|, up to 2 atol).
+                    let v_res: f64 = ends.iter().flatten().map(|&i| 20.0 * atol[l.v(i)]).sum();
+                    resolutions.push((e, v_res));
                 }
                 crate::element::Kind::Storey(_) => {
                     // Bouc–Wen: z is dimensionless and of order 1; then the work of its hysteretic part.
@@ -145,6 +149,11 @@ impl<'a> Model<'a> {
                         atol[r.start + 1] = rtol * e_scale;
                     }
                 }
+            }
+        }
+        for (e, v_res) in resolutions {
+            if let crate::element::Kind::Contact(c) = &mut self.system.elements_mut()[e].kind {
+                c.set_rate_resolution(v_res);
             }
         }
         (atol, 1e-3 * 2.0 * std::f64::consts::PI / w_max)

@@ -88,6 +88,16 @@ pub(super) fn run(
             ),
         });
     }
+    // Every sample of the record within the analysis ends a step.
+    let samples = (s.record().npts() as f64).min(t_end / s.record().dt());
+    if samples > budget as f64 {
+        return Err(Error::StepBudget {
+            allowed: budget as f64,
+            reason: format!(
+                "the record has {samples:e} samples within {t_end:e} s, and every sample ends a step: shorten the duration or the record"
+            ),
+        });
+    }
     let settings = Settings {
         t_end,
         rtol: s.tolerance(),

@@ -3,8 +3,9 @@
 //! The penetration is `d = x - gap` with `x = u_a - u_b` (m), its rate `v = x'` (m/s). Each impact is one
 //! touch: its onset is located as an event, so `v_i` is the rate at the moment of touch, and the law is
 //! built afresh for it ([`crate::contact::PreparedContact::law`], with the element's effective mass). Within
-//! an impact the phase follows the rate (approach while `v > 0`, restitution after each turning point), as in
-//! OpenSees' impact materials; a bilinear law reloads elastically up to its last turning point. The impact
+//! an impact the phase follows the rate (restitution from each turning point `v = 0`, approach again once `v`
+//! exceeds the contact's rate resolution, see [`Contact::set_rate_resolution`]), as in OpenSees' impact
+//! materials; a bilinear law reloads elastically up to its last turning point. The impact
 //! ends when `d` returns to 0, or, for a law whose force is clamped, when the force first reaches 0 in
 //! restitution; the contact then carries no force until `d` returns to 0 (if the ends approach again before
 //! that, the same impact resumes).
@@ -66,6 +67,7 @@ pub struct Contact {
     source: LawSource,
     stop_at_end: bool,
     state: Engagement,
+    v_res: f64,
 }
 
 impl Contact {
@@ -82,6 +84,7 @@ impl Contact {
             },
             stop_at_end: false,
             state: Engagement::Open,
+            v_res: 0.0,
         }
     }
 
@@ -99,7 +102,17 @@ impl Contact {
                 phase: Phase::Approach,
                 turn: Turn::default(),
             },
+            v_res: 0.0,
         }
+    }
+
+    /// Sets the resolution of the penetration rate, m/s (0 by default): after a turning point, or while
+    /// released or resting, the ends count as approaching again only once `v` exceeds it. Floors pressed
+    /// together at rest sit on `v = 0`, where the sign of a computed `v` is the integrator's noise; without a
+    /// band the phase would flip between approach and restitution at one instant. Each change of phase now
+    /// needs a change of `v` of at least the resolution, which the dynamics must provide.
+    pub fn set_rate_resolution(&mut self, v_res: f64) {
+        self.v_res = v_res;
     }
 
     /// Gap at rest, m.
@@ -193,9 +206,9 @@ impl Contact {
             Event::Separation | Event::Rearm => d,
             Event::Reapproach => match law {
                 Some(ForceLaw::Bilinear { .. }) => turn.d - d,
-                _ => -v,
+                _ => self.v_res - v,
             },
-            Event::Resume => -v,
+            Event::Resume => self.v_res - v,
             _ => 1.0,
         }
     }
