@@ -413,6 +413,13 @@ pub fn load(path: &Path) -> Result<Loaded, CliError> {
             path.display()
         )));
     }
+    // The size of the row, before any building's modes are computed.
+    let floors: Vec<usize> = file
+        .building
+        .iter()
+        .map(|b| b.get_ref().masses.len())
+        .collect();
+    pounding::limits::check_row(&floors).map_err(|e| at.lib(file.building[0].span(), e))?;
     let mut buildings = Vec::new();
     let mut spans = Vec::new();
     for b in file.building {

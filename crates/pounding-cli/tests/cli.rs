@@ -728,6 +728,22 @@ fn devices_pipes_and_hostile_names_are_refused_without_blocking() {
             "stiffness_unit is required with stiffness: \"N/m\" for papi",
         ),
     ];
+    // Eleven buildings of 200 storeys: refused from the floor counts, before any modes are computed.
+    let tall = |i: usize| {
+        let list = |v: &str| format!("[{}]", vec![v; 200].join(", "));
+        format!(
+            "[[building]]\nname = \"b{i}\"\nmasses = {}\nstiffnesses = {}\nheights = {}\ndamping_ratio = 0.05\n",
+            list("5e5"),
+            list("2e9"),
+            list("3.0")
+        )
+    };
+    let head = &base[..base.find("[[building]]").unwrap()];
+    let row = head.to_string() + &(0..11).map(tall).collect::<String>();
+    let cases: Vec<(String, &str)> = cases
+        .into_iter()
+        .chain([(row, "at most 2000 floors in a row")])
+        .collect();
     for (i, (text, needle)) in cases.iter().enumerate() {
         let err = refused(&dir, i, text);
         assert!(err.contains(needle), "case {i}: {err} lacks {needle}");

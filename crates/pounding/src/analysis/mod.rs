@@ -82,13 +82,8 @@ impl Scenario {
     /// A scenario with the buildings (left to right; at least one, unique names) under `record`, for the
     /// record's duration, output every 0.005 s, at [`DEFAULT_TOLERANCE`].
     pub fn new(buildings: Vec<Building>, record: Record) -> Result<Self, Error> {
-        if buildings.is_empty() || buildings.len() > crate::limits::MAX_BUILDINGS {
-            return Err(Error::Choice {
-                name: "building",
-                value: format!("{} buildings", buildings.len()),
-                allowed: "1 to 50 buildings (limits::MAX_BUILDINGS)".into(),
-            });
-        }
+        let floors: Vec<usize> = buildings.iter().map(|b| b.structure.storeys()).collect();
+        crate::limits::check_row(&floors)?;
         for (i, b) in buildings.iter().enumerate() {
             if buildings[..i].iter().any(|o| o.name == b.name) {
                 return Err(Error::Choice {

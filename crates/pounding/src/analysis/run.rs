@@ -43,6 +43,18 @@ pub(super) fn run(
             allowed: "at most 1e7 output samples over the duration (limits::MAX_OUTPUT_SAMPLES; raise output_dt)",
         });
     }
+    let floors: usize = s.buildings().iter().map(|b| b.structure.storeys()).sum();
+    let contacts: usize = s.links().iter().map(|l| l.floors.len()).sum();
+    let columns = 2 + 3 * floors + contacts + 6;
+    if opts.histories
+        && s.output_samples().saturating_mul(columns) > crate::limits::MAX_HISTORY_VALUES
+    {
+        return Err(Error::Parameter {
+            name: "output_dt",
+            value: s.output_dt(),
+            allowed: "at most 1e7 history values, output samples times columns (3 per floor, 1 per contact, 8 more) (limits::MAX_HISTORY_VALUES; raise output_dt)",
+        });
+    }
     let mut model = Model::new(s);
     let (atol, h0) = model.tolerances(s, s.tolerance());
     let t_end = s.duration();

@@ -16,7 +16,7 @@ pub struct Settings {
     pub atol: Vec<f64>,
     /// First trial step, s.
     pub h0: f64,
-    /// Largest number of accepted steps.
+    /// Largest number of steps, accepted and rejected.
     pub max_steps: usize,
 }
 
@@ -200,7 +200,9 @@ pub fn run(
         }
         y0.copy_from_slice(&ye);
         t0 = te;
-        if dp.counts().0 >= settings.max_steps {
+        // Rejected steps cost as much as accepted ones.
+        let (accepted, rejected) = dp.counts();
+        if accepted + rejected >= settings.max_steps {
             ending = Ending::StepBudget;
             break;
         }

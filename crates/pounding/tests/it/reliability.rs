@@ -38,6 +38,15 @@ fn sizes_beyond_the_limits_are_refused_before_any_work() {
         .map(|i| building(&format!("b{i}"), &[1e5], &[1e8], 0.05))
         .collect();
     assert!(Scenario::new(many, Record::el_centro_1940()).is_err());
+    // Ten buildings of 200 storeys took 21 s and 1.2 GB; eleven are refused from their floor counts alone.
+    assert!(pounding::limits::check_row(&[200; 10]).is_ok());
+    assert!(matches!(
+        pounding::limits::check_row(&[200; 11]),
+        Err(Error::Choice {
+            name: "building",
+            ..
+        })
+    ));
     // A sample count past 2^64 saturates instead of wrapping to 0, and the run refuses it at once.
     let s = pair(7.8957e7, 5.0e5)
         .with_duration(1e300)
@@ -88,8 +97,37 @@ fn a_run_that_would_crawl_is_refused_before_it_starts() {
 }
 
 #[test]
+fn histories_beyond_1e7_values_are_refused_before_the_run() {
+    // Ten buildings of 20 storeys (608 history columns) over 0.1 s: at 5 ms, 1.2e4 values are fine; at 5 us
+    // (2e4 samples), 1.2e7 are not, unless the run keeps no histories.
+    let n = 20;
+    let row = || {
+        let buildings = (0..10)
+            .map(|i| building(&format!("b{i}"), &vec![1e5; n], &vec![1e8; n], 0.05))
+            .collect();
+        Scenario::new(buildings, Record::el_centro_1940())
+            .unwrap()
+            .with_duration(0.1)
+            .unwrap()
+    };
+    assert!(row().run().is_ok());
+    let fine = row().with_output_dt(5e-6).unwrap();
+    assert!(matches!(
+        fine.run(),
+        Err(Error::Parameter {
+            name: "output_dt",
+            ..
+        })
+    ));
+    let opts = pounding::analysis::RunOptions { histories: false };
+    assert!(fine
+        .run_with_options(&opts, &mut |_| ControlFlow::Continue(()))
+        .is_ok());
+}
+
+#[test]
 fn a_record_with_more_samples_than_the_step_budget_is_refused_before_it_starts() {
-    // Every sample ends a step: 10 buildings of 20 storeys (422 states, a budget of 2.3e5 steps) under a
+    // Every sample ends a step: 10 buildings of 20 storeys (402 states, a budget of 1.2e5 steps) under a
     // record of 3e5 samples.
     let n = 20;
     let buildings = (0..10)
@@ -97,7 +135,10 @@ fn a_record_with_more_samples_than_the_step_budget_is_refused_before_it_starts()
         .collect();
     let acc: Vec<f64> = (0..300_000).map(|k| (k as f64 * 0.01).sin()).collect();
     let record = Record::new("long", 1e-3, 0.0, acc).unwrap();
-    let r = Scenario::new(buildings, record).unwrap().run();
+    let opts = pounding::analysis::RunOptions { histories: false };
+    let r = Scenario::new(buildings, record)
+        .unwrap()
+        .run_with_options(&opts, &mut |_| ControlFlow::Continue(()));
     assert!(
         matches!(&r, Err(Error::StepBudget { reason, .. }) if reason.contains("samples")),
         "{r:?}"
