@@ -275,7 +275,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 "period (s)",
                 "damping (%)",
                 "effective mass (%)",
-                "shape, floor 1 up (roof = 1)",
+                "shape, floor 1 up (largest = 1)",
             ],
             &rows,
         );

@@ -193,8 +193,8 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
             println!("  storeys: {}", desc.join("; "));
             println!("  (modes and Rayleigh damping of the initial stiffness)");
         }
-        println!("  mode  period_s  damping_%  mass_%  shape (floor 1 up, roof = 1)");
-        let shapes = modes.shapes_roof_normalised();
+        println!("  mode  period_s  damping_%  mass_%  shape (floor 1 up, largest = 1)");
+        let shapes = modes.shapes_normalised();
         for (r, t) in modes.periods().iter().enumerate().take(6) {
             let shape: Vec<String> = shapes[r].iter().map(|x| format!("{x:.3}")).collect();
             println!(
@@ -327,7 +327,7 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
                 "storeys": st.storeys(),
                 "periods": modes.periods().into_iter().map(num).collect::<Vec<_>>(),
                 "modal_damping_ratios": modes.omega.iter().map(|w| num(st.modal_damping(*w))).collect::<Vec<_>>(),
-                "mode_shapes": modes.shapes_roof_normalised().into_iter().map(|s| s.into_iter().map(num).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                "mode_shapes": modes.shapes_normalised().into_iter().map(|s| s.into_iter().map(num).collect::<Vec<_>>()).collect::<Vec<_>>(),
                 "effective_modal_mass_ratios": part.iter().map(|p| num(p.1 / st.total_mass())).collect::<Vec<_>>(),
                 "peak_displacement": resp.peak_displacement.iter().copied().map(num).collect::<Vec<_>>(),
                 "time_of_peak_displacement": resp.time_of_peak_displacement.iter().copied().map(num).collect::<Vec<_>>(),
@@ -408,7 +408,7 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
             "events": r.statistics.events,
         },
         "units": {
-            "periods": "s", "mode_shapes": "roof = 1", "peak_displacement": "m", "time_of_peak_displacement": "s",
+            "periods": "s", "mode_shapes": "largest component = 1, top floor positive", "peak_displacement": "m", "time_of_peak_displacement": "s",
             "peak_drift": "m", "peak_drift_ratio": "drift / storey height",
             "peak_absolute_acceleration": "m/s^2", "time_of_peak_absolute_acceleration": "s",
             "peak_storey_shear": "N (restoring force of the storey, without Rayleigh damping)",

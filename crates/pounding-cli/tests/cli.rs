@@ -897,11 +897,10 @@ fn pounding_within(args: &[&str], limit: f64) -> Option<Output> {
 #[test]
 fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
     // Bounded fuzzing of the scenario loader and of whole runs: lines of the examples deleted, duplicated or
-    // given extreme values, from a fixed seed (POUNDING_FUZZ_CASES=N for a longer campaign).
-    let cases: usize = std::env::var("POUNDING_FUZZ_CASES")
-        .ok()
-        .and_then(|c| c.parse().ok())
-        .unwrap_or(24);
+    // given extreme values, from a fixed seed (POUNDING_FUZZ_CASES=N and POUNDING_FUZZ_SEED=S for a longer or
+    // another campaign).
+    let env = |name: &str| std::env::var(name).ok().and_then(|c| c.parse::<u64>().ok());
+    let cases = env("POUNDING_FUZZ_CASES").unwrap_or(24) as usize;
     let extremes = [
         "0",
         "-1",
@@ -918,13 +917,21 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
         "[0.0]",
         "[1e300, 1e-300]",
         "\"\\r\"",
+        "1e12",
+        "1e-12",
+        "0.01",
     ];
-    let texts: Vec<String> = ["two-sdof.toml", "three-vs-eight-inelastic.toml"]
-        .iter()
-        .map(|e| std::fs::read_to_string(example(e)).unwrap())
-        .collect();
+    let texts: Vec<String> = [
+        "two-sdof.toml",
+        "three-vs-eight-inelastic.toml",
+        "three-in-a-row.toml",
+        "three-vs-eight-storey.toml",
+    ]
+    .iter()
+    .map(|e| std::fs::read_to_string(example(e)).unwrap())
+    .collect();
     let dir = tmp("fuzz");
-    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15 ^ env("POUNDING_FUZZ_SEED").unwrap_or(0);
     let mut next = |n: usize| {
         seed = seed
             .wrapping_mul(6364136223846793005)
@@ -932,7 +939,7 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
         ((seed >> 33) as usize) % n
     };
     for i in 0..cases {
-        let mut lines: Vec<String> = texts[i % 2].lines().map(String::from).collect();
+        let mut lines: Vec<String> = texts[i % texts.len()].lines().map(String::from).collect();
         for _ in 0..1 + next(3) {
             let k = next(lines.len());
             match next(3) {
@@ -972,6 +979,12 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
                 let s = std::fs::read_to_string(out.join("summary.json")).unwrap();
                 assert!(!s.contains("null"), "case {i}: null in summary\n{text}");
                 assert!(out.join(".pounding-run").is_file());
+                // A poor energy balance is said.
+                let v: Value = serde_json::from_str(&s).unwrap();
+                if v["energy_balance_error"].as_f64().unwrap() > 1e-4 {
+                    assert!(!v["warnings"].as_array().unwrap().is_empty(), "case {i}");
+                    assert!(err.contains("energy balance"), "case {i}: {err}");
+                }
             }
             Some(2) => {
                 assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}\n{text}");

@@ -147,7 +147,7 @@ fn inelastic(c: &mut Criterion) {
     }
     // A study keeps only the summary: no histories.
     let s = mdof_pair("bilinear");
-    let summary_only = RunOptions { histories: false };
+    let summary_only = RunOptions::summary_only();
     g.bench_function("mdof_pair/bilinear/summary_only", |b| {
         b.iter(|| {
             s.run_with_options(&summary_only, &mut |_| std::ops::ControlFlow::Continue(()))

@@ -58,7 +58,7 @@ pub enum Error {
         v_i: f64,
     },
     /// The analysis would take (or took) more integration steps than its budget.
-    #[error("the analysis needs more than {allowed:e} integration steps ({reason}); allowed: at most {allowed:e} (limits::MAX_WORK / (the number of states + 8))")]
+    #[error("the analysis needs more than {allowed:e} integration steps ({reason}); allowed: at most {allowed:e} (the work budget, limits::MAX_WORK by default, over the number of states + 8)")]
     StepBudget {
         /// The budget, steps.
         allowed: f64,

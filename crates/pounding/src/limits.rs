@@ -53,9 +53,10 @@ pub fn check_row(floors: &[usize]) -> Result<(), crate::Error> {
     Ok(())
 }
 
-/// The step budget of a system of `dim` state components (at least 1000 steps).
-pub fn step_budget(dim: usize) -> usize {
-    (MAX_WORK / (dim + 8) as f64).max(1e3) as usize
+/// The step budget of a system of `dim` state components for the work `max_work` ([`MAX_WORK`] by default),
+/// at least 1000 steps.
+pub fn step_budget(dim: usize, max_work: f64) -> usize {
+    (max_work / (dim + 8) as f64).max(1e3) as usize
 }
 
 /// Largest |ground acceleration|, m/s^2 (about 1e4 g): beyond any earthquake, and far from where the energies

@@ -98,9 +98,11 @@ impl<'a> Model<'a> {
         let sys = &self.system;
         let l = sys.layout();
         let n = l.dofs();
-        let pga = s
-            .record()
-            .accelerations()
+        // The peak ground acceleration within the analysis (a short analysis of a long record sees only its
+        // start).
+        let r = s.record();
+        let within = ((s.duration() - r.t0()) / r.dt()).floor().max(0.0) as usize + 1;
+        let pga = r.accelerations()[..within.min(r.npts())]
             .iter()
             .fold(0.0f64, |a, x| a.max(x.abs()));
         let w_floor = 2.0 * std::f64::consts::PI / s.duration();
@@ -109,22 +111,35 @@ impl<'a> Model<'a> {
         let mut v_scale = vec![0.0; n];
         let mut w_max: f64 = 0.0;
         let mut resolutions = Vec::new();
+        // Energy a building can take in: each mode's effective mass times its velocity under the peak ground
+        // acceleration (the modal masses sum to the building's mass; a stiff, heavy floor whose mode barely
+        // responds used to count with the fundamental mode's velocity, which loosened the control of the
+        // energy terms a hundredfold).
+        let mut e_scale = 0.0;
+        for b in s.buildings() {
+            let modes = b.structure.modes();
+            let m = b.structure.masses();
+            for (w, phi) in modes.omega.iter().zip(&modes.shapes) {
+                let gamma: f64 = phi.iter().zip(m).map(|(p, m)| p * m).sum();
+                let w = w.max(w_floor);
+                let v = (pga / (w * w)).max(1e-30) * w;
+                e_scale += gamma * gamma * v * v;
+            }
+        }
         for (b, &offset) in s.buildings().iter().zip(&self.offsets) {
             let omega = &b.structure.modes().omega;
             w_max = omega.iter().copied().fold(w_max, f64::max);
             let w = omega[0].max(w_floor);
             // What the building can reach, not a gap it may never close (a huge gap used to loosen the error
-            // control of every floor).
-            let u = (pga / (w * w)).max(1e-9);
+            // control of every floor); no floor of a nanometre either (a stiff floor that moves 1e-10 m had its
+            // energies controlled to 1e-3 only).
+            let u = (pga / (w * w)).max(1e-30);
             for i in offset..offset + omega.len() {
                 (u_scale[i], v_scale[i]) = (u, u * w);
                 atol[l.u(i)] = rtol * u;
                 atol[l.v(i)] = rtol * u * w;
             }
         }
-        let e_scale: f64 = (0..n)
-            .map(|i| sys.masses()[i] * v_scale[i] * v_scale[i])
-            .sum();
         atol[l.input()] = rtol * e_scale;
         atol[l.damping()] = rtol * e_scale;
         for (e, el) in sys.elements().iter().enumerate() {
@@ -135,12 +150,12 @@ impl<'a> Model<'a> {
                 .flatten()
                 .map(|&i| v_scale[i])
                 .fold(0.0, f64::max);
+            // Ten times the local error allowed in each end's rate (atol + rtol |v|, up to 2 atol).
+            let v_res: f64 = ends.iter().flatten().map(|&i| 20.0 * atol[l.v(i)]).sum();
+            resolutions.push((e, v_res));
             match &el.kind {
                 crate::element::Kind::Contact(c) => {
                     atol[r.start] = rtol * c.effective_mass() * v * v;
-                    // Ten times the local error allowed in each end's rate (atol + rtol |v|, up to 2 atol).
-                    let v_res: f64 = ends.iter().flatten().map(|&i| 20.0 * atol[l.v(i)]).sum();
-                    resolutions.push((e, v_res));
                 }
                 crate::element::Kind::Storey(_) => {
                     // Bouc–Wen: z is dimensionless and of order 1; then the work of its hysteretic part.
@@ -152,9 +167,7 @@ impl<'a> Model<'a> {
             }
         }
         for (e, v_res) in resolutions {
-            if let crate::element::Kind::Contact(c) = &mut self.system.elements_mut()[e].kind {
-                c.set_rate_resolution(v_res);
-            }
+            self.system.elements_mut()[e].set_rate_resolution(v_res);
         }
         (atol, 1e-3 * 2.0 * std::f64::consts::PI / w_max)
     }

@@ -84,7 +84,7 @@ pub(super) fn run(
     let dim = model.system.layout().dim();
     // The work is bounded before the run: an explicit step resolves the highest natural frequency, so a run
     // needs at least about w_max t_end / 3 steps (Dormand–Prince is stable to h w of about 3.3).
-    let budget = crate::limits::step_budget(dim);
+    let budget = crate::limits::step_budget(dim, opts.max_work);
     let w_max = s
         .buildings()
         .iter()

@@ -68,6 +68,7 @@ pub struct Contact {
     stop_at_end: bool,
     state: Engagement,
     v_res: f64,
+    armed: bool,
 }
 
 impl Contact {
@@ -85,6 +86,7 @@ impl Contact {
             stop_at_end: false,
             state: Engagement::Open,
             v_res: 0.0,
+            armed: true,
         }
     }
 
@@ -103,16 +105,54 @@ impl Contact {
                 turn: Turn::default(),
             },
             v_res: 0.0,
+            armed: true,
         }
     }
 
-    /// Sets the resolution of the penetration rate, m/s (0 by default): after a turning point, or while
-    /// released or resting, the ends count as approaching again only once `v` exceeds it. Floors pressed
-    /// together at rest sit on `v = 0`, where the sign of a computed `v` is the integrator's noise; without a
-    /// band the phase would flip between approach and restitution at one instant. Each change of phase now
-    /// needs a change of `v` of at least the resolution, which the dynamics must provide.
+    /// Sets the resolution of the penetration rate, m/s (0 by default). A phase entered at a rate within it
+    /// of 0 (every turning point; a touch, release or rest at a vanishing rate) arms its next change of
+    /// direction (turn, approach again, resume) only once the rate is clear of 0 by the resolution; until then
+    /// that change needs the rate to pass 0 by the resolution. Floors pressed together at rest sit on `v = 0`,
+    /// where the sign of a computed `v` is the integrator's noise; without the resolution the phase flipped
+    /// between approach and restitution at one instant. Changes after a real swing are located exactly at
+    /// `v = 0`.
     pub fn set_rate_resolution(&mut self, v_res: f64) {
         self.v_res = v_res;
+    }
+
+    /// The state's change-of-direction event function without its slack, m/s: `v` while approaching, `-v`
+    /// otherwise; `None` while open.
+    fn rate_event(&self, v: f64) -> Option<f64> {
+        match self.state {
+            Engagement::Open => None,
+            Engagement::Contact {
+                phase: Phase::Approach,
+                ..
+            } => Some(v),
+            _ => Some(-v),
+        }
+    }
+
+    /// The slack of the change-of-direction events, m/s: 0 once armed.
+    #[inline]
+    fn slack(&self) -> f64 {
+        if self.armed {
+            0.0
+        } else {
+            self.v_res
+        }
+    }
+
+    /// Whether the next change of direction is located at a rate of exactly 0.
+    pub fn armed(&self) -> bool {
+        self.armed
+    }
+
+    /// Arms the next change of direction once the rate `v` (m/s) is clear of 0 by the rate resolution.
+    pub fn rearm(&mut self, v: f64) {
+        if !self.armed && self.rate_event(v).is_none_or(|g| g > self.v_res) {
+            self.armed = true;
+        }
     }
 
     /// Gap at rest, m.
@@ -200,15 +240,17 @@ impl Contact {
         };
         match ev {
             Event::Touch => -d,
-            Event::Turn => v,
+            Event::Turn => v + self.slack(),
             Event::Kink => law.and_then(|l| l.kink(d, phase, &turn)).unwrap_or(1.0),
             Event::ZeroForce => law.map_or(1.0, |l| l.force(d, v, phase, &turn)),
             Event::Separation | Event::Rearm => d,
+            // A bilinear law reloads along its unloading line up to the last turning point, where the ends
+            // must still be approaching.
             Event::Reapproach => match law {
-                Some(ForceLaw::Bilinear { .. }) => turn.d - d,
-                _ => self.v_res - v,
+                Some(ForceLaw::Bilinear { .. }) => (turn.d - d).max(self.slack() - v),
+                _ => self.slack() - v,
             },
-            Event::Resume => self.v_res - v,
+            Event::Resume => self.slack() - v,
             _ => 1.0,
         }
     }
@@ -246,6 +288,12 @@ impl Contact {
 
     /// Applies `ev` at deformation `x` and rate `v`; `h` is the step the integrator would take next (s).
     pub fn apply(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
+        let out = self.change(ev, x, v, h)?;
+        self.armed = self.rate_event(v).is_none_or(|g| g > self.v_res);
+        Ok(out)
+    }
+
+    fn change(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
         let d = x - self.gap;
         let mut out = Transition::default();
         self.state = match (self.state, ev) {
@@ -355,6 +403,48 @@ impl Contact {
                 tension: self.tension,
             }),
             _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::{ContactModel, Model};
+
+    fn contact(model: Model, k: f64) -> Contact {
+        let mut c = Contact::new(
+            ContactModel::new(model, k, 0.5).unwrap().prepare().unwrap(),
+            0.0,
+            1.0e5,
+            1e-3,
+        );
+        c.set_rate_resolution(1e-6);
+        c
+    }
+
+    #[test]
+    fn a_turn_at_rest_waits_for_the_rate_to_clear_the_resolution() {
+        // Floors pressed together at rest: approach and restitution flipped at one instant (gap 0,
+        // k = 1e12 N/m, e = 0.01), and a bilinear law flipped between turn and reload (found by fuzzing).
+        for model in [Model::Papi, Model::ImpactMaterial] {
+            let mut c = contact(model, 1e12);
+            c.apply(Event::Touch, 1e-9, 0.1, 1e-3).unwrap();
+            // Touched at 0.1 m/s: the turn is located at v = 0 exactly.
+            assert_eq!(c.event_value(Event::Turn, 2e-9, 0.0), 0.0);
+            c.apply(Event::Turn, 2e-9, 0.0, 1e-3).unwrap();
+            // Turned at v = 0: a rate of either sign below the resolution is no new approach.
+            for v in [1e-9, -1e-9, 9e-7] {
+                assert!(
+                    c.event_value(Event::Reapproach, 2e-9, v) > 0.0,
+                    "{model} {v}"
+                );
+            }
+            assert!(c.event_value(Event::Reapproach, 2e-9, 1.1e-6) <= 0.0);
+            // Once the ends part by more than the resolution, a new approach is located at v = 0 (and, for the
+            // bilinear law, at the last turning point).
+            c.rearm(-2e-6);
+            assert_eq!(c.event_value(Event::Reapproach, 2e-9, 0.0), 0.0);
         }
     }
 }

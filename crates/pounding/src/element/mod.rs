@@ -200,6 +200,36 @@ impl Element {
         ev == Event::Kink
     }
 
+    /// Sets the resolution of the deformation rate, m/s: a change of direction (a contact's turn or new
+    /// approach, a storey's reversal) entered at a rate within it of 0 arms the next one only once the rate is
+    /// clear of 0 by it, so that a rate at the integrator's noise cannot flip the phase back and forth at one
+    /// instant.
+    pub fn set_rate_resolution(&mut self, v_res: f64) {
+        match &mut self.kind {
+            Kind::Storey(s) => s.set_rate_resolution(v_res),
+            Kind::Contact(c) => c.set_rate_resolution(v_res),
+        }
+    }
+
+    /// Arms the next change of direction once the rate `v` (m/s) is clear of 0 (called after every step
+    /// while disarmed); returns whether it is still disarmed.
+    #[inline]
+    pub fn rearm(&mut self, v: f64) -> bool {
+        match &mut self.kind {
+            Kind::Storey(s) => s.rearm(v),
+            Kind::Contact(c) => c.rearm(v),
+        }
+        !self.armed()
+    }
+
+    /// Whether the next change of direction is located at a rate of exactly 0.
+    pub fn armed(&self) -> bool {
+        match &self.kind {
+            Kind::Storey(s) => s.armed(),
+            Kind::Contact(c) => c.armed(),
+        }
+    }
+
     /// Applies `ev` at deformation `x` and rate `v`.
     pub fn apply(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
         match &mut self.kind {

@@ -168,6 +168,8 @@ pub struct Storey {
     law: StoreyLaw,
     c: f64,
     state: StoreyState,
+    v_res: f64,
+    armed: bool,
 }
 
 impl Storey {
@@ -184,7 +186,42 @@ impl Storey {
             },
             StoreyLaw::BoucWen { .. } => StoreyState::BoucWen { sign: 1.0 },
         };
-        Self { k, law, c, state }
+        Self {
+            k,
+            law,
+            c,
+            state,
+            v_res: 0.0,
+            armed: true,
+        }
+    }
+
+    /// Sets the resolution of the drift rate, m/s (0 by default). A reversal entered at a rate within it of 0
+    /// (every reversal, and a storey that barely deforms, whose drift rate is the integrator's noise) arms the
+    /// next reversal only once the rate is clear of 0 by the resolution; until then the next reversal needs
+    /// the rate to pass 0 by the resolution. Reversals after a real swing are located exactly at `x' = 0`.
+    pub fn set_rate_resolution(&mut self, v_res: f64) {
+        self.v_res = v_res;
+    }
+
+    /// The reversal's event function without its slack: the drift rate in the phase's direction, m/s.
+    fn rate_event(&self, v: f64) -> Option<f64> {
+        match self.state {
+            StoreyState::Yielding { sign, .. } | StoreyState::BoucWen { sign } => Some(sign * v),
+            _ => None,
+        }
+    }
+
+    /// Whether the next change of direction is located at a rate of exactly 0.
+    pub fn armed(&self) -> bool {
+        self.armed
+    }
+
+    /// Arms the next reversal once the drift rate `v` (m/s) is clear of 0 by the rate resolution.
+    pub fn rearm(&mut self, v: f64) {
+        if !self.armed && self.rate_event(v).is_none_or(|g| g > self.v_res) {
+            self.armed = true;
+        }
     }
 
     /// Initial stiffness, N/m.
@@ -262,7 +299,8 @@ impl Storey {
             } else {
                 az.powf(n)
             };
-            // beta |x'| |z|^(n-1) z = beta sign x' sgn(z) |z|^n while x' has the phase's sign.
+            // beta |x'| |z|^(n-1) z = beta sign x' sgn(z) |z|^n while x' has the phase's sign (up to the rate
+            // resolution just after a reversal).
             ds[0] = v * (1.0 - (beta * sign * z.signum() + gamma) * zn) * self.k / yield_force;
             let fz = (1.0 - a) * yield_force * z;
             ds[1] = fz * v;
@@ -334,13 +372,20 @@ impl Storey {
                 self.force(x, &[]) - (centre - fy)
             }
             (Event::Reversal, StoreyState::Yielding { sign, .. })
-            | (Event::Reversal, StoreyState::BoucWen { sign }) => sign * v,
+            | (Event::Reversal, StoreyState::BoucWen { sign }) => {
+                sign * v + if self.armed { 0.0 } else { self.v_res }
+            }
             _ => 1.0,
         }
     }
 
     /// Applies `ev` at drift `x` (m) and rate `v` (m/s).
-    pub fn apply(&mut self, ev: Event, x: f64, _v: f64) {
+    pub fn apply(&mut self, ev: Event, x: f64, v: f64) {
+        self.change(ev, x);
+        self.armed = self.rate_event(v).is_none_or(|g| g > self.v_res);
+    }
+
+    fn change(&mut self, ev: Event, x: f64) {
         let fy = self.law.yield_force().unwrap_or(f64::INFINITY);
         self.state = match (ev, self.state) {
             (
@@ -434,6 +479,24 @@ mod tests {
         let (_, h1) = st.energy(0.03, &[]);
         let cycle = h1 - 1980.0;
         close(cycle, 7200.0);
+    }
+
+    #[test]
+    fn a_reversal_entered_at_rest_waits_for_the_rate_to_clear_the_resolution() {
+        // A Bouc–Wen storey whose drift rate is noise around 0 (found by fuzzing: reversals at one instant).
+        let law = StoreyLaw::bouc_wen(1.0e5, 0.05, 1.0, 0.5, 0.5).unwrap();
+        let mut st = Storey::new(1.0e7, law, 0.0);
+        st.set_rate_resolution(1e-6);
+        // Loading in +x; a reversal at x' = 0 turns it to unloading in -x.
+        st.apply(Event::Reversal, 0.0, 0.0);
+        // Entered at x' = 0: noise of either sign below the resolution is no reversal back.
+        for v in [1e-9, -1e-9, 9e-7] {
+            assert!(st.event_value(Event::Reversal, 0.0, v) > 0.0, "{v}");
+        }
+        assert!(st.event_value(Event::Reversal, 0.0, 1.1e-6) <= 0.0);
+        // Once the rate has cleared the resolution in -x, the next reversal is located at x' = 0 exactly.
+        st.rearm(-2e-6);
+        assert_eq!(st.event_value(Event::Reversal, 0.0, 0.0), 0.0);
     }
 
     #[test]

@@ -136,6 +136,7 @@ pub fn run(
     // Events applied in a row without time advancing: a state that keeps firing is a bug or a model that
     // chatters, reported instead of looping.
     let mut stalled = 0usize;
+    let mut disarmed: Vec<usize> = Vec::new();
     let mut ending = Ending::Time;
     while t0 < t_end {
         while k_bp < bp_count && breakpoint(k_bp) <= t0 {
@@ -179,6 +180,9 @@ pub fn run(
             let (x, v) = sys.deformation(e, &ye);
             let h = dp.h();
             let tr = sys.elements_mut()[e].apply(ev, x, v, h)?;
+            if !sys.elements()[e].armed() && !disarmed.contains(&e) {
+                disarmed.push(e);
+            }
             dp.reset(&*sys, te, &ye, tr.h_max.unwrap_or(h));
             observer.event(&EventInfo {
                 system: sys,
@@ -197,6 +201,13 @@ pub fn run(
         } else if Some(t1) == motion_end && t1 < t_end {
             let h = dp.h();
             dp.reset(&*sys, t1, &ye, h);
+        }
+        // Elements whose next change of direction waits for their rate to clear its resolution.
+        if !disarmed.is_empty() {
+            disarmed.retain(|&e| {
+                let (_, v) = sys.deformation(e, &ye);
+                sys.elements_mut()[e].rearm(v)
+            });
         }
         y0.copy_from_slice(&ye);
         t0 = te;

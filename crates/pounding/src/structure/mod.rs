@@ -51,13 +51,16 @@ impl Modes {
             .collect()
     }
 
-    /// Mode shapes scaled so that the top floor is 1 (dimensionless).
-    pub fn shapes_roof_normalised(&self) -> Vec<Vec<f64>> {
+    /// Mode shapes scaled so that their largest component is 1 in magnitude, the top floor's component
+    /// positive (dimensionless). For the fundamental mode of a regular building, whose roof moves most, that is
+    /// the roof = 1 convention; unlike it, a mode in which the roof barely moves (a stiff, light floor low in
+    /// the building) stays finite.
+    pub fn shapes_normalised(&self) -> Vec<Vec<f64>> {
         self.shapes
             .iter()
             .map(|s| {
-                let top = *s.last().expect("a building has a floor");
-                s.iter().map(|x| x / top).collect()
+                let big = s.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                s.iter().map(|x| x / big).collect()
             })
             .collect()
     }
@@ -133,7 +136,7 @@ impl ShearBuilding {
         let finite = |x: &f64| x.is_finite();
         if !(w.iter().all(|w| w.is_finite() && *w > 0.0)
             && modes.shapes.iter().flatten().all(finite)
-            && modes.shapes_roof_normalised().iter().flatten().all(finite)
+            && modes.shapes_normalised().iter().flatten().all(finite)
             && finite(&rayleigh.0)
             && finite(&rayleigh.1))
         {
@@ -326,7 +329,7 @@ mod tests {
         let w = &b.modes().omega;
         assert!((w[0] * w[0] / (k / (2.0 * m)) - 1.0).abs() < 1e-13);
         assert!((w[1] * w[1] / (2.0 * k / m) - 1.0).abs() < 1e-13);
-        let shapes = b.modes().shapes_roof_normalised();
+        let shapes = b.modes().shapes_normalised();
         assert!((shapes[0][0] - 0.5).abs() < 1e-13 && (shapes[1][0] + 1.0).abs() < 1e-13);
     }
 
