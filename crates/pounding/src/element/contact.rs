@@ -11,7 +11,7 @@
 //! that, the same impact resumes).
 
 use crate::contact::{ForceLaw, Phase, PreparedContact, Tension, Turn};
-use crate::element::{Event, Transition};
+use crate::element::{Event, RateGate, Transition};
 use crate::engine::Piece;
 use crate::integrate::DenseComponent;
 use crate::Error;
@@ -67,8 +67,7 @@ pub struct Contact {
     source: LawSource,
     stop_at_end: bool,
     state: Engagement,
-    v_res: f64,
-    armed: bool,
+    pub(super) gate: RateGate,
 }
 
 impl Contact {
@@ -85,8 +84,7 @@ impl Contact {
             },
             stop_at_end: false,
             state: Engagement::Open,
-            v_res: 0.0,
-            armed: true,
+            gate: RateGate::default(),
         }
     }
 
@@ -104,25 +102,13 @@ impl Contact {
                 phase: Phase::Approach,
                 turn: Turn::default(),
             },
-            v_res: 0.0,
-            armed: true,
+            gate: RateGate::default(),
         }
     }
 
-    /// Sets the resolution of the penetration rate, m/s (0 by default). A phase entered at a rate within it
-    /// of 0 (every turning point; a touch, release or rest at a vanishing rate) arms its next change of
-    /// direction (turn, approach again, resume) only once the rate is clear of 0 by the resolution; until then
-    /// that change needs the rate to pass 0 by the resolution. Floors pressed together at rest sit on `v = 0`,
-    /// where the sign of a computed `v` is the integrator's noise; without the resolution the phase flipped
-    /// between approach and restitution at one instant. Changes after a real swing are located exactly at
-    /// `v = 0`.
-    pub fn set_rate_resolution(&mut self, v_res: f64) {
-        self.v_res = v_res;
-    }
-
-    /// The state's change-of-direction event function without its slack, m/s: `v` while approaching, `-v`
-    /// otherwise; `None` while open.
-    fn rate_event(&self, v: f64) -> Option<f64> {
+    /// The state's change-of-direction event function without its slack ([`RateGate`]), m/s: `v` while
+    /// approaching, `-v` otherwise; `None` while open.
+    pub(super) fn rate_event(&self, v: f64) -> Option<f64> {
         match self.state {
             Engagement::Open => None,
             Engagement::Contact {
@@ -130,28 +116,6 @@ impl Contact {
                 ..
             } => Some(v),
             _ => Some(-v),
-        }
-    }
-
-    /// The slack of the change-of-direction events, m/s: 0 once armed.
-    #[inline]
-    fn slack(&self) -> f64 {
-        if self.armed {
-            0.0
-        } else {
-            self.v_res
-        }
-    }
-
-    /// Whether the next change of direction is located at a rate of exactly 0.
-    pub fn armed(&self) -> bool {
-        self.armed
-    }
-
-    /// Arms the next change of direction once the rate `v` (m/s) is clear of 0 by the rate resolution.
-    pub fn rearm(&mut self, v: f64) {
-        if !self.armed && self.rate_event(v).is_none_or(|g| g > self.v_res) {
-            self.armed = true;
         }
     }
 
@@ -240,17 +204,17 @@ impl Contact {
         };
         match ev {
             Event::Touch => -d,
-            Event::Turn => v + self.slack(),
+            Event::Turn => v + self.gate.slack(),
             Event::Kink => law.and_then(|l| l.kink(d, phase, &turn)).unwrap_or(1.0),
             Event::ZeroForce => law.map_or(1.0, |l| l.force(d, v, phase, &turn)),
             Event::Separation | Event::Rearm => d,
             // A bilinear law reloads along its unloading line up to the last turning point, where the ends
             // must still be approaching.
             Event::Reapproach => match law {
-                Some(ForceLaw::Bilinear { .. }) => (turn.d - d).max(self.slack() - v),
-                _ => self.slack() - v,
+                Some(ForceLaw::Bilinear { .. }) => (turn.d - d).max(self.gate.slack() - v),
+                _ => self.gate.slack() - v,
             },
-            Event::Resume => self.slack() - v,
+            Event::Resume => self.gate.slack() - v,
             _ => 1.0,
         }
     }
@@ -289,7 +253,7 @@ impl Contact {
     /// Applies `ev` at deformation `x` and rate `v`; `h` is the step the integrator would take next (s).
     pub fn apply(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
         let out = self.change(ev, x, v, h)?;
-        self.armed = self.rate_event(v).is_none_or(|g| g > self.v_res);
+        self.gate.enter(self.rate_event(v));
         Ok(out)
     }
 
@@ -419,7 +383,7 @@ mod tests {
             1.0e5,
             1e-3,
         );
-        c.set_rate_resolution(1e-6);
+        c.gate.set_resolution(1e-6);
         c
     }
 
@@ -443,7 +407,7 @@ mod tests {
             assert!(c.event_value(Event::Reapproach, 2e-9, 1.1e-6) <= 0.0);
             // Once the ends part by more than the resolution, a new approach is located at v = 0 (and, for the
             // bilinear law, at the last turning point).
-            c.rearm(-2e-6);
+            c.gate.rearm(c.rate_event(-2e-6));
             assert_eq!(c.event_value(Event::Reapproach, 2e-9, 0.0), 0.0);
         }
     }

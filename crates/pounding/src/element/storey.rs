@@ -6,7 +6,7 @@
 //! the viscous force `a1 k x'` of each storey; the mass-proportional part acts between each floor and the
 //! ground and belongs to the structure, not to the storey.
 
-use crate::element::Event;
+use crate::element::{Event, RateGate};
 use crate::error::check;
 use crate::Error;
 
@@ -168,8 +168,7 @@ pub struct Storey {
     law: StoreyLaw,
     c: f64,
     state: StoreyState,
-    v_res: f64,
-    armed: bool,
+    pub(super) gate: RateGate,
 }
 
 impl Storey {
@@ -191,36 +190,16 @@ impl Storey {
             law,
             c,
             state,
-            v_res: 0.0,
-            armed: true,
+            gate: RateGate::default(),
         }
     }
 
-    /// Sets the resolution of the drift rate, m/s (0 by default). A reversal entered at a rate within it of 0
-    /// (every reversal, and a storey that barely deforms, whose drift rate is the integrator's noise) arms the
-    /// next reversal only once the rate is clear of 0 by the resolution; until then the next reversal needs
-    /// the rate to pass 0 by the resolution. Reversals after a real swing are located exactly at `x' = 0`.
-    pub fn set_rate_resolution(&mut self, v_res: f64) {
-        self.v_res = v_res;
-    }
-
-    /// The reversal's event function without its slack: the drift rate in the phase's direction, m/s.
-    fn rate_event(&self, v: f64) -> Option<f64> {
+    /// The reversal's event function without its slack ([`RateGate`]): the drift rate in the phase's
+    /// direction, m/s.
+    pub(super) fn rate_event(&self, v: f64) -> Option<f64> {
         match self.state {
             StoreyState::Yielding { sign, .. } | StoreyState::BoucWen { sign } => Some(sign * v),
             _ => None,
-        }
-    }
-
-    /// Whether the next change of direction is located at a rate of exactly 0.
-    pub fn armed(&self) -> bool {
-        self.armed
-    }
-
-    /// Arms the next reversal once the drift rate `v` (m/s) is clear of 0 by the rate resolution.
-    pub fn rearm(&mut self, v: f64) {
-        if !self.armed && self.rate_event(v).is_none_or(|g| g > self.v_res) {
-            self.armed = true;
         }
     }
 
@@ -372,9 +351,7 @@ impl Storey {
                 self.force(x, &[]) - (centre - fy)
             }
             (Event::Reversal, StoreyState::Yielding { sign, .. })
-            | (Event::Reversal, StoreyState::BoucWen { sign }) => {
-                sign * v + if self.armed { 0.0 } else { self.v_res }
-            }
+            | (Event::Reversal, StoreyState::BoucWen { sign }) => sign * v + self.gate.slack(),
             _ => 1.0,
         }
     }
@@ -382,7 +359,7 @@ impl Storey {
     /// Applies `ev` at drift `x` (m) and rate `v` (m/s).
     pub fn apply(&mut self, ev: Event, x: f64, v: f64) {
         self.change(ev, x);
-        self.armed = self.rate_event(v).is_none_or(|g| g > self.v_res);
+        self.gate.enter(self.rate_event(v));
     }
 
     fn change(&mut self, ev: Event, x: f64) {
@@ -486,7 +463,7 @@ mod tests {
         // A Bouc–Wen storey whose drift rate is noise around 0 (found by fuzzing: reversals at one instant).
         let law = StoreyLaw::bouc_wen(1.0e5, 0.05, 1.0, 0.5, 0.5).unwrap();
         let mut st = Storey::new(1.0e7, law, 0.0);
-        st.set_rate_resolution(1e-6);
+        st.gate.set_resolution(1e-6);
         // Loading in +x; a reversal at x' = 0 turns it to unloading in -x.
         st.apply(Event::Reversal, 0.0, 0.0);
         // Entered at x' = 0: noise of either sign below the resolution is no reversal back.
@@ -495,7 +472,7 @@ mod tests {
         }
         assert!(st.event_value(Event::Reversal, 0.0, 1.1e-6) <= 0.0);
         // Once the rate has cleared the resolution in -x, the next reversal is located at x' = 0 exactly.
-        st.rearm(-2e-6);
+        st.gate.rearm(st.rate_event(-2e-6));
         assert_eq!(st.event_value(Event::Reversal, 0.0, 0.0), 0.0);
     }
 
