@@ -90,10 +90,11 @@ impl<'a> Model<'a> {
     }
 
     /// Absolute tolerances of every state component for the relative tolerance `rtol`, and a first trial
-    /// step. Scales per building: the static displacement of its fundamental mode under the peak ground
-    /// acceleration (or, for a building so flexible that it barely responds within the analysis, of a mode
-    /// with the analysis duration as period), and the velocity that goes with it; energies from those. Gaps
-    /// play no part: a floor reaches what its building can reach.
+    /// step; sets each element's rate resolution from them ([`crate::element::RateGate`]). Scales per
+    /// building: the static displacement of its fundamental mode under the peak ground acceleration within
+    /// the analysis (or, for a building so flexible that it barely responds within the analysis, of a mode
+    /// with the analysis duration as period), and the velocity that goes with it; energies from the modal
+    /// effective masses and velocities. Gaps play no part: a floor reaches what its building can reach.
     pub fn tolerances(&mut self, s: &Scenario, rtol: f64) -> (Vec<f64>, f64) {
         let sys = &self.system;
         let l = sys.layout();
