@@ -3,9 +3,9 @@
 //! The penetration is `d = x - gap` with `x = u_a - u_b` (m), its rate `v = x'` (m/s). Each impact is one
 //! touch: its onset is located as an event, so `v_i` is the rate at the moment of touch, and the law is
 //! built afresh for it ([`crate::contact::PreparedContact::law`], with the element's effective mass). Within
-//! an impact the phase follows the rate (restitution from each turning point `v = 0`, approach again once `v`
-//! exceeds the contact's rate resolution, see [`Contact::set_rate_resolution`]), as in OpenSees' impact
-//! materials; a bilinear law reloads elastically up to its last turning point. The impact
+//! an impact the phase follows the rate (restitution from each turning point `v = 0`, approach again when `v`
+//! turns positive, within the element's rate resolution, see [`crate::element::RateGate`]), as in OpenSees'
+//! impact materials; a bilinear law reloads elastically up to its last turning point. The impact
 //! ends when `d` returns to 0, or, for a law whose force is clamped, when the force first reaches 0 in
 //! restitution; the contact then carries no force until `d` returns to 0 (if the ends approach again before
 //! that, the same impact resumes).
