@@ -1,8 +1,9 @@
 //! Best-of-N wall time of whole runs, for comparing two builds of the library in one session on a noisy
 //! machine: build this example in each tree (`cargo build --release --example best_of -p pounding`), run the
 //! two binaries in turn a few times (`best_of 10`), and compare the smallest times. Prints one line per case:
-//! name, best time (s), accepted steps. Used for the cost of the step budgets (docs/performance.md).
-use pounding::analysis::{Building, Scenario};
+//! name, best time (s), accepted steps. `best_of N PREFIX` runs only the cases whose name starts with PREFIX;
+//! `SUMMARY_ONLY=1` runs without histories. Used for the cost of the step budgets (docs/performance.md).
+use pounding::analysis::{Building, RunOptions, Scenario};
 use pounding::contact::{ContactModel, Model};
 use pounding::element::StoreyLaw;
 use pounding::ground_motion::Record;
@@ -51,12 +52,24 @@ fn main() {
         ("mdof_5/bilinear", pair(5, Model::Papi, 2e9, bil)),
         ("mdof_5/bouc-wen", pair(5, Model::Papi, 2e9, bw)),
     ];
+    let only = std::env::args().nth(2);
+    let summary = std::env::var("SUMMARY_ONLY").is_ok();
+    let opts = if summary {
+        RunOptions::summary_only()
+    } else {
+        RunOptions::default()
+    };
     for (name, s) in &cases {
+        if only.as_deref().is_some_and(|o| !name.starts_with(o)) {
+            continue;
+        }
         let mut best = f64::INFINITY;
         let mut steps = 0;
         for _ in 0..reps {
             let t = Instant::now();
-            let r = s.run().unwrap();
+            let r = s
+                .run_with_options(&opts, &mut |_| std::ops::ControlFlow::Continue(()))
+                .unwrap();
             best = best.min(t.elapsed().as_secs_f64());
             steps = r.statistics.steps;
         }
