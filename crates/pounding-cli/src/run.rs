@@ -296,14 +296,14 @@ fn print_results(s: &Scenario, r: &Results) {
             println!("e_post of the impacts: {lo:.4} to {hi:.4} (see impacts.csv)");
         }
     }
-    let e = &r.energy;
+    let e = &r.energy.end;
     println!(
         "\nenergy at the end, J: input {:.6e} = kinetic {:.4e} + strain {:.4e} + damping {:.6e} + hysteretic {:.6e} + contact {:.6e}",
         e.input, e.kinetic, e.strain, e.damping, e.hysteretic, e.contact
     );
     println!(
         "energy balance error: {:.2e} (largest over the run, relative to the largest energy)",
-        e.relative_error
+        r.energy.relative_error
     );
     println!(
         "integration: {} steps ({} rejected), {} events (contact touch, turn, separation; storey yield, reversal)",
@@ -378,7 +378,7 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
             })
         })
         .collect();
-    let e = &r.energy;
+    let e = &r.energy.end;
     json!({
         "scenario": file.display().to_string(),
         "record": {
@@ -401,7 +401,7 @@ fn summary_json(s: &Scenario, r: &Results, file: &Path, source: &str, scale: f64
             "hysteretic": num(e.hysteretic),
             "contact": num(e.contact),
         },
-        "energy_balance_error": num(e.relative_error),
+        "energy_balance_error": num(r.energy.relative_error),
         "statistics": {
             "steps": r.statistics.steps,
             "rejected_steps": r.statistics.rejected,

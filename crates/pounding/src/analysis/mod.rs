@@ -444,18 +444,9 @@ pub struct LinkResponse {
 /// Energies at the end of the analysis, J, and the worst relative error of the balance.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EnergyBalance {
-    /// Input energy `-int a_g 1^T M u' dt`, J.
-    pub input: f64,
-    /// Kinetic energy (relative motion), J.
-    pub kinetic: f64,
-    /// Strain energy of the storeys, J.
-    pub strain: f64,
-    /// Energy dissipated by structural damping, J.
-    pub damping: f64,
-    /// Energy dissipated by the hysteresis of the storeys, J.
-    pub hysteretic: f64,
-    /// Work of the contact forces, J (dissipated energy, plus what the contacts hold at the end).
-    pub contact: f64,
+    /// The six energy terms at the end of the analysis, J (the contact term is the dissipated energy plus
+    /// what the contacts hold at the end).
+    pub end: crate::engine::Energies,
     /// Largest `|input - kinetic - strain - damping - hysteretic - contact|` over the run (at every node),
     /// divided by the largest of `kinetic + strain + damping + hysteretic + |contact|` (dimensionless).
     pub relative_error: f64,
@@ -514,15 +505,7 @@ impl Results {
                 }
             }
         }
-        let e = &self.energy;
-        if bad(&[
-            e.input,
-            e.kinetic,
-            e.strain,
-            e.damping,
-            e.hysteretic,
-            e.contact,
-        ]) {
+        if bad(&self.energy.end.terms()) {
             return Some("energy".into());
         }
         if self.impacts.iter().any(|i| {

@@ -194,19 +194,13 @@ pub(super) fn run(
             }
         })
         .collect();
-    let e = sys.energies(y);
     let balance = &rec.balance;
     let results = Results {
         buildings,
         links,
         impacts,
         energy: EnergyBalance {
-            input: e.input,
-            kinetic: e.kinetic,
-            strain: e.strain,
-            damping: e.damping,
-            hysteretic: e.hysteretic,
-            contact: e.contact,
+            end: sys.energies(y),
             relative_error: if balance.scale > 0.0 {
                 balance.worst / balance.scale
             } else {
