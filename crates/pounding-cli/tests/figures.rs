@@ -449,15 +449,8 @@ fn run_figures_and_report_match_the_results() {
 
     // The report: well-formed, every figure and table, every impact, and nothing fetched from anywhere.
     let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
-    let opts = roxmltree::ParsingOptions {
-        allow_dtd: true,
-        ..roxmltree::ParsingOptions::default()
-    };
-    let doc = roxmltree::Document::parse_with_options(&html, opts).expect("report is well-formed");
-    let figures: Vec<&str> = doc
-        .descendants()
-        .filter_map(|n| n.attribute("data-figure"))
-        .collect();
+    let doc = report(&html);
+    let figures = figure_ids(&doc);
     assert_eq!(
         figures,
         [
@@ -732,15 +725,8 @@ fn inelastic_run_envelopes_and_loops_match_the_results() {
 
     // The report has both figures and a row per storey with its ductility.
     let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
-    let opts = roxmltree::ParsingOptions {
-        allow_dtd: true,
-        ..roxmltree::ParsingOptions::default()
-    };
-    let doc = roxmltree::Document::parse_with_options(&html, opts).expect("report is well-formed");
-    let figures: Vec<&str> = doc
-        .descendants()
-        .filter_map(|n| n.attribute("data-figure"))
-        .collect();
+    let doc = report(&html);
+    let figures = figure_ids(&doc);
     for id in ["envelopes", "hysteresis", "hysteresis-storeys"] {
         assert!(figures.contains(&id), "{id} in {figures:?}");
     }
@@ -821,4 +807,20 @@ fn figure_options_fail_cleanly() {
     assert!(!history.exists(), "no partial output");
     let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
     assert_eq!(left.len(), 1, "only the file the test made");
+}
+
+/// A report parsed as XML (it must be well-formed).
+fn report(html: &str) -> roxmltree::Document<'_> {
+    let opts = roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..roxmltree::ParsingOptions::default()
+    };
+    roxmltree::Document::parse_with_options(html, opts).expect("report is well-formed")
+}
+
+/// The figures of a report, by their `data-figure` ids, in order.
+fn figure_ids<'a>(doc: &'a roxmltree::Document) -> Vec<&'a str> {
+    doc.descendants()
+        .filter_map(|n| n.attribute("data-figure"))
+        .collect()
 }

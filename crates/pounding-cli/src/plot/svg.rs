@@ -406,6 +406,18 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map) {
     }
 }
 
+/// A legend's dot of radius `r` at `(cx, cy)`, px, filled with `color`, on a line of its own.
+fn legend_dot(s: &mut String, cx: f64, cy: f64, r: f64, color: &str) {
+    let _ = write!(
+        s,
+        "\n<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>",
+        px(cx),
+        px(cy),
+        px(r),
+        color
+    );
+}
+
 /// One dot of radius `r` at `(cx, cy)`, px.
 fn circle(s: &mut String, cx: f64, cy: f64, r: f64) {
     let _ = write!(
@@ -551,14 +563,7 @@ fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, 
         let sx = lx + 8.0;
         match ser.mark {
             Mark::Points { .. } => {
-                let _ = write!(
-                    s,
-                    "\n<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>",
-                    px(sx + 11.0),
-                    px(cy),
-                    px(ser.style.width + 1.2),
-                    ser.style.color
-                );
+                legend_dot(s, sx + 11.0, cy, ser.style.width + 1.2, ser.style.color);
             }
             Mark::Rug(_) => {
                 let _ = write!(
@@ -578,14 +583,7 @@ fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, 
                     stroke(&ser.style)
                 );
                 if ser.style.marker {
-                    let _ = write!(
-                        s,
-                        "\n<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>",
-                        px(sx + 11.0),
-                        px(cy),
-                        px(ser.style.width + 1.4),
-                        ser.style.color
-                    );
+                    legend_dot(s, sx + 11.0, cy, ser.style.width + 1.4, ser.style.color);
                 }
             }
         }
