@@ -190,6 +190,23 @@ pub struct ModelArgs {
     pub yield_ratio: f64,
 }
 
+impl ModelArgs {
+    /// The library's contact options these arguments give.
+    pub fn options(&self) -> pounding::contact::ContactOptions {
+        pounding::contact::ContactOptions {
+            model: self.model,
+            e: self.e,
+            exponent: self.n,
+            damping: self.damping.into(),
+            alpha: self.alpha,
+            reading: self.reading.into(),
+            tension: self.tension.map(Into::into),
+            max_penetration: self.max_penetration,
+            yield_ratio: self.yield_ratio,
+        }
+    }
+}
+
 /// The two bodies of one impact: m1 moving at v towards m2 at rest.
 #[derive(Args, Debug, Clone, Copy)]
 pub struct BodiesArgs {

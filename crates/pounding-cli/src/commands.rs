@@ -41,92 +41,17 @@ pub fn input(msg: impl Into<String>) -> CliError {
     CliError::Input(msg.into())
 }
 
-/// How options are spelled in messages: `--alpha 2` on the command line, `alpha = 2` in a scenario file.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Style {
-    /// Command-line options.
-    Flag,
-    /// Keys of a scenario file.
-    Key,
+/// An option as the command line spells it in messages: `--max-penetration`.
+pub fn flag(key: &str) -> String {
+    format!("--{key}")
 }
 
-impl Style {
-    /// The option `key` (written with dashes).
-    pub fn name(self, key: &str) -> String {
-        match self {
-            Style::Flag => format!("--{key}"),
-            Style::Key => key.replace('-', "_"),
-        }
-    }
-
-    /// A library error in these words.
-    pub fn error(self, e: pounding::Error) -> CliError {
-        match (self, e) {
-            (
-                Style::Key,
-                pounding::Error::Parameter {
-                    name,
-                    value,
-                    allowed,
-                },
-            ) => input(key_message(name, value, allowed)),
-            (_, e) => CliError::from(e),
-        }
-    }
-}
-
-/// A range error in a scenario file's words: `gap = -0.02 is not allowed: gap >= 0 (m)`.
-pub fn key_message(name: &str, value: f64, allowed: &str) -> String {
-    format!("{name} = {value} is not allowed: {allowed}")
-}
-
-/// The contact specification of `a` with stiffness `k` (N/m^n), with messages in `style`.
-pub fn contact(a: &ModelArgs, k: f64, style: Style) -> Result<ContactModel, CliError> {
-    let name = |key: &str| style.name(key);
-    let lib = |e| style.error(e);
-    let papi = a.model == Model::Papi;
-    if a.alpha.is_some() && !papi {
-        return Err(input(format!(
-            "{} applies to papi only, not to {}",
-            name("alpha"),
-            a.model
-        )));
-    }
-    if matches!(a.alpha, Some(AlphaRule::Given(_) | AlphaRule::Eq8))
-        && matches!(a.damping, crate::args::DampingArg::Exact)
-    {
-        return Err(input(format!(
-            "{} conflicts with {} exact (exact damping calibrates alpha); drop one",
-            name("alpha"),
-            name("damping")
-        )));
-    }
-    if a.max_penetration.is_some() && a.model != Model::ImpactMaterial {
-        return Err(input(format!(
-            "{} applies to impact-material only, not to {}",
-            name("max-penetration"),
-            a.model
-        )));
-    }
-    let mut s = ContactModel::new(a.model, k, a.e).map_err(lib)?;
-    if let Some(n) = a.n {
-        s = s.with_exponent(n).map_err(lib)?;
-    }
-    s = s
-        .with_damping(a.damping.into())
-        .with_reading(a.reading.into())
-        .with_yield_ratio(a.yield_ratio)
-        .map_err(lib)?;
-    if let Some(alpha) = a.alpha {
-        s = s.with_alpha(alpha).map_err(lib)?;
-    }
-    if let Some(t) = a.tension {
-        s = s.with_tension(t.into());
-    }
-    if let Some(d_m) = a.max_penetration {
-        s = s.with_max_penetration(d_m).map_err(lib)?;
-    }
-    Ok(s)
+/// The contact specification of `a` with stiffness `k` (N/m^n).
+pub fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
+    a.options().build(k).map_err(|e| match e {
+        pounding::contact::OptionError::Value(v) => CliError::from(v),
+        other => input(other.message(flag)),
+    })
 }
 
 /// One line describing a contact model and its damping: `papi, k = 2e9 N/m^1, e = 0.65, ...`.
@@ -314,7 +239,7 @@ fn m2_text(m2: f64) -> String {
 fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     check_plots(&a.plots)?;
     let bodies = TwoBodies::new(a.bodies.m1, a.bodies.m2, a.bodies.v)?;
-    let s = contact(&a.model, a.k, Style::Flag)?;
+    let s = contact(&a.model, a.k)?;
     let setup = bodies.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
@@ -386,7 +311,6 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
     let s = contact(
         &a.model,
         drop.equivalent_stiffness(n.max(f64::MIN_POSITIVE)),
-        Style::Flag,
     )?;
     let setup = drop.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
@@ -758,44 +682,13 @@ fn table2(json: bool) -> Result<(), CliError> {
 
 /// Loads the ground motion `a` describes: a built-in record by name, or a file in the given format.
 pub fn load_record(a: &RecordArgs) -> Result<Record, CliError> {
-    load_record_from(&a.file, a.format, a.dt, a.units, a.scale, Style::Flag)
+    load_record_from(&a.file, a.format, a.dt, a.units, a.scale)
 }
 
 /// Loads a built-in record called `source`, or the file at `source` in `format` (default: at2 for
 /// `*.at2`, time-acc otherwise), with values in `units` multiplied by `scale`.
-/// Largest record file read, bytes (1e7 samples at 25 characters each).
-pub const RECORD_FILE_LIMIT: u64 = 256 << 20;
-
-/// Largest scenario file read, bytes.
-pub const SCENARIO_FILE_LIMIT: u64 = 16 << 20;
-
-/// The text of a regular file of at most `limit` bytes; anything else (a FIFO or a device, which could block or
-/// never end; a file too large; text that is not UTF-8) is a one-line message naming `what`.
-pub fn read_text_file(path: &Path, what: &str, limit: u64) -> Result<String, String> {
-    use std::io::Read;
-    let shown = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read {what} {shown}: {e}"))?;
-    if !meta.is_file() {
-        return Err(format!(
-            "cannot read {what} {shown}: not a regular file (a folder, device or pipe)"
-        ));
-    }
-    if meta.len() > limit {
-        return Err(format!(
-            "{what} {shown} has {} bytes; allowed: at most {} MiB",
-            meta.len(),
-            limit >> 20
-        ));
-    }
-    let mut text = String::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(limit + 1).read_to_string(&mut text))
-        .map_err(|e| format!("cannot read {what} {shown}: {e}"))?;
-    if text.len() as u64 > limit {
-        return Err(format!("{what} {shown} is larger than {} MiB", limit >> 20));
-    }
-    Ok(text)
-}
+pub use pounding_study::input::read_text_file;
+use pounding_study::input::RECORD_FILE_LIMIT;
 
 pub fn load_record_from(
     source: &str,
@@ -803,9 +696,8 @@ pub fn load_record_from(
     dt: Option<f64>,
     units: UnitsArg,
     scale: f64,
-    style: Style,
 ) -> Result<Record, CliError> {
-    let name = |k: &str| style.name(k);
+    let name = flag;
     let record = match Record::builtin(source) {
         Some(r) => r,
         None => {
@@ -849,11 +741,11 @@ pub fn load_record_from(
                 pounding::ground_motion::RecordError::Parse(p) => {
                     input(format!("{}: {p}", path.display()))
                 }
-                pounding::ground_motion::RecordError::Value(v) => style.error(v),
+                pounding::ground_motion::RecordError::Value(v) => CliError::from(v),
             })?
         }
     };
-    record.scaled(scale).map_err(|e| style.error(e))
+    record.scaled(scale).map_err(CliError::from)
 }
 
 fn record_info(a: &RecordArgs) -> Result<(), CliError> {

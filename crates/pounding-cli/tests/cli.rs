@@ -448,7 +448,7 @@ fn bad_scenarios_get_one_line_with_file_and_line_exit_2_and_no_output() {
         (
             base.replace("model = \"papi\"", "model = \"papy\""),
             "unknown model",
-            "[[contact]]",
+            "model = \"papy\"",
         ),
         (base.replace("e = 0.65 ", "e = 1.5 "), "e = 1.5", "e = 1.5"),
         (
@@ -462,7 +462,7 @@ fn bad_scenarios_get_one_line_with_file_and_line_exit_2_and_no_output() {
         (
             base.replace("record = \"el-centro-1940\"", "record = \"kobe\""),
             "not a built-in record",
-            "[ground_motion]",
+            "record = \"kobe\"",
         ),
         (
             base.replace(

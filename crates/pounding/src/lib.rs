@@ -30,6 +30,8 @@ pub mod impact;
 pub mod integrate;
 pub mod limits;
 pub mod paper;
+#[cfg(feature = "serde")]
+pub mod scenario;
 pub mod structure;
 
 pub use error::Error;

@@ -21,9 +21,11 @@ pub mod calibrate;
 pub mod damping;
 mod law;
 mod model;
+mod options;
 
 pub use law::{ForceLaw, Phase, Turn};
 pub use model::{Family, Formula, Model, ModelInfo, MODELS};
+pub use options::{ContactOptions, OptionError};
 
 use crate::error::check;
 use crate::Error;

@@ -1,0 +1,259 @@
+//! Scenarios and records from files and from JSON values (Python dicts, a study's variants): read, parsed into
+//! the library's [`ScenarioDoc`] and validated once, with one-line messages that say where (the file and line,
+//! or the key's dotted path).
+
+use crate::InputError;
+use pounding::analysis::Scenario;
+use pounding::ground_motion::{Format, Record, RecordError};
+use pounding::scenario::{RecordSpec, ScenarioDoc};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+/// Largest record file read, bytes (1e7 samples at 25 characters each).
+pub const RECORD_FILE_LIMIT: u64 = 256 << 20;
+
+/// Largest scenario (or study) file read, bytes.
+pub const SCENARIO_FILE_LIMIT: u64 = 16 << 20;
+
+/// The text of a regular file of at most `limit` bytes; anything else (a FIFO or a device, which could block or
+/// never end; a file too large; text that is not UTF-8) is a one-line message naming `what`.
+pub fn read_text_file(path: &Path, what: &str, limit: u64) -> Result<String, String> {
+    use std::io::Read;
+    let shown = path.display();
+    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read {what} {shown}: {e}"))?;
+    if !meta.is_file() {
+        return Err(format!(
+            "cannot read {what} {shown}: not a regular file (a folder, device or pipe)"
+        ));
+    }
+    if meta.len() > limit {
+        return Err(format!(
+            "{what} {shown} has {} bytes; allowed: at most {} MiB",
+            meta.len(),
+            limit >> 20
+        ));
+    }
+    let mut text = String::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(limit + 1).read_to_string(&mut text))
+        .map_err(|e| format!("cannot read {what} {shown}: {e}"))?;
+    if text.len() as u64 > limit {
+        return Err(format!("{what} {shown} is larger than {} MiB", limit >> 20));
+    }
+    Ok(text)
+}
+
+/// How a record file is read when no format is given: AT2 for `*.at2`, two columns otherwise.
+pub fn default_format(path: &Path) -> Format {
+    if path
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("at2"))
+    {
+        Format::At2
+    } else {
+        Format::TimeAcc
+    }
+}
+
+/// The unscaled record `spec` names: a built-in, or its file read in its format (default
+/// [`default_format`]). Messages are one line; a library value error comes back as itself.
+pub fn read_record(spec: &RecordSpec) -> Result<Record, RecordError> {
+    if !spec.is_file {
+        return Record::builtin(&spec.source).ok_or_else(|| {
+            RecordError::Parse(pounding::ground_motion::ParseError {
+                line: 0,
+                message: format!("{:?} is not a built-in record: el-centro-1940", spec.source),
+            })
+        });
+    }
+    let path = Path::new(&spec.source);
+    let text = read_text_file(path, "record file", RECORD_FILE_LIMIT).map_err(|e| {
+        RecordError::Parse(pounding::ground_motion::ParseError {
+            line: 0,
+            message: format!("{e} (built-in records: el-centro-1940)"),
+        })
+    })?;
+    let stem = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("record");
+    let format = spec.format.unwrap_or_else(|| default_format(path));
+    Record::parse(stem, &text, format, spec.units)
+}
+
+/// A record error as one line: a parse error names the file.
+pub fn record_message(spec: &RecordSpec, e: RecordError) -> String {
+    match e {
+        RecordError::Parse(p) if p.line == 0 => p.message,
+        RecordError::Parse(p) => format!("{}: {p}", spec.source),
+        RecordError::Value(v) => v.to_string(),
+    }
+}
+
+/// A scenario, validated, with what a summary and a report say about where it came from.
+#[derive(Clone, Debug)]
+pub struct Loaded {
+    /// The scenario as parsed (a record file's path resolved against the scenario's folder).
+    pub doc: ScenarioDoc,
+    /// The validated scenario.
+    pub scenario: Scenario,
+    /// Where the scenario came from: its file's path, or a label for a dict or a study's variant.
+    pub label: String,
+    /// The ground-motion source as given (built-in name or path).
+    pub record_source: String,
+}
+
+/// A scenario file, as text and as a JSON value (for Python's `load_scenario` and for studies).
+pub struct ScenarioFile {
+    /// The file's path.
+    pub path: PathBuf,
+    /// Its text, as read.
+    pub text: String,
+    /// Its content as JSON, with a relative record `file` resolved against the file's folder.
+    pub value: Value,
+}
+
+impl ScenarioFile {
+    /// Reads the scenario file at `path`. TOML syntax errors name the line.
+    pub fn read(path: &Path) -> Result<Self, InputError> {
+        let text =
+            read_text_file(path, "scenario file", SCENARIO_FILE_LIMIT).map_err(InputError::new)?;
+        let table: toml::Table = toml::from_str(&text).map_err(|e| {
+            let msg = e.message().trim().replace('\n', " ");
+            match e.span() {
+                Some(span) => InputError::new(format!(
+                    "{}:{}: {msg}",
+                    path.display(),
+                    line_of(&text, span.start)
+                )),
+                None => InputError::new(format!("{}: {msg}", path.display())),
+            }
+        })?;
+        let mut value = serde_json::to_value(table)
+            .map_err(|e| InputError::new(format!("{}: {e}", path.display())))?;
+        resolve_record_file(&mut value, path.parent().unwrap_or(Path::new(".")));
+        Ok(ScenarioFile {
+            path: path.to_path_buf(),
+            text,
+            value,
+        })
+    }
+
+    /// The validated scenario; every message names the file and the line of the key it concerns.
+    pub fn load(&self) -> Result<Loaded, InputError> {
+        let label = self.path.display().to_string();
+        from_value(&self.value, &label).map_err(|(key, msg)| {
+            let line = key.as_deref().map_or(0, |k| key_line(&self.text, k)).max(1);
+            match key {
+                Some(_) => InputError::new(format!("{label}:{line}: {msg}")),
+                None => InputError::new(format!("{label}: {msg}")),
+            }
+        })
+    }
+}
+
+/// A relative `ground_motion.file` is relative to `base`: rewritten so that the value runs from anywhere.
+pub fn resolve_record_file(value: &mut Value, base: &Path) {
+    if let Some(Value::String(f)) = value.pointer_mut("/ground_motion/file") {
+        let p = Path::new(f.as_str());
+        if p.is_relative() {
+            *f = base.join(p).to_string_lossy().into_owned();
+        }
+    }
+}
+
+/// The scenario `value` parsed and validated; `label` says where it came from. An error is `(key, message)`:
+/// the dotted path it concerns (if known) and one line.
+pub fn from_value(value: &Value, label: &str) -> Result<Loaded, (Option<String>, String)> {
+    let doc = parse_doc(value)?;
+    let spec = doc
+        .ground_motion
+        .spec()
+        .map_err(|e| (Some(e.key), e.message))?;
+    let record = read_record(&spec)
+        .and_then(|r| r.scaled(spec.scale).map_err(RecordError::Value))
+        .map_err(|e| {
+            let msg = record_message(&spec, e);
+            (
+                Some("ground_motion".to_string()),
+                format!("[ground_motion] {msg}"),
+            )
+        })?;
+    build(doc, record, label, spec.source)
+}
+
+/// Validates `doc` under `record` (already loaded and scaled).
+pub fn build(
+    doc: ScenarioDoc,
+    record: Record,
+    label: &str,
+    record_source: String,
+) -> Result<Loaded, (Option<String>, String)> {
+    let scenario = doc.build(record).map_err(|e| (Some(e.key), e.message))?;
+    Ok(Loaded {
+        doc,
+        scenario,
+        label: label.to_string(),
+        record_source,
+    })
+}
+
+/// `value` as a [`ScenarioDoc`]; a shape error (an unknown key, a string for a number) names its path.
+pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)> {
+    serde_path_to_error::deserialize(value).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner().to_string();
+        if path == "." || path.is_empty() {
+            (Some(String::new()), inner)
+        } else {
+            let path = dotted(&path);
+            (Some(path.clone()), format!("{path}: {inner}"))
+        }
+    })
+}
+
+/// `contact[0].gap` (serde_path_to_error's spelling) as `contact.0.gap`.
+fn dotted(path: &str) -> String {
+    path.replace('[', ".").replace(']', "")
+}
+
+/// A dict's message: `key: message` (the key is the dotted path; none for the whole scenario).
+pub fn dict_message(key: Option<String>, msg: String) -> String {
+    match key {
+        Some(k) if !k.is_empty() && !msg.starts_with(&format!("{k}:")) => format!("{k}: {msg}"),
+        _ => msg,
+    }
+}
+
+/// 1-based line of byte `offset` of `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    text[..offset.min(text.len())]
+        .bytes()
+        .filter(|b| *b == b'\n')
+        .count()
+        + 1
+}
+
+/// The line of the key at dotted path `key` in the TOML `text`; the closest entry that exists if the key is
+/// not written (a default), or the key names a list by its singular (`yield_force` of `yield_forces`).
+pub fn key_line(text: &str, key: &str) -> usize {
+    let Ok(doc) = toml_edit::ImDocument::parse(text) else {
+        return 0;
+    };
+    let mut best = None;
+    let mut item = doc.as_item();
+    for part in key.split('.').filter(|p| !p.is_empty()) {
+        let next = match part.parse::<usize>() {
+            Ok(i) => item.get(i),
+            Err(_) => [part.to_string(), format!("{part}s"), format!("{part}es")]
+                .iter()
+                .find_map(|k| item.get(k.as_str())),
+        };
+        let Some(next) = next else { break };
+        if let Some(span) = next.span() {
+            best = Some(span.start);
+        }
+        item = next;
+    }
+    best.map_or(0, |s| line_of(text, s))
+}

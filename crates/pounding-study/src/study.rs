@@ -1,0 +1,438 @@
+//! A study file (TOML): a base scenario and axes, expanded into the scenarios of a sweep.
+//!
+//! ```toml
+//! scenario = "two-sdof.toml"          # the base scenario, relative to the study file
+//! [axes]
+//! record = ["el-centro-1940", "records/*.AT2"]   # built-ins, files, folders (every file in it), globs
+//! scale = [0.5, 1.0, 2.0]             # ground_motion.scale
+//! contact.0.gap = [0.005, 0.01, 0.02] # any scenario key, by dotted path (list entries from 0)
+//! "contact.0.model" = ["papi", "hertzdamp"]
+//! ```
+//!
+//! The axes combine as their Cartesian product (the last axis varies fastest), or, with `[[run]]` entries in
+//! place of `[axes]`, as an explicit list: each entry sets the keys it names.
+
+use crate::input::{read_text_file, ScenarioFile, SCENARIO_FILE_LIMIT};
+use crate::InputError;
+use serde_json::{Map, Value};
+use std::path::{Path, PathBuf};
+
+/// One axis of a study: a name (`record`, `scale` or a dotted scenario key) and its values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axis {
+    /// `record`, `scale` or the dotted key path.
+    pub name: String,
+    /// The values, as written (a record's value is its source: a built-in's name or a file's path).
+    pub values: Vec<Value>,
+}
+
+/// One scenario of a study.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Variant {
+    /// The scenario.
+    pub value: Value,
+    /// The value of each axis (in [`Study::axes`] order), as shown in `runs.csv`.
+    pub coords: Vec<String>,
+}
+
+/// A study read from its file, expanded.
+#[derive(Clone, Debug)]
+pub struct Study {
+    /// The study file.
+    pub path: PathBuf,
+    /// The base scenario file.
+    pub base: PathBuf,
+    /// The axes (for an explicit list: every key any entry sets).
+    pub axes: Vec<Axis>,
+    /// The scenarios, in study order.
+    pub variants: Vec<Variant>,
+}
+
+/// Largest number of runs in one study.
+pub const MAX_RUNS: usize = 10_000_000;
+
+fn err(path: &Path, msg: impl std::fmt::Display) -> InputError {
+    InputError::new(format!("{}: {msg}", path.display()))
+}
+
+/// `table` with nested tables flattened into dotted keys (`contact.0.gap = [...]` is written as nested
+/// tables by TOML). A leaf is anything but a table.
+fn flatten(prefix: &str, table: &Map<String, Value>, out: &mut Vec<(String, Value)>) {
+    for (k, v) in table {
+        let key = if prefix.is_empty() {
+            k.clone()
+        } else {
+            format!("{prefix}.{k}")
+        };
+        match v {
+            Value::Object(t) => flatten(&key, t, out),
+            other => out.push((key, other.clone())),
+        }
+    }
+}
+
+/// Sets the key at dotted `path` of `value` to `new`. Entries of lists must exist; a missing table on the way
+/// is created (the schema then says whether its key exists).
+fn set_path(value: &mut Value, path: &str, new: Value) -> Result<(), String> {
+    let parts: Vec<&str> = path.split('.').collect();
+    let mut cur = value;
+    for (n, part) in parts.iter().enumerate() {
+        let last = n + 1 == parts.len();
+        cur = match cur {
+            Value::Array(a) => {
+                let i: usize = part
+                    .parse()
+                    .map_err(|_| format!("{part:?} is not an entry number of a list"))?;
+                let len = a.len();
+                a.get_mut(i).ok_or_else(|| {
+                    format!(
+                        "the base scenario has {len} entries there (numbered from 0), not {}",
+                        i + 1
+                    )
+                })?
+            }
+            Value::Object(m) => {
+                if last {
+                    m.insert(part.to_string(), new);
+                    return Ok(());
+                }
+                m.entry(part.to_string())
+                    .or_insert_with(|| Value::Object(Map::new()))
+            }
+            _ => return Err(format!("{part:?} is inside a value, not a table or list")),
+        };
+        if last {
+            *cur = new;
+            return Ok(());
+        }
+    }
+    Ok(())
+}
+
+/// The record sources a `record` axis value names, relative to `dir`: a built-in, a file, every file of a
+/// folder, or the files a glob matches (sorted).
+fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
+    let Value::String(s) = v else {
+        return Err(format!(
+            "record = {v} is not allowed: a built-in name, a file, a folder or a glob"
+        ));
+    };
+    if pounding::ground_motion::Record::builtin(s).is_some() {
+        return Ok(vec![s.clone()]);
+    }
+    let p = dir.join(s);
+    if s.contains(['*', '?', '[']) {
+        let pattern = p.to_string_lossy().into_owned();
+        let mut found: Vec<String> = glob::glob(&pattern)
+            .map_err(|e| format!("record = {s:?} is not a valid glob: {e}"))?
+            .filter_map(Result::ok)
+            .filter(|f| f.is_file())
+            .map(|f| f.to_string_lossy().into_owned())
+            .collect();
+        found.sort();
+        if found.is_empty() {
+            return Err(format!("record = {s:?} matches no file"));
+        }
+        return Ok(found);
+    }
+    if p.is_dir() {
+        let mut found: Vec<String> = std::fs::read_dir(&p)
+            .map_err(|e| format!("record = {s:?}: cannot read the folder: {e}"))?
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .filter(|f| {
+                f.is_file()
+                    && !f
+                        .file_name()
+                        .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+            })
+            .map(|f| f.to_string_lossy().into_owned())
+            .collect();
+        found.sort();
+        if found.is_empty() {
+            return Err(format!("record = {s:?} is a folder with no files"));
+        }
+        return Ok(found);
+    }
+    if p.is_file() {
+        return Ok(vec![p.to_string_lossy().into_owned()]);
+    }
+    Err(format!(
+        "record = {s:?} is neither a built-in record (el-centro-1940), a file, a folder nor a glob that matches a file"
+    ))
+}
+
+/// Sets the ground motion of `scenario` to `source` (a built-in or a file), keeping its units, and its format
+/// and time step if it already read a file.
+fn set_record(scenario: &mut Value, source: &str) {
+    let gm = scenario
+        .as_object_mut()
+        .map(|m| {
+            m.entry("ground_motion")
+                .or_insert_with(|| Value::Object(Map::new()))
+        })
+        .and_then(Value::as_object_mut);
+    let Some(gm) = gm else { return };
+    let was_file = gm.contains_key("file");
+    gm.remove("record");
+    gm.remove("file");
+    if pounding::ground_motion::Record::builtin(source).is_some() {
+        gm.remove("format");
+        gm.remove("dt");
+        gm.insert("record".into(), Value::String(source.into()));
+    } else {
+        if !was_file {
+            gm.remove("format");
+            gm.remove("dt");
+        }
+        gm.insert("file".into(), Value::String(source.into()));
+    }
+}
+
+/// How one axis value is shown in `runs.csv`.
+fn show(v: &Value) -> String {
+    match v {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+/// Applies the setting `name = v` to `scenario`.
+fn apply(scenario: &mut Value, name: &str, v: &Value) -> Result<(), String> {
+    match name {
+        "record" => {
+            set_record(scenario, v.as_str().unwrap_or_default());
+            Ok(())
+        }
+        "scale" => set_path(scenario, "ground_motion.scale", v.clone()),
+        path => set_path(scenario, path, v.clone()),
+    }
+}
+
+impl Study {
+    /// Reads and expands the study file at `path`. Bad input (an axis that names no scenario key, an empty
+    /// axis, a record glob that matches nothing, an unknown study key) is one line naming the file.
+    pub fn read(path: &Path) -> Result<Study, InputError> {
+        let text =
+            read_text_file(path, "study file", SCENARIO_FILE_LIMIT).map_err(InputError::new)?;
+        let table: toml::Table =
+            toml::from_str(&text).map_err(|e| err(path, e.message().trim().replace('\n', " ")))?;
+        let top = serde_json::to_value(table).map_err(|e| err(path, e))?;
+        let Value::Object(top) = top else {
+            return Err(err(path, "not a table"));
+        };
+        for k in top.keys() {
+            if !["scenario", "axes", "run"].contains(&k.as_str()) {
+                return Err(err(
+                    path,
+                    format!("unknown key {k:?}; allowed: scenario, axes, run"),
+                ));
+            }
+        }
+        let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+        let base = match top.get("scenario") {
+            Some(Value::String(s)) => dir.join(s),
+            _ => {
+                return Err(err(
+                    path,
+                    "scenario = \"base.toml\" is required: the base scenario, relative to the study file",
+                ))
+            }
+        };
+        let base_file = ScenarioFile::read(&base)?;
+        let (axes, variants) = match (top.get("axes"), top.get("run")) {
+            (Some(Value::Object(a)), None) => product(path, &dir, &base_file.value, a)?,
+            (None, Some(Value::Array(runs))) => list(path, &dir, &base_file.value, runs)?,
+            (None, None) => {
+                return Err(err(
+                    path,
+                    "[axes] or [[run]] entries are required: what the study varies",
+                ))
+            }
+            _ => return Err(err(
+                path,
+                "give [axes] (a Cartesian product) or [[run]] entries (an explicit list), not both",
+            )),
+        };
+        let study = Study {
+            path: path.to_path_buf(),
+            base,
+            axes,
+            variants,
+        };
+        study.check_keys()?;
+        Ok(study)
+    }
+
+    /// Every key an axis sets must be a key of the scenario schema.
+    fn check_keys(&self) -> Result<(), InputError> {
+        for v in &self.variants {
+            if let Err((Some(k), m)) = crate::input::parse_doc(&v.value) {
+                if m.contains("unknown field") {
+                    if let Some(axis) = self.axes.iter().find(|a| {
+                        a.name == k
+                            || k.starts_with(&format!("{}.", a.name))
+                            || a.name.starts_with(&format!("{k}."))
+                    }) {
+                        return Err(err(
+                            &self.path,
+                            format!("axis {:?} names no scenario key: {m}", axis.name),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The scenarios with their labels, for [`crate::sweep::prepare`].
+    pub fn scenarios(&self) -> Vec<(Value, String)> {
+        self.variants
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (v.value.clone(), format!("{}#{i}", self.path.display())))
+            .collect()
+    }
+}
+
+/// The axes of `[axes]` (record sources expanded) and their Cartesian product over `base`.
+fn product(
+    path: &Path,
+    dir: &Path,
+    base: &Value,
+    axes_table: &Map<String, Value>,
+) -> Result<(Vec<Axis>, Vec<Variant>), InputError> {
+    let mut flat = Vec::new();
+    flatten("", axes_table, &mut flat);
+    if flat.is_empty() {
+        return Err(err(path, "[axes] is empty: give at least one axis"));
+    }
+    let mut axes = Vec::new();
+    let mut total: usize = 1;
+    for (name, v) in flat {
+        let Value::Array(values) = v else {
+            return Err(err(
+                path,
+                format!("axes.{name} = {v} is not allowed: a list of values"),
+            ));
+        };
+        if values.is_empty() {
+            return Err(err(
+                path,
+                format!("axes.{name} = [] is empty: give at least one value"),
+            ));
+        }
+        let values = if name == "record" {
+            let mut all = Vec::new();
+            for v in &values {
+                all.extend(
+                    record_sources(dir, v)
+                        .map_err(|m| err(path, format!("axes.{m}")))?
+                        .into_iter()
+                        .map(Value::String),
+                );
+            }
+            all
+        } else {
+            // The path must exist in the base (up to a key the schema may add).
+            let mut probe = base.clone();
+            apply(&mut probe, &name, &values[0])
+                .map_err(|m| err(path, format!("axis {name:?} names no scenario key: {m}")))?;
+            values
+        };
+        total = total.saturating_mul(values.len());
+        axes.push(Axis { name, values });
+    }
+    if total > MAX_RUNS {
+        return Err(err(
+            path,
+            format!("the axes make {total} runs; allowed: at most 1e7"),
+        ));
+    }
+    let mut variants = Vec::with_capacity(total);
+    for n in 0..total {
+        let mut value = base.clone();
+        let mut coords = Vec::with_capacity(axes.len());
+        let mut rest = n;
+        let mut idx = vec![0; axes.len()];
+        for (a, axis) in axes.iter().enumerate().rev() {
+            idx[a] = rest % axis.values.len();
+            rest /= axis.values.len();
+        }
+        for (a, axis) in axes.iter().enumerate() {
+            let v = &axis.values[idx[a]];
+            apply(&mut value, &axis.name, v)
+                .map_err(|m| err(path, format!("axis {:?}: {m}", axis.name)))?;
+            coords.push(show(v));
+        }
+        variants.push(Variant { value, coords });
+    }
+    Ok((axes, variants))
+}
+
+/// The explicit list of `[[run]]` entries over `base`.
+fn list(
+    path: &Path,
+    dir: &Path,
+    base: &Value,
+    runs: &[Value],
+) -> Result<(Vec<Axis>, Vec<Variant>), InputError> {
+    if runs.is_empty() {
+        return Err(err(path, "[[run]] has no entries"));
+    }
+    let mut names: Vec<String> = Vec::new();
+    let mut entries = Vec::new();
+    for (i, r) in runs.iter().enumerate() {
+        let Value::Object(t) = r else {
+            return Err(err(path, format!("run {i} is not a table")));
+        };
+        let mut flat = Vec::new();
+        flatten("", t, &mut flat);
+        for (k, _) in &flat {
+            if !names.contains(k) {
+                names.push(k.clone());
+            }
+        }
+        entries.push(flat);
+    }
+    let mut variants = Vec::new();
+    for (i, flat) in entries.iter().enumerate() {
+        let mut value = base.clone();
+        for (k, v) in flat {
+            let v = if k == "record" {
+                let s = record_sources(dir, v).map_err(|m| err(path, format!("run {i}: {m}")))?;
+                if s.len() != 1 {
+                    return Err(err(
+                        path,
+                        format!(
+                            "run {i}: record = {v} names {} files; a run takes one",
+                            s.len()
+                        ),
+                    ));
+                }
+                Value::String(s[0].clone())
+            } else {
+                v.clone()
+            };
+            apply(&mut value, k, &v)
+                .map_err(|m| err(path, format!("run {i}: {k:?} names no scenario key: {m}")))?;
+        }
+        let coords = names
+            .iter()
+            .map(|n| {
+                flat.iter()
+                    .find(|(k, _)| k == n)
+                    .map_or(String::new(), |(_, v)| show(v))
+            })
+            .collect();
+        variants.push(Variant { value, coords });
+    }
+    let axes = names
+        .into_iter()
+        .map(|name| Axis {
+            values: Vec::new(),
+            name,
+        })
+        .collect();
+    Ok((axes, variants))
+}

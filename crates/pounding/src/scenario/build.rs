@@ -1,0 +1,458 @@
+//! Validation of a [`ScenarioDoc`] into the library's types, once, with one-line messages that name the key.
+
+use super::{AlphaDoc, BuildingDoc, ContactDoc, GroundMotionDoc, ScenarioDoc, SchemaError};
+use crate::analysis::{Building, Scenario};
+use crate::contact::{AlphaRule, ContactOptions, Damping, Model, OptionError, Reading, Tension};
+use crate::element::StoreyLaw;
+use crate::ground_motion::{Format, Record, Units};
+use crate::structure::ShearBuilding;
+use crate::Error;
+
+/// The record a scenario needs, checked: a built-in (`file == None`) or a file, how to read it, and the scale.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecordSpec {
+    /// The built-in record's name, or the file's path as given.
+    pub source: String,
+    /// Whether `source` is a file.
+    pub is_file: bool,
+    /// The file's format, if given; `Values` carries its `dt` (s).
+    pub format: Option<Format>,
+    /// Units of the file's accelerations.
+    pub units: Units,
+    /// Scale factor on the accelerations (dimensionless).
+    pub scale: f64,
+}
+
+/// `key = "word"` must be one of `allowed`.
+fn word<'a>(key: &str, path: &str, v: &'a str, allowed: &[&str]) -> Result<&'a str, SchemaError> {
+    if allowed.contains(&v) {
+        Ok(v)
+    } else {
+        Err(SchemaError::new(
+            path,
+            format!(
+                "{key} = {v:?} is not allowed: one of {}",
+                allowed.join(", ")
+            ),
+        ))
+    }
+}
+
+/// A library error in a scenario's words, about the entry at `entry` (`what: ` before it if not empty).
+fn lib(entry: &str, what: &str, e: Error) -> SchemaError {
+    let key = match &e {
+        Error::Parameter { name, .. } | Error::Length { name, .. } | Error::Choice { name, .. } => {
+            format!("{entry}.{name}")
+        }
+        _ => entry.to_string(),
+    };
+    let msg = e.to_string();
+    if what.is_empty() {
+        SchemaError::new(key, msg)
+    } else {
+        SchemaError::new(key, format!("{what}: {msg}"))
+    }
+}
+
+impl GroundMotionDoc {
+    /// The record this ground motion names, checked: exactly one of `record` and `file`; `format` and `dt`
+    /// only with a file; `units` one of `g`, `m/s2`, `cm/s2`.
+    pub fn spec(&self) -> Result<RecordSpec, SchemaError> {
+        let at = "ground_motion";
+        let (source, is_file) = match (&self.record, &self.file) {
+            (Some(r), None) => (r.clone(), false),
+            (None, Some(f)) => (f.clone(), true),
+            _ => {
+                return Err(SchemaError::new(
+                    at,
+                    "[ground_motion] needs exactly one of record = \"el-centro-1940\" or file = \"path\"",
+                ))
+            }
+        };
+        if !is_file {
+            if self.format.is_some() || self.dt.is_some() {
+                return Err(SchemaError::new(
+                    at,
+                    "format and dt apply to a record file (file = ...), not to a built-in record",
+                ));
+            }
+            if Record::builtin(&source).is_none() {
+                return Err(SchemaError::new(
+                    "ground_motion.record",
+                    format!("record = {source:?} is not a built-in record: el-centro-1940 (for a file, use file = \"path\")"),
+                ));
+            }
+        }
+        let format = match self.format.as_deref() {
+            None => None,
+            Some(f) => Some(
+                match word(
+                    "format",
+                    "ground_motion.format",
+                    f,
+                    &["at2", "time-acc", "values"],
+                )? {
+                    "at2" => Format::At2,
+                    "time-acc" => Format::TimeAcc,
+                    _ => match self.dt {
+                        Some(dt) => Format::Values { dt },
+                        None => {
+                            return Err(SchemaError::new(
+                                "ground_motion.format",
+                                "[ground_motion] format = values needs dt (the time step, s)",
+                            ))
+                        }
+                    },
+                },
+            ),
+        };
+        if self.dt.is_some() && !matches!(format, Some(Format::Values { .. })) {
+            return Err(SchemaError::new(
+                "ground_motion.dt",
+                "[ground_motion] dt applies to format = values only (other formats carry their time step)",
+            ));
+        }
+        let units = match word(
+            "units",
+            "ground_motion.units",
+            &self.units,
+            &["g", "m/s2", "cm/s2"],
+        )? {
+            "g" => Units::G,
+            "m/s2" => Units::MPerS2,
+            _ => Units::CmPerS2,
+        };
+        Ok(RecordSpec {
+            source,
+            is_file,
+            format,
+            units,
+            scale: self.scale,
+        })
+    }
+}
+
+impl ScenarioDoc {
+    /// The scenario under `record` (the one [`GroundMotionDoc::spec`] names, loaded and scaled by the
+    /// caller), validated: buildings, settings and contacts.
+    pub fn build(&self, record: Record) -> Result<Scenario, SchemaError> {
+        if self.building.is_empty() {
+            return Err(SchemaError::new(
+                "",
+                "no [[building]] entries: a scenario needs at least one building",
+            ));
+        }
+        // The size of the row, before any building's modes are computed.
+        let floors: Vec<usize> = self.building.iter().map(|b| b.masses.len()).collect();
+        crate::limits::check_row(&floors).map_err(|e| lib("building.0", "", e))?;
+        let mut buildings = Vec::new();
+        for (i, b) in self.building.iter().enumerate() {
+            let at = format!("building.{i}");
+            if b.name.is_empty()
+                || b.name.len() > 64
+                || b.name.contains([',', '"', '|'])
+                || b.name.chars().any(char::is_control)
+            {
+                return Err(SchemaError::new(
+                    format!("{at}.name"),
+                    format!(
+                        "name = {:?} is not allowed: 1 to 64 bytes, without commas, quotes, | or control characters",
+                        b.name
+                    ),
+                ));
+            }
+            let what = format!("building {:?}", b.name);
+            let laws = storey_laws(&at, &what, b)?;
+            let structure = ShearBuilding::new(
+                b.masses.clone(),
+                b.stiffnesses.clone(),
+                b.heights.clone(),
+                b.damping_ratio,
+            )
+            .and_then(|s| s.with_storey_laws(laws))
+            .map_err(|e| lib(&at, &what, e))?;
+            buildings.push(Building {
+                name: b.name.clone(),
+                structure,
+            });
+        }
+        let last = format!("building.{}", self.building.len() - 1);
+        let mut scenario = Scenario::new(buildings, record).map_err(|e| lib(&last, "", e))?;
+
+        if let Some(a) = &self.analysis {
+            let e = |e| lib("analysis", "", e);
+            if let Some(d) = a.duration {
+                scenario = scenario.with_duration(d).map_err(e)?;
+            }
+            if let Some(d) = a.output_dt {
+                scenario = scenario.with_output_dt(d).map_err(e)?;
+            }
+            if let Some(t) = a.tolerance {
+                scenario = scenario.with_tolerance(t).map_err(e)?;
+            }
+            if let Some(v) = a.min_impact_velocity {
+                scenario = scenario.with_min_impact_velocity(v).map_err(e)?;
+            }
+        }
+        if scenario.output_samples() > crate::limits::MAX_OUTPUT_SAMPLES {
+            return Err(SchemaError::new(
+                "analysis.output_dt",
+                format!(
+                    "duration / output_dt = {:e} output samples; allowed: at most 1e7 (raise output_dt)",
+                    scenario.duration() / scenario.output_dt()
+                ),
+            ));
+        }
+
+        for (i, c) in self.contact.iter().enumerate() {
+            scenario = contact(scenario, &format!("contact.{i}"), c)?;
+        }
+        Ok(scenario)
+    }
+}
+
+/// The storey laws of a building entry: `storey_model` (default linear), `yield_forces`, `post_yield_ratio`
+/// (default 0, elastic–perfectly-plastic) and `bouc_wen` (default n = 1, beta = gamma = 0.5).
+fn storey_laws(at: &str, what: &str, b: &BuildingDoc) -> Result<Vec<StoreyLaw>, SchemaError> {
+    let storeys = b.masses.len();
+    let err =
+        |key: &str, msg: String| SchemaError::new(format!("{at}.{key}"), format!("{what}: {msg}"));
+    let list = |key: &str, len: usize| {
+        err(
+            key,
+            format!("{key} has {len} values, but there are {storeys} storeys: give one per storey, or one for all"),
+        )
+    };
+    let models = match &b.storey_model {
+        None => vec!["linear".to_string(); storeys],
+        Some(m) => m.per_storey(storeys).map_err(|n| list("storey_model", n))?,
+    };
+    for m in &models {
+        if !["linear", "bilinear", "bouc-wen"].contains(&m.as_str()) {
+            return Err(err(
+                "storey_model",
+                format!("storey_model = {m:?} is not allowed: one of linear, bilinear, bouc-wen"),
+            ));
+        }
+    }
+    let inelastic = models.iter().any(|m| m != "linear");
+    let bouc_wen = models.iter().any(|m| m == "bouc-wen");
+    for (key, given) in [
+        ("yield_forces", b.yield_forces.is_some()),
+        ("post_yield_ratio", b.post_yield_ratio.is_some()),
+    ] {
+        if given && !inelastic {
+            return Err(err(
+                key,
+                format!("{key} applies to bilinear and bouc-wen storeys, and every storey is linear (set storey_model)"),
+            ));
+        }
+    }
+    if b.bouc_wen.is_some() && !bouc_wen {
+        return Err(err(
+            "bouc_wen",
+            "bouc_wen applies to bouc-wen storeys, and there are none (set storey_model = \"bouc-wen\")".into(),
+        ));
+    }
+    if !inelastic {
+        return Ok(vec![StoreyLaw::Linear; storeys]);
+    }
+    let fy = match &b.yield_forces {
+        None => {
+            return Err(err(
+                "storey_model",
+                "yield_forces (N) is required for bilinear and bouc-wen storeys".into(),
+            ))
+        }
+        Some(f) => f.per_storey(storeys).map_err(|n| list("yield_forces", n))?,
+    };
+    let ratio = match &b.post_yield_ratio {
+        None => vec![0.0; storeys],
+        Some(r) => r
+            .per_storey(storeys)
+            .map_err(|n| list("post_yield_ratio", n))?,
+    };
+    let bw = b
+        .bouc_wen
+        .as_ref()
+        .map_or((1.0, 0.5, 0.5), |p| (p.n, p.beta, p.gamma));
+    models
+        .iter()
+        .enumerate()
+        .map(|(j, m)| {
+            match m.as_str() {
+                "bilinear" => StoreyLaw::bilinear(fy[j], ratio[j]),
+                "bouc-wen" => StoreyLaw::bouc_wen(fy[j], ratio[j], bw.0, bw.1, bw.2),
+                _ => Ok(StoreyLaw::Linear),
+            }
+            .map_err(|e| lib(at, &format!("{what}, storey {}", j + 1), e))
+        })
+        .collect()
+}
+
+/// The exponent `n` of a stiffness unit `N/m` (1) or `N/m^n`.
+fn stiffness_exponent(unit: &str) -> Option<f64> {
+    let u: String = unit.chars().filter(|c| !c.is_whitespace()).collect();
+    match u.strip_prefix("N/m") {
+        Some("") => Some(1.0),
+        Some(rest) => rest
+            .strip_prefix('^')
+            .and_then(|x| x.trim_matches(['(', ')']).parse::<f64>().ok())
+            .filter(|n| n.is_finite() && *n > 0.0),
+        None => None,
+    }
+}
+
+/// The unit of a stiffness with exponent `n`: `N/m` or `N/m^n`.
+fn unit_for(n: f64) -> String {
+    if n == 1.0 {
+        "N/m".to_string()
+    } else {
+        format!("N/m^{n}")
+    }
+}
+
+/// The contact options of an entry, its words checked.
+fn options(at: &str, c: &ContactDoc) -> Result<ContactOptions, SchemaError> {
+    let model = Model::from_name(&c.model).ok_or_else(|| {
+        let names: Vec<_> = Model::all().map(Model::name).collect();
+        SchemaError::new(
+            format!("{at}.model"),
+            format!(
+                "model = {:?}: unknown model; allowed: {}",
+                c.model,
+                names.join(", ")
+            ),
+        )
+    })?;
+    let key = |k: &str| format!("{at}.{k}");
+    let alpha = match &c.alpha {
+        None => None,
+        Some(AlphaDoc::Number(x)) => Some(AlphaRule::Given(*x)),
+        Some(AlphaDoc::Word(w)) => Some(match w.as_str() {
+            "eq8" => AlphaRule::Eq8,
+            "calibrate" => AlphaRule::Calibrate,
+            _ => {
+                return Err(SchemaError::new(
+                    key("alpha"),
+                    format!("alpha = {w:?}: allowed: a number >= 0, eq8 or calibrate"),
+                ))
+            }
+        }),
+    };
+    let damping = match c.damping.as_deref() {
+        None => Damping::Formula,
+        Some(d) => match word("damping", &key("damping"), d, &["formula", "exact"])? {
+            "formula" => Damping::Formula,
+            _ => Damping::Exact,
+        },
+    };
+    let reading = match c.reading.as_deref() {
+        None => Reading::EnergySplit,
+        Some(r) => match word(
+            "reading",
+            &key("reading"),
+            r,
+            &["energy-split", "same-damping"],
+        )? {
+            "energy-split" => Reading::EnergySplit,
+            _ => Reading::SameDamping,
+        },
+    };
+    let tension = match c.tension.as_deref() {
+        None => None,
+        Some(t) => Some(
+            match word("tension", &key("tension"), t, &["allow", "clamp"])? {
+                "allow" => Tension::Allow,
+                _ => Tension::Clamp,
+            },
+        ),
+    };
+    Ok(ContactOptions {
+        model,
+        e: c.e,
+        exponent: c.exponent,
+        damping,
+        alpha,
+        reading,
+        tension,
+        max_penetration: c.max_penetration,
+        yield_ratio: c.yield_ratio.unwrap_or(0.1),
+    })
+}
+
+/// Adds the contact entry `c` (at `at`) to `scenario`.
+fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, SchemaError> {
+    let key = |k: &str| format!("{at}.{k}");
+    let [a, b] = <[String; 2]>::try_from(c.between.clone()).map_err(|_| {
+        SchemaError::new(
+            key("between"),
+            format!(
+                "between = {:?} is not allowed: two building names, [\"left\", \"right\"]",
+                c.between
+            ),
+        )
+    })?;
+    let opts = options(at, c)?;
+    let pair = format!("contact {a:?}-{b:?}");
+    // The stiffness states its unit, so that changing the model cannot silently change what it means.
+    let n = opts.exponent();
+    match c.stiffness_unit.as_deref() {
+        None => {
+            return Err(SchemaError::new(
+                key("stiffness"),
+                format!(
+                    "{pair}: stiffness_unit is required with stiffness: \"{}\" for {} (exponent {n}), so that the stiffness keeps its meaning if the model changes",
+                    unit_for(n),
+                    opts.model.name(),
+                ),
+            ))
+        }
+        Some(u) => {
+            let given = stiffness_exponent(u).ok_or_else(|| {
+                SchemaError::new(
+                    key("stiffness_unit"),
+                    format!("{pair}: stiffness_unit = {u:?} is not allowed: \"N/m\" or \"N/m^n\" (for example \"N/m^1.5\")"),
+                )
+            })?;
+            if (given - n).abs() > 1e-12 {
+                return Err(SchemaError::new(
+                    key("stiffness_unit"),
+                    format!(
+                        "{pair}: stiffness_unit = {u:?} does not match the exponent {n} of {}: its stiffness is in {} (convert it, or set exponent = {given})",
+                        opts.model.name(),
+                        unit_for(n),
+                    ),
+                ));
+            }
+        }
+    }
+    let spec = opts.build(c.stiffness).map_err(|e| {
+        // Messages start with the key (`e = 1.5 is not allowed ...`): name it.
+        let m = e.message(|k| k.replace('-', "_"));
+        let k = m.split([' ', '=']).next().unwrap_or("").to_string();
+        let path = if matches!(e, OptionError::Value(_)) || !k.is_empty() {
+            key(&k)
+        } else {
+            at.to_string()
+        };
+        SchemaError::new(path, format!("{pair}: {m}"))
+    })?;
+    let floors = match &c.floors {
+        None => None,
+        Some(f) => Some(
+            f.iter()
+                .map(|p| match p.as_slice() {
+                    [i, j] => Ok((*i, *j)),
+                    _ => Err(SchemaError::new(
+                        key("floors"),
+                        format!("floors entry {p:?} is not allowed: pairs [floor of left, floor of right], from 1"),
+                    )),
+                })
+                .collect::<Result<Vec<_>, _>>()?,
+        ),
+    };
+    scenario
+        .with_link(&a, &b, c.gap, &spec, floors)
+        .map_err(|e| lib(at, "", e))
+}

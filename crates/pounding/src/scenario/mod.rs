@@ -1,0 +1,246 @@
+//! The one scenario schema (behind the `serde` feature): a scenario file (TOML), a Python dict and a study's
+//! generated variants all deserialize into [`ScenarioDoc`], and [`ScenarioDoc::build`] validates it once into
+//! an [`analysis::Scenario`](crate::analysis::Scenario), with the same one-line messages whatever the source.
+//!
+//! The library reads no files: [`GroundMotionDoc::spec`] says which record the scenario needs, and the
+//! caller passes the loaded [`Record`] to [`ScenarioDoc::build`]. Every error names the key it concerns as a
+//! dotted path (`contact.0.stiffness_unit`), which a caller maps to a line of its file or shows as it is.
+//!
+//! ```
+//! use pounding::ground_motion::Record;
+//! use pounding::scenario::ScenarioDoc;
+//! let doc: ScenarioDoc = serde_json::from_str(r#"{
+//!   "ground_motion": {"record": "el-centro-1940"},
+//!   "building": [
+//!     {"name": "A", "masses": [1e5], "stiffnesses": [4e7], "heights": [3.0]},
+//!     {"name": "B", "masses": [2e5], "stiffnesses": [2e7], "heights": [3.0]}],
+//!   "contact": [{"between": ["A", "B"], "gap": 0.01, "stiffness": 1e9, "stiffness_unit": "N/m^1.5"}]
+//! }"#).unwrap();
+//! let scenario = doc.build(Record::el_centro_1940()).unwrap();
+//! assert_eq!(scenario.links()[0].gap, 0.01);
+//! ```
+
+mod build;
+
+pub use build::RecordSpec;
+
+use serde::{Deserialize, Serialize};
+
+/// A scenario: the ground motion, the analysis settings, the buildings left to right and the contacts
+/// between neighbours (keys as in `docs/scenarios.md`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScenarioDoc {
+    /// The ground motion.
+    pub ground_motion: GroundMotionDoc,
+    /// Analysis settings; defaults if absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub analysis: Option<AnalysisDoc>,
+    /// The buildings, left to right.
+    #[serde(default)]
+    pub building: Vec<BuildingDoc>,
+    /// Contacts between neighbouring buildings.
+    #[serde(default)]
+    pub contact: Vec<ContactDoc>,
+}
+
+/// `[ground_motion]`: a built-in record or a record file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GroundMotionDoc {
+    /// A built-in record: `el-centro-1940`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub record: Option<String>,
+    /// A record file (relative paths are the caller's to resolve).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
+    /// `at2`, `time-acc` or `values` (default: `at2` for `*.at2` files, `time-acc` otherwise).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub format: Option<String>,
+    /// Time step of a `values` file, s.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+    /// Units of the file's accelerations: `g`, `m/s2` or `cm/s2`.
+    #[serde(default = "default_units")]
+    pub units: String,
+    /// Scale factor on the accelerations (dimensionless).
+    #[serde(default = "one")]
+    pub scale: f64,
+}
+
+/// `[analysis]`: settings; each absent one keeps the library's default.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnalysisDoc {
+    /// Analysed duration, s (default: the record's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub duration: Option<f64>,
+    /// Output interval, s (default 0.005).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub output_dt: Option<f64>,
+    /// Relative tolerance of the integration (default 1e-7).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Floor of the impact velocity used to build a contact law, m/s (default 1e-3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min_impact_velocity: Option<f64>,
+}
+
+/// `[[building]]`: a shear building, floor 1 (the lowest) first.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BuildingDoc {
+    /// Name, unique in the scenario: 1 to 64 bytes without commas, quotes, `|` or control characters.
+    pub name: String,
+    /// Floor masses, kg.
+    pub masses: Vec<f64>,
+    /// Storey stiffnesses (initial), N/m.
+    pub stiffnesses: Vec<f64>,
+    /// Storey heights, m.
+    pub heights: Vec<f64>,
+    /// Rayleigh damping ratio of modes 1 and 2 (dimensionless, default 0.05).
+    #[serde(default = "five_percent")]
+    pub damping_ratio: f64,
+    /// `linear`, `bilinear` or `bouc-wen`: one for every storey or one per storey (default linear).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub storey_model: Option<OneOrMany<String>>,
+    /// Yield force of each inelastic storey, N.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_forces: Option<OneOrMany<f64>>,
+    /// Post-yield stiffness ratio (dimensionless, default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub post_yield_ratio: Option<OneOrMany<f64>>,
+    /// Bouc–Wen shape parameters.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bouc_wen: Option<BoucWenDoc>,
+}
+
+/// One value for every storey, or a list with one per storey.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrMany<T> {
+    /// The same value for every storey.
+    One(T),
+    /// One value per storey.
+    Many(Vec<T>),
+}
+
+impl<T: Clone> OneOrMany<T> {
+    /// One value per storey; `Err(len)` for a list of the wrong length.
+    pub fn per_storey(&self, storeys: usize) -> Result<Vec<T>, usize> {
+        match self {
+            OneOrMany::One(x) => Ok(vec![x.clone(); storeys]),
+            OneOrMany::Many(v) if v.len() == storeys => Ok(v.clone()),
+            OneOrMany::Many(v) => Err(v.len()),
+        }
+    }
+}
+
+/// `bouc_wen`: the shape parameters of the Bouc–Wen law (dimensionless).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoucWenDoc {
+    /// Sharpness of the transition (default 1).
+    #[serde(default = "one")]
+    pub n: f64,
+    /// beta (default 0.5).
+    #[serde(default = "half")]
+    pub beta: f64,
+    /// gamma (default 0.5).
+    #[serde(default = "half")]
+    pub gamma: f64,
+}
+
+/// `alpha` of `papi`: a number, or `eq8` / `calibrate`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum AlphaDoc {
+    /// A given value (dimensionless).
+    Number(f64),
+    /// `eq8` or `calibrate`.
+    Word(String),
+}
+
+/// `[[contact]]`: contact elements between two neighbouring buildings.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ContactDoc {
+    /// The two buildings' names.
+    pub between: Vec<String>,
+    /// Gap at rest, m.
+    pub gap: f64,
+    /// Contact model (default `papi`).
+    #[serde(default = "papi")]
+    pub model: String,
+    /// Requested coefficient of restitution (dimensionless, default 0.65).
+    #[serde(default = "concrete_e")]
+    pub e: f64,
+    /// Stiffness, in `stiffness_unit`.
+    pub stiffness: f64,
+    /// `N/m` or `N/m^n`, matching the model's exponent (required).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness_unit: Option<String>,
+    /// Exponent of the force law (dimensionless; default the model's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub exponent: Option<f64>,
+    /// `formula` (default) or `exact`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping: Option<String>,
+    /// `alpha` of `papi`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub alpha: Option<AlphaDoc>,
+    /// `energy-split` (default) or `same-damping`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reading: Option<String>,
+    /// `allow` or `clamp` (default: the model's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tension: Option<String>,
+    /// Floor pairs `[floor of left, floor of right]`, from 1 (default: floors at the same height).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub floors: Option<Vec<Vec<usize>>>,
+    /// `impact-material`: expected maximum penetration, m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_penetration: Option<f64>,
+    /// `impact-material`: yield ratio (dimensionless, default 0.1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_ratio: Option<f64>,
+}
+
+fn default_units() -> String {
+    "g".into()
+}
+fn one() -> f64 {
+    1.0
+}
+fn half() -> f64 {
+    0.5
+}
+fn five_percent() -> f64 {
+    0.05
+}
+fn papi() -> String {
+    "papi".into()
+}
+fn concrete_e() -> f64 {
+    0.65
+}
+
+/// A scenario that does not validate: the key it concerns and a one-line message.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct SchemaError {
+    /// Dotted path of the key (`contact.0.gap`), or of the entry (`building.1`, `ground_motion`); empty for
+    /// the whole scenario.
+    pub key: String,
+    /// What is wrong and what is allowed.
+    pub message: String,
+}
+
+impl SchemaError {
+    fn new(key: impl Into<String>, message: impl Into<String>) -> Self {
+        SchemaError {
+            key: key.into(),
+            message: message.into(),
+        }
+    }
+}
