@@ -29,6 +29,9 @@ pub enum Command {
     Compare(CompareArgs),
     /// Time-history analysis of pounding between adjacent buildings, as described by a scenario file.
     Run(RunArgs),
+    /// Every scenario of a study (a base scenario and axes), in parallel, into a resumable SQLite store and
+    /// runs.csv (see docs/studies.md).
+    Sweep(SweepArgs),
     /// A self-contained HTML report (inline figures, no network access) of the output folder of a run.
     Report(ReportArgs),
     /// Ground-motion records.
@@ -41,6 +44,22 @@ pub enum Command {
         #[command(subcommand)]
         table: PaperTable,
     },
+}
+
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// Study file (TOML): scenario = "base.toml" and [axes] (or [[run]] entries). See docs/studies.md.
+    pub study: std::path::PathBuf,
+    /// Folder for study.sqlite (every finished run, committed as it finishes) and runs.csv (created if
+    /// missing; a sweep started again with the same study resumes from its store).
+    #[arg(long, value_name = "DIR")]
+    pub out: std::path::PathBuf,
+    /// Threads running scenarios [default: the number of cores].
+    #[arg(long)]
+    pub workers: Option<usize>,
+    /// No progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
 }
 
 #[derive(Args, Debug)]

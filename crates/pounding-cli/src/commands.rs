@@ -26,6 +26,7 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Drop(a) => drop(&a),
         Command::Compare(a) => compare(&a),
         Command::Run(a) => crate::run::run(&a),
+        Command::Sweep(a) => crate::sweep::command(&a),
         Command::Report(a) => crate::report::command(&a),
         Command::Record {
             cmd: RecordCmd::Info(a),

@@ -9,6 +9,7 @@ mod report;
 mod run;
 mod run_data;
 mod scenario;
+mod sweep;
 
 use clap::Parser;
 use std::process::ExitCode;

@@ -994,3 +994,194 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
         }
     }
 }
+
+/// A study over the two-SDOF example: `axes` as TOML lines.
+fn study(dir: &std::path::Path, name: &str, axes: &str) -> PathBuf {
+    let file = dir.join(name);
+    std::fs::write(
+        &file,
+        format!(
+            "scenario = {:?}\n\n[axes]\n{axes}\n",
+            example("two-sdof.toml")
+        ),
+    )
+    .unwrap();
+    file
+}
+
+fn store_rows(db: &std::path::Path) -> Vec<(String, i64, String, Option<String>, String)> {
+    let conn = rusqlite::Connection::open(db).unwrap();
+    let mut st = conn
+        .prepare("SELECT key, idx, status, summary, finished FROM runs ORDER BY idx")
+        .unwrap();
+    st.query_map([], |r| {
+        Ok((r.get(0)?, r.get(1)?, r.get(2)?, r.get(3)?, r.get(4)?))
+    })
+    .unwrap()
+    .collect::<Result<_, _>>()
+    .unwrap()
+}
+
+#[test]
+fn a_sweep_stores_what_single_runs_give_and_lists_them_in_runs_csv() {
+    let dir = tmp("sweep-equals-runs");
+    let file = study(
+        &dir,
+        "study.toml",
+        "scale = [1.0, 1.5]\ncontact.0.gap = [0.0, 0.02]\n\"contact.0.model\" = [\"papi\", \"hertzdamp\"]",
+    );
+    let out = dir.join("out");
+    let o = pounding(&[
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--workers",
+        "2",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows = store_rows(&out.join("study.sqlite"));
+    assert_eq!(rows.len(), 8);
+    // hertzdamp has exponent 1.5 and the base's stiffness is in N/m: refused, recorded, the sweep goes on.
+    assert_eq!(
+        rows.iter().map(|r| r.2.as_str()).collect::<Vec<_>>(),
+        ["ok", "error", "ok", "error", "ok", "error", "ok", "error"]
+    );
+    // Run 6 is scale 1.5, gap 0.02, papi: the example with its scale changed, run alone.
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let single = dir.join("single.toml");
+    std::fs::write(&single, base.replace("scale = 1.0", "scale = 1.5")).unwrap();
+    let mut alone = json(&[
+        "run",
+        single.to_str().unwrap(),
+        "--out",
+        dir.join("single").to_str().unwrap(),
+        "-q",
+    ]);
+    let mut swept: Value = serde_json::from_str(rows[6].3.as_deref().unwrap()).unwrap();
+    assert_eq!(swept["scenario"], format!("{}#6", file.display()));
+    alone["scenario"] = Value::Null;
+    swept["scenario"] = Value::Null;
+    assert_eq!(alone, swept);
+    let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert!(
+        lines[0].starts_with("index,key,status,scale,contact.0.gap,contact.0.model,pga_m_per_s2,")
+    );
+    assert!(lines[0].contains(",left|right_peak_force_N,") && lines[0].ends_with(",error"));
+    assert_eq!(lines.len(), 9);
+    assert!(lines[7].starts_with(&format!("6,{},ok,1.5,0.02,papi,", rows[6].0)));
+    assert!(lines[8].contains("stiffness_unit = \"\"N/m\"\" does not match the exponent 1.5"));
+}
+
+#[test]
+fn a_sweep_killed_with_sigkill_resumes_with_every_run_once() {
+    let dir = tmp("sweep-kill");
+    let gaps: Vec<String> = (0..120).map(|i| format!("{:e}", 1e-4 * i as f64)).collect();
+    let file = study(
+        &dir,
+        "study.toml",
+        &format!("contact.0.gap = [{}]", gaps.join(", ")),
+    );
+    let out = dir.join("out");
+    let args = [
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--workers",
+        "1",
+    ];
+    let mut child = Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let db = out.join("study.sqlite");
+    let start = std::time::Instant::now();
+    let mut done = 0;
+    while done < 10 && start.elapsed().as_secs() < 120 {
+        std::thread::sleep(std::time::Duration::from_millis(5));
+        if let Ok(conn) =
+            rusqlite::Connection::open_with_flags(&db, rusqlite::OpenFlags::SQLITE_OPEN_READ_ONLY)
+        {
+            done = conn
+                .query_row("SELECT count(*) FROM runs", [], |r| r.get(0))
+                .unwrap_or(0);
+        }
+    }
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "the sweep ended before it could be killed"
+    );
+    child.kill().unwrap(); // SIGKILL
+    child.wait().unwrap();
+    let before = store_rows(&db);
+    assert!(before.len() >= 10 && before.len() < 120, "{}", before.len());
+    assert!(!out.join("runs.csv").exists());
+    let o = pounding(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let after = store_rows(&db);
+    assert_eq!(after.len(), 120);
+    assert_eq!(
+        after.iter().map(|r| r.1).collect::<Vec<_>>(),
+        (0..120).collect::<Vec<i64>>()
+    );
+    // The runs finished before the kill were kept as they were, not run again.
+    for b in &before {
+        let a = after.iter().find(|a| a.0 == b.0).unwrap();
+        assert_eq!((&a.3, &a.4), (&b.3, &b.4));
+    }
+    assert_eq!(
+        std::fs::read_to_string(out.join("runs.csv"))
+            .unwrap()
+            .lines()
+            .count(),
+        301
+    );
+}
+
+#[test]
+fn bad_studies_get_one_line_exit_2_and_leave_the_store_untouched() {
+    let dir = tmp("bad-studies");
+    let cases = [
+        (
+            "contact.0.gapp = [0.01]",
+            "axis \"contact.0.gapp\" names no scenario key",
+        ),
+        ("contact.3.gap = [0.01]", "has 1 entries there"),
+        ("contact.0.gap = []", "axes.contact.0.gap = [] is empty"),
+        ("record = [\"no-such-dir/*.AT2\"]", "matches no file"),
+        ("record = [\"kobe\"]", "is neither a built-in record"),
+    ];
+    for (i, (axes, needle)) in cases.iter().enumerate() {
+        let file = study(&dir, &format!("case{i}.toml"), axes);
+        let out = dir.join(format!("out{i}"));
+        let o = pounding(&[
+            "sweep",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {i}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
+        assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
+        assert!(!out.exists(), "case {i}: output written");
+    }
+    // A store written by another study is refused and left as it was.
+    let out = dir.join("out");
+    let a = study(&dir, "a.toml", "contact.0.gap = [0.01, 0.02]");
+    assert!(
+        pounding(&["sweep", a.to_str().unwrap(), "--out", out.to_str().unwrap()])
+            .status
+            .success()
+    );
+    let bytes = std::fs::read(out.join("study.sqlite")).unwrap();
+    let b = study(&dir, "b.toml", "contact.0.gap = [0.01, 0.03]");
+    let o = pounding(&["sweep", b.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("was written by a different study"), "{err}");
+    assert_eq!(std::fs::read(out.join("study.sqlite")).unwrap(), bytes);
+}

@@ -220,7 +220,13 @@ fn dotted(path: &str) -> String {
 /// A dict's message: `key: message` (the key is the dotted path; none for the whole scenario).
 pub fn dict_message(key: Option<String>, msg: String) -> String {
     match key {
-        Some(k) if !k.is_empty() && !msg.starts_with(&format!("{k}:")) => format!("{k}: {msg}"),
+        Some(k)
+            if !k.is_empty()
+                && !msg.starts_with(&format!("{k}:"))
+                && !msg.starts_with(&format!("[{k}]")) =>
+        {
+            format!("{k}: {msg}")
+        }
         _ => msg,
     }
 }

@@ -74,6 +74,14 @@ impl Store {
         };
         let conn = Connection::open_with_flags(path, OpenFlags::SQLITE_OPEN_READ_ONLY)
             .map_err(|e| mismatch(format!("cannot be opened ({e})")))?;
+        // An empty database (a file just created by a reader, or by `touch`) is a new store.
+        let tables: Result<i64, _> =
+            conn.query_row("SELECT count(*) FROM sqlite_master", [], |r| r.get(0));
+        match tables {
+            Ok(0) => return Ok(()),
+            Ok(_) => {}
+            Err(e) => return Err(mismatch(format!("is not an SQLite database ({e})"))),
+        }
         let get = |name: &str| -> Result<Option<String>, rusqlite::Error> {
             conn.query_row(
                 "SELECT value FROM study WHERE name = ?1",

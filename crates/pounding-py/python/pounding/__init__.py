@@ -1,0 +1,206 @@
+"""Earthquake-induced pounding of structures, from Python.
+
+The engine is the Rust library behind the ``pounding`` command line; this package gives it numpy arrays,
+dicts and pandas tables. SI units throughout (m, s, kg, N; a contact stiffness of exponent n in N/m^n).
+
+- :func:`load_scenario` reads a scenario file (TOML) into a dict;
+- :func:`run` runs one scenario (a dict or a path) and returns a :class:`Result`;
+- :func:`sweep` runs many scenarios in parallel (Rust threads, the GIL released), optionally into a
+  resumable SQLite store; :func:`pounding.dask.sweep` does the same on a Dask cluster;
+- :func:`headline` turns summaries into a table of headline results (as ``runs.csv`` of ``pounding sweep``).
+
+Bad input raises :class:`InputError` (a ``ValueError``) with the command line's one-line message.
+See docs/python.md.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass
+from typing import Any, Dict, Iterable, List, Optional, Union
+
+import numpy as np
+
+from . import _pounding
+from ._pounding import InputError
+
+__version__ = _pounding.__version__
+__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline"]
+
+Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
+
+
+def _plain(o: Any) -> Any:
+    """numpy scalars and arrays as plain Python numbers and lists (for JSON)."""
+    if hasattr(o, "tolist"):
+        return o.tolist()
+    if hasattr(o, "item"):
+        return o.item()
+    raise TypeError(f"{type(o).__name__} is not a number, string, list or dict")
+
+
+def _json(scenario: Dict[str, Any]) -> str:
+    """A scenario dict as JSON text; NaN and infinity are refused as the schema would refuse them."""
+    if not isinstance(scenario, dict):
+        raise InputError(f"scenario: a dict or a path, not {type(scenario).__name__}")
+    try:
+        return json.dumps(scenario, allow_nan=False, default=_plain)
+    except (TypeError, ValueError) as e:
+        raise InputError(f"scenario: {e}") from None
+
+
+def load_scenario(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
+    """The scenario file at ``path`` (TOML, see docs/scenarios.md) as a dict, ready to change and run.
+
+    A relative record ``file`` is made absolute, so the dict runs from any folder. Raises InputError for a
+    file that cannot be read or is not valid TOML (the content is validated when it runs).
+    """
+    return json.loads(_pounding.load_scenario(os.fspath(path)))
+
+
+def _array(d: Dict[str, Any]) -> np.ndarray:
+    return np.frombuffer(d["data"], dtype="<f8").reshape(d["shape"])
+
+
+@dataclass
+class Histories:
+    """Histories at the output interval, SI units.
+
+    - ``time`` (s) and ``ground_acceleration`` (m/s^2): arrays of the samples;
+    - ``displacement`` (m, relative to the ground), ``absolute_acceleration`` (m/s^2) and ``storey_shear``
+      (N): for each building by name, an array of samples x floors (floor or storey 1 first);
+    - ``contact_force`` (N): for each contact (``"left|right"``), an array of samples x floor pairs, in the
+      order of ``contact_floors``;
+    - ``energy`` (J): ``input``, ``kinetic``, ``strain``, ``structural_damping``, ``hysteretic``, ``contact``.
+    """
+
+    time: np.ndarray
+    ground_acceleration: np.ndarray
+    displacement: Dict[str, np.ndarray]
+    absolute_acceleration: Dict[str, np.ndarray]
+    storey_shear: Dict[str, np.ndarray]
+    contact_force: Dict[str, np.ndarray]
+    contact_floors: Dict[str, List[tuple]]
+    energy: Dict[str, np.ndarray]
+
+
+class Result:
+    """One run: ``summary`` (a dict, the content of ``summary.json``), ``impacts`` (columns as numpy arrays:
+    ``time_s``, ``contact``, ``floor_left``, ``floor_right``, ``v_i_m_per_s``, ``e_post`` (NaN where an impact
+    gave none), ``peak_force_N``, ``time_of_peak_force_s``, ``duration_s``, ``dissipated_energy_J``,
+    ``max_penetration_m``, ``ended``, ``resting``) and ``histories`` (a :class:`Histories`, or None for a run
+    without them)."""
+
+    def __init__(self, raw: Dict[str, Any]):
+        self.summary: Dict[str, Any] = json.loads(raw["summary"])
+        imp = raw["impacts"]
+        self.impacts: Dict[str, np.ndarray] = {
+            k: np.asarray(v, dtype=object if k == "contact" else None) for k, v in imp.items()
+        }
+        for k in ("floor_left", "floor_right"):
+            self.impacts[k] = np.asarray(imp[k], dtype=np.int64)
+        for k in ("ended", "resting"):
+            self.impacts[k] = np.asarray(imp[k], dtype=bool)
+        for k, v in imp.items():
+            if k not in ("contact", "floor_left", "floor_right", "ended", "resting"):
+                self.impacts[k] = np.asarray(v, dtype=np.float64)
+        h = raw["histories"]
+        self.histories: Optional[Histories] = None
+        if h is not None:
+            self.histories = Histories(
+                time=np.frombuffer(h["time"], dtype="<f8"),
+                ground_acceleration=np.frombuffer(h["ground_acceleration"], dtype="<f8"),
+                displacement={k: _array(v) for k, v in h["displacement"].items()},
+                absolute_acceleration={k: _array(v) for k, v in h["absolute_acceleration"].items()},
+                storey_shear={k: _array(v) for k, v in h["storey_shear"].items()},
+                contact_force={k: _array(v) for k, v in h["contact_force"].items()},
+                contact_floors={k: [tuple(p) for p in v] for k, v in h["contact_floors"].items()},
+                energy={k: np.frombuffer(v, dtype="<f8") for k, v in h["energy"].items()},
+            )
+
+    def impacts_frame(self):
+        """The impacts as a pandas DataFrame (needs pandas)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.impacts)
+
+    def __repr__(self) -> str:
+        n = len(self.impacts["time_s"])
+        return f"<pounding.Result {self.summary['scenario']}: {n} impacts>"
+
+
+def run(scenario: Scenario, histories: bool = True) -> Result:
+    """Runs one scenario: a dict (the schema of docs/scenarios.md) or the path of a scenario file.
+
+    With ``histories=False`` only the summary and the impacts are kept (faster, little memory). The GIL is
+    released while the analysis runs. Raises InputError with the command line's message for bad input.
+    """
+    if isinstance(scenario, (str, os.PathLike)):
+        raw = _pounding.run(path=os.fspath(scenario), histories=histories)
+    else:
+        raw = _pounding.run(scenario=_json(scenario), histories=histories)
+    return Result(raw)
+
+
+def _outcome(ok: bool, text: str) -> Dict[str, Any]:
+    return json.loads(text) if ok else {"error": text}
+
+
+def sweep(
+    scenarios: Iterable[Scenario],
+    workers: Optional[int] = None,
+    store: Optional[Union[str, "os.PathLike[str]"]] = None,
+    progress: bool = True,
+) -> List[Dict[str, Any]]:
+    """Runs every scenario (dicts or paths) in parallel on ``workers`` Rust threads (default: every core) with
+    the GIL released, keeping summaries only; returns their summaries in input order. A scenario that fails
+    (bad input, an analysis that fails) gives ``{"error": "one-line message"}`` and does not stop the sweep.
+
+    With ``store="study.sqlite"`` every finished run is committed to that SQLite store as it finishes (table
+    ``runs``: ``key``, ``idx``, ``status``, ``summary``, ``error``, ``seconds``, ``finished``): started again
+    with the same scenarios, the sweep runs only what is missing. A store written by other scenarios raises
+    InputError and is left untouched. ``progress`` prints one updating line on stderr; Ctrl-C stops the sweep
+    (finished runs stay in the store) and raises KeyboardInterrupt.
+    """
+    texts, labels = _texts(scenarios)
+    n = workers if workers is not None else (os.cpu_count() or 1)
+    if n < 1:
+        raise InputError(f"workers = {n} is not allowed: at least 1 (default: the number of cores)")
+    out = _pounding.sweep_runs(
+        texts, labels, n, None if store is None else os.fspath(store), progress
+    )
+    return [_outcome(ok, text) for _, ok, text in out]
+
+
+def _texts(scenarios: Iterable[Scenario]):
+    """JSON texts and labels of scenarios given as dicts or paths."""
+    texts, labels = [], []
+    for s in scenarios:
+        if isinstance(s, (str, os.PathLike)):
+            d = load_scenario(s)
+            labels.append(os.fspath(s))
+        else:
+            d = s
+            labels.append("<dict>")
+        texts.append(_json(d))
+    return texts, labels
+
+
+def headline(summaries: Iterable[Dict[str, Any]]):
+    """One row per summary of headline results (the record's PGA, each building's peak displacement and drift
+    ratio, each contact's impacts, peak force and penetration, the balance error, the steps; units in the
+    column names) and an ``error`` column: a pandas DataFrame if pandas is installed, else a list of dicts."""
+    rows = []
+    for s in summaries:
+        if "error" in s and "buildings" not in s:
+            rows.append({"error": s["error"]})
+        else:
+            row = dict(_pounding.headline(json.dumps(s)))
+            row["error"] = None
+            rows.append(row)
+    try:
+        import pandas as pd
+    except ImportError:
+        return rows
+    return pd.DataFrame(rows)

@@ -1,0 +1,399 @@
+//! The extension module `pounding._pounding`: thin bindings over `pounding-study` (scenarios, runs, sweeps,
+//! the store). The Python package `pounding` (python/pounding) wraps it in numpy arrays and dicts; scenarios
+//! cross as JSON text, so that a dict is validated by exactly the schema a TOML file is.
+
+use pounding::analysis::{Results, RunOptions, Scenario};
+use pounding_study::input::{dict_message, from_value, Loaded, ScenarioFile};
+use pounding_study::store::{Finished, Store, StoreError};
+use pounding_study::sweep::{self, Prepared, Progress};
+use pyo3::create_exception;
+use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyByteArray, PyDict, PyList};
+use serde_json::Value;
+use std::io::Write as _;
+use std::ops::ControlFlow;
+use std::path::Path;
+
+create_exception!(
+    _pounding,
+    InputError,
+    PyValueError,
+    "Bad input: the one-line message the command line gives (file and line, or the key's dotted path; the value; what is allowed)."
+);
+
+fn input_err(msg: impl Into<String>) -> PyErr {
+    InputError::new_err(msg.into())
+}
+
+fn store_err(e: StoreError) -> PyErr {
+    match e {
+        StoreError::Mismatch(m) => input_err(m),
+        StoreError::Io(m) => PyOSError::new_err(m),
+    }
+}
+
+/// The scenario file at `path` as JSON text, a relative record `file` made absolute.
+#[pyfunction]
+fn load_scenario(path: &str) -> PyResult<String> {
+    let file = ScenarioFile::read(Path::new(path)).map_err(|e| input_err(e.0))?;
+    let mut value = file.value;
+    if let Some(Value::String(f)) = value.pointer_mut("/ground_motion/file") {
+        if let Ok(abs) = std::path::absolute(f.as_str()) {
+            *f = abs.to_string_lossy().into_owned();
+        }
+    }
+    Ok(value.to_string())
+}
+
+/// The scenario given as JSON text (`label` says where it came from) or read from `path`.
+fn loaded(scenario: Option<&str>, path: Option<&str>) -> PyResult<Loaded> {
+    match (scenario, path) {
+        (_, Some(p)) => ScenarioFile::read(Path::new(p))
+            .and_then(|f| f.load())
+            .map_err(|e| input_err(e.0)),
+        (Some(text), None) => {
+            let value: Value = serde_json::from_str(text)
+                .map_err(|e| input_err(format!("scenario: not a JSON object: {e}")))?;
+            from_value(&value, "<dict>").map_err(|(k, m)| input_err(dict_message(k, m)))
+        }
+        (None, None) => Err(input_err("scenario: give a dict or a path")),
+    }
+}
+
+/// f64 values as a bytearray (little-endian), for `numpy.frombuffer` without a further copy.
+fn bytes<'py>(py: Python<'py>, xs: impl Iterator<Item = f64>) -> Bound<'py, PyByteArray> {
+    let v: Vec<u8> = xs.flat_map(f64::to_le_bytes).collect();
+    PyByteArray::new(py, &v)
+}
+
+/// `cols[c][k]` as samples x columns, row-major.
+fn matrix<'py>(py: Python<'py>, cols: &[Vec<f64>], n: usize) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item(
+        "data",
+        bytes(py, (0..n).flat_map(|k| cols.iter().map(move |c| c[k]))),
+    )?;
+    d.set_item("shape", (n, cols.len()))?;
+    Ok(d)
+}
+
+fn link_name(s: &Scenario, l: usize) -> String {
+    let link = &s.links()[l];
+    format!(
+        "{}|{}",
+        s.buildings()[link.left].name,
+        s.buildings()[link.right].name
+    )
+}
+
+/// The impacts as columns (lists; `e_post` NaN where the impact gave none).
+fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let col = |f: &dyn Fn(&pounding::analysis::Impact) -> f64| -> Vec<f64> {
+        r.impacts.iter().map(f).collect()
+    };
+    d.set_item("time_s", col(&|i| i.time))?;
+    d.set_item(
+        "contact",
+        r.impacts
+            .iter()
+            .map(|i| link_name(s, i.link))
+            .collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "floor_left",
+        r.impacts.iter().map(|i| i.floors.0).collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "floor_right",
+        r.impacts.iter().map(|i| i.floors.1).collect::<Vec<_>>(),
+    )?;
+    d.set_item("v_i_m_per_s", col(&|i| i.v_i))?;
+    d.set_item("e_post", col(&|i| i.e_post.unwrap_or(f64::NAN)))?;
+    d.set_item("peak_force_N", col(&|i| i.peak_force))?;
+    d.set_item("time_of_peak_force_s", col(&|i| i.time_of_peak_force))?;
+    d.set_item("duration_s", col(&|i| i.duration))?;
+    d.set_item("dissipated_energy_J", col(&|i| i.dissipated_energy))?;
+    d.set_item("max_penetration_m", col(&|i| i.max_penetration))?;
+    d.set_item(
+        "ended",
+        r.impacts.iter().map(|i| i.ended).collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "resting",
+        r.impacts.iter().map(|i| i.resting).collect::<Vec<_>>(),
+    )?;
+    Ok(d)
+}
+
+/// The histories: time and ground acceleration; per building, floor displacements, absolute accelerations and
+/// storey shears (samples x floors); per contact, the force of each floor pair (samples x pairs); energies.
+fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'py, PyDict>> {
+    let h = &r.histories;
+    let n = h.t.len();
+    let d = PyDict::new(py);
+    d.set_item("time", bytes(py, h.t.iter().copied()))?;
+    d.set_item(
+        "ground_acceleration",
+        bytes(py, h.ground_acceleration.iter().copied()),
+    )?;
+    for (key, group) in [
+        ("displacement", &h.displacement),
+        ("absolute_acceleration", &h.absolute_acceleration),
+        ("storey_shear", &h.storey_shear),
+    ] {
+        let g = PyDict::new(py);
+        for (b, cols) in s.buildings().iter().zip(group) {
+            g.set_item(&b.name, matrix(py, cols, n)?)?;
+        }
+        d.set_item(key, g)?;
+    }
+    let f = PyDict::new(py);
+    for (l, cols) in h.force.iter().enumerate() {
+        f.set_item(link_name(s, l), matrix(py, cols, n)?)?;
+    }
+    d.set_item("contact_force", f)?;
+    let floors = PyDict::new(py);
+    for (l, link) in s.links().iter().enumerate() {
+        floors.set_item(link_name(s, l), link.floors.clone())?;
+    }
+    d.set_item("contact_floors", floors)?;
+    let e = PyDict::new(py);
+    for (c, name) in [
+        "input",
+        "kinetic",
+        "strain",
+        "structural_damping",
+        "hysteretic",
+        "contact",
+    ]
+    .iter()
+    .enumerate()
+    {
+        e.set_item(*name, bytes(py, h.energy[c].iter().copied()))?;
+    }
+    d.set_item("energy", e)?;
+    Ok(d)
+}
+
+/// Runs one scenario (JSON text, or the file at `path`) with the GIL released; returns a dict with
+/// `summary` (JSON text), `impacts` (columns) and `histories` (or None).
+#[pyfunction]
+#[pyo3(signature = (scenario=None, path=None, histories=true))]
+fn run<'py>(
+    py: Python<'py>,
+    scenario: Option<&str>,
+    path: Option<&str>,
+    histories: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let loaded = loaded(scenario, path)?;
+    let options = RunOptions {
+        histories,
+        ..RunOptions::default()
+    };
+    let results = py
+        .allow_threads(|| {
+            loaded
+                .scenario
+                .run_with_options(&options, &mut |_| ControlFlow::Continue(()))
+        })
+        .map_err(|e| input_err(format!("analysis failed: {e}")))?;
+    let summary = pounding_study::summary::summary(&loaded, &results).map_err(input_err)?;
+    let out = PyDict::new(py);
+    out.set_item("summary", summary.to_string())?;
+    out.set_item("impacts", impacts(py, &loaded.scenario, &results)?)?;
+    if histories {
+        out.set_item(
+            "histories",
+            self::histories(py, &loaded.scenario, &results)?,
+        )?;
+    } else {
+        out.set_item("histories", py.None())?;
+    }
+    Ok(out)
+}
+
+/// Parses and keys the scenarios (JSON texts, with labels) on `workers` threads, the GIL released.
+fn prepare(
+    py: Python<'_>,
+    scenarios: Vec<String>,
+    labels: Vec<String>,
+    workers: usize,
+) -> Vec<Prepared> {
+    py.allow_threads(|| {
+        let values = scenarios
+            .into_iter()
+            .zip(labels)
+            .map(|(s, l)| (serde_json::from_str(&s).unwrap_or(Value::Null), l))
+            .collect();
+        sweep::prepare(values, workers)
+    })
+}
+
+/// The keys of the scenarios and the study's id: `(keys, id)`.
+#[pyfunction]
+fn keys(py: Python<'_>, scenarios: Vec<String>) -> (Vec<String>, String) {
+    let n = scenarios.len();
+    let p = prepare(py, scenarios, vec![String::new(); n], 1);
+    let id = sweep::study_id(&p);
+    (p.into_iter().map(|p| p.key).collect(), id)
+}
+
+/// A one-line progress report on stderr: `runs 1234/10000, 3 failed, 12.3 s, about 4 s left`.
+fn show(p: &Progress, end: bool) {
+    let rate = p.done as f64 / p.elapsed.max(1e-9);
+    let left = if p.done > 0 {
+        format!(", about {:.0} s left", (p.todo - p.done) as f64 / rate)
+    } else {
+        String::new()
+    };
+    let mut err = std::io::stderr().lock();
+    let _ = write!(
+        err,
+        "\rpounding sweep: {}/{} runs, {} failed, {} from the store, {:.1} s{}   ",
+        p.done, p.todo, p.failed, p.skipped, p.elapsed, left
+    );
+    if end {
+        let _ = writeln!(err);
+    }
+}
+
+/// Runs the scenarios (JSON texts, with labels) on `workers` threads with the GIL released, committing each
+/// finished run to the store at `store` if given; returns `(key, ok, summary JSON or error message)` in input
+/// order. Ctrl-C stops the sweep (finished runs stay in the store) and raises KeyboardInterrupt.
+#[pyfunction]
+#[pyo3(signature = (scenarios, labels, workers, store=None, progress=false))]
+fn sweep_runs(
+    py: Python<'_>,
+    scenarios: Vec<String>,
+    labels: Vec<String>,
+    workers: usize,
+    store: Option<&str>,
+    progress: bool,
+) -> PyResult<Vec<(String, bool, String)>> {
+    if workers == 0 {
+        return Err(input_err(
+            "workers = 0 is not allowed: at least 1 (default: the number of cores)",
+        ));
+    }
+    let prepared = prepare(py, scenarios, labels, workers);
+    let mut st = match store {
+        Some(path) => Some(
+            Store::open(Path::new(path), &sweep::study_id(&prepared), prepared.len())
+                .map_err(store_err)?,
+        ),
+        None => None,
+    };
+    let mut interrupted: Option<PyErr> = None;
+    let outcomes = py.allow_threads(|| {
+        let mut report = |p: Progress| {
+            if progress {
+                show(&p, false);
+            }
+            // Ctrl-C reaches Python only with the GIL: look for it at every report.
+            match Python::with_gil(|py| py.check_signals()) {
+                Ok(()) => ControlFlow::Continue(()),
+                Err(e) => {
+                    interrupted = Some(e);
+                    ControlFlow::Break(())
+                }
+            }
+        };
+        let r = sweep::run(
+            &prepared,
+            workers,
+            &RunOptions::summary_only(),
+            st.as_mut(),
+            &mut report,
+        );
+        if progress {
+            eprintln!();
+        }
+        r
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let outcomes = outcomes.map_err(|e| PyOSError::new_err(e.to_string()))?;
+    Ok(prepared
+        .iter()
+        .zip(outcomes)
+        .map(|(p, o)| match o {
+            Ok(s) => (p.key.clone(), true, s),
+            Err(e) => (p.key.clone(), false, e),
+        })
+        .collect())
+}
+
+/// A study store opened from Python (for sweeps whose runs happen elsewhere, as on a Dask cluster).
+#[pyclass(name = "Store", unsendable)]
+struct PyStore {
+    store: Store,
+}
+
+#[pymethods]
+impl PyStore {
+    /// Opens (or creates) the store at `path` of the study `id` with `runs` runs; InputError if it holds
+    /// another study.
+    #[new]
+    fn new(path: &str, id: &str, runs: usize) -> PyResult<Self> {
+        Ok(PyStore {
+            store: Store::open(Path::new(path), id, runs).map_err(store_err)?,
+        })
+    }
+
+    /// Every stored run: `(key, ok, summary JSON or error message)`.
+    fn finished(&self) -> PyResult<Vec<(String, bool, String)>> {
+        Ok(self
+            .store
+            .all()
+            .map_err(store_err)?
+            .into_iter()
+            .map(|(k, o)| match o {
+                Ok(s) => (k, true, s),
+                Err(e) => (k, false, e),
+            })
+            .collect())
+    }
+
+    /// Commits runs `(key, index, ok, summary JSON or error message, seconds)` in one transaction.
+    fn commit(&mut self, runs: Vec<(String, usize, bool, String, f64)>) -> PyResult<()> {
+        let runs: Vec<Finished> = runs
+            .into_iter()
+            .map(|(key, index, ok, text, seconds)| Finished {
+                key,
+                index,
+                outcome: if ok { Ok(text) } else { Err(text) },
+                seconds,
+            })
+            .collect();
+        self.store.commit(&runs).map_err(store_err)
+    }
+}
+
+/// The headline results of a summary (JSON text) as `(column, value)` pairs, as in runs.csv.
+#[pyfunction]
+fn headline(py: Python<'_>, summary: &str) -> PyResult<Py<PyList>> {
+    let v: Value = serde_json::from_str(summary).map_err(|e| input_err(e.to_string()))?;
+    let row = pounding_study::headline::headline(&v);
+    let out = PyList::empty(py);
+    for (k, v) in row {
+        out.append((k, v.as_f64()))?;
+    }
+    Ok(out.unbind())
+}
+
+/// The extension module.
+#[pymodule]
+fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("InputError", m.py().get_type::<InputError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(load_scenario, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(keys, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_runs, m)?)?;
+    m.add_function(wrap_pyfunction!(headline, m)?)?;
+    m.add_class::<PyStore>()?;
+    Ok(())
+}

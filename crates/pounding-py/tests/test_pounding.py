@@ -1,0 +1,230 @@
+"""The Python package against the command line, single runs against sweeps, and the store's promises.
+
+The command line binary is taken from POUNDING_BIN (the test script sets it), else target/debug/pounding.
+"""
+
+import copy
+import hashlib
+import json
+import math
+import os
+import signal
+import sqlite3
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pounding
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLE = ROOT / "examples" / "two-sdof.toml"
+BIN = Path(os.environ.get("POUNDING_BIN", ROOT / "target" / "debug" / "pounding"))
+
+
+def cli(*args, cwd=ROOT):
+    return subprocess.run([str(BIN), *args], cwd=cwd, capture_output=True, text=True)
+
+
+def without_label(summary):
+    s = dict(summary)
+    s.pop("scenario")
+    return s
+
+
+@pytest.fixture(scope="module")
+def base():
+    return pounding.load_scenario(EXAMPLE)
+
+
+def gaps(base, values):
+    out = []
+    for g in values:
+        s = copy.deepcopy(base)
+        s["contact"][0]["gap"] = g
+        out.append(s)
+    return out
+
+
+def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
+    o = cli("run", "examples/two-sdof.toml", "--out", str(tmp_path / "out"), "-q", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = json.loads(o.stdout)
+    # The same file by the same path: the whole summary, label included, to the last digit.
+    os.chdir(ROOT)
+    assert pounding.run("examples/two-sdof.toml").summary == expected
+    # The same scenario as a dict.
+    r = pounding.run(base)
+    assert without_label(r.summary) == without_label(expected)
+    assert r.summary["scenario"] == "<dict>"
+    # Impacts and histories against the files the command line wrote.
+    rows = (tmp_path / "out" / "impacts.csv").read_text().splitlines()[1:]
+    assert len(r.impacts["time_s"]) == len(rows) == expected["contacts"][0]["impacts"]
+    first = rows[0].split(",")
+    assert r.impacts["time_s"][0] == float(first[0])
+    assert r.impacts["peak_force_N"][0] == float(first[6])
+    resp = np.loadtxt(tmp_path / "out" / "response.csv", delimiter=",", skiprows=1)
+    h = r.histories
+    assert h.time.shape == (resp.shape[0],)
+    assert h.displacement["left"].shape == (resp.shape[0], 1)
+    # response.csv writes 17 significant digits (`{:e}` of the shortest representation): exact.
+    assert np.array_equal(h.displacement["left"][:, 0], resp[:, 2])
+    assert np.array_equal(h.contact_force["left|right"][:, 0], resp[:, 4])
+    assert h.contact_floors == {"left|right": [(1, 1)]}
+
+
+def test_histories_close_the_energy_balance(base):
+    h = pounding.run(base).histories
+    e = h.energy
+    residual = e["input"] - sum(e[k] for k in ("kinetic", "strain", "structural_damping", "hysteretic", "contact"))
+    scale = max(np.max(np.abs(v)) for v in e.values())
+    # The run's own balance error (summary) bounds the residual at every sample.
+    assert np.max(np.abs(residual)) / scale < 1e-5
+    assert h.displacement["left"].flags.writeable
+
+
+def test_summary_only_run_has_the_same_summary(base):
+    full = pounding.run(base)
+    lean = pounding.run(base, histories=False)
+    assert lean.histories is None
+    assert lean.summary == full.summary
+
+
+def test_impacts_frame_is_a_dataframe(base):
+    pd = pytest.importorskip("pandas")
+    f = pounding.run(base).impacts_frame()
+    assert isinstance(f, pd.DataFrame)
+    assert list(f.columns)[:4] == ["time_s", "contact", "floor_left", "floor_right"]
+    assert f["contact"].iloc[0] == "left|right"
+
+
+def test_bad_input_raises_the_command_lines_message(tmp_path, base):
+    bad = EXAMPLE.read_text().replace("gap = 0.02", "gap = -0.02")
+    path = tmp_path / "bad.toml"
+    path.write_text(bad)
+    o = cli("run", str(path), "--out", str(tmp_path / "out"))
+    assert o.returncode == 2
+    with pytest.raises(pounding.InputError) as e:
+        pounding.run(path)
+    assert o.stderr.strip() == f"error: {e.value}"
+    assert isinstance(e.value, ValueError)
+    # A dict names the key by its dotted path.
+    d = copy.deepcopy(base)
+    d["contact"][0]["gap"] = -0.02
+    with pytest.raises(pounding.InputError, match=r"^contact\.0\.gap: gap = -0\.02 is not allowed: gap >= 0 \(m\)$"):
+        pounding.run(d)
+    d = copy.deepcopy(base)
+    d["contact"][0]["gapp"] = 1
+    with pytest.raises(pounding.InputError, match=r"^contact\.0\.gapp: unknown field `gapp`"):
+        pounding.run(d)
+    d = copy.deepcopy(base)
+    d["building"][0]["masses"] = [float("nan")]
+    with pytest.raises(pounding.InputError, match="^scenario: Out of range float values"):
+        pounding.run(d)
+
+
+def test_a_sweep_equals_single_runs_in_input_order(base):
+    scenarios = gaps(base, [0.05, 0.0, 0.01, 0.02])
+    scenarios.append({"ground_motion": {"record": "kobe"}})
+    out = pounding.sweep(scenarios, workers=2, progress=False)
+    for s, o in zip(scenarios[:4], out[:4]):
+        assert o == pounding.run(s, histories=False).summary
+    assert out[4] == {
+        "error": 'ground_motion.record: record = "kobe" is not a built-in record: el-centro-1940 (for a file, use file = "path")'
+    }
+    table = pounding.headline(out)
+    assert list(table["left|right_peak_force_N"][:4]) == [o["contacts"][0]["peak_force"] for o in out[:4]]
+
+
+def test_the_store_resumes_and_refuses_another_study(tmp_path, base):
+    store = tmp_path / "study.sqlite"
+    scenarios = gaps(base, [0.0, 0.01, 0.02])
+    first = pounding.sweep(scenarios[:2] + [{"ground_motion": {}}], store=store, progress=False)
+    assert "error" in first[2]
+    # Another list of scenarios is another study: refused, the store untouched.
+    before = hashlib.sha256(store.read_bytes()).hexdigest()
+    with pytest.raises(pounding.InputError, match="written by a different study"):
+        pounding.sweep(scenarios, store=store, progress=False)
+    assert hashlib.sha256(store.read_bytes()).hexdigest() == before
+    with sqlite3.connect(store) as db:
+        rows = db.execute("SELECT key, status, summary, error FROM runs ORDER BY idx").fetchall()
+    assert [r[1] for r in rows] == ["ok", "ok", "error"]
+    assert json.loads(rows[0][2]) == first[0]
+    assert rows[2][3].startswith("[ground_motion] needs exactly one of")
+
+
+RESUME_SCRIPT = """
+import copy, sys, pounding
+base = pounding.load_scenario(sys.argv[1])
+scenarios = []
+for i in range(int(sys.argv[3])):
+    s = copy.deepcopy(base)
+    s["contact"][0]["gap"] = 0.0005 * i
+    scenarios.append(s)
+out = pounding.sweep(scenarios, workers=1, store=sys.argv[2], progress=False)
+print(sum("error" in o for o in out))
+"""
+
+
+def test_a_sweep_killed_with_sigkill_resumes_with_every_run_once(tmp_path):
+    store = tmp_path / "study.sqlite"
+    script = tmp_path / "sweep.py"
+    script.write_text(RESUME_SCRIPT)
+    n = 120
+    args = [sys.executable, str(script), str(EXAMPLE), str(store), str(n)]
+    p = subprocess.Popen(args)
+    deadline = time.time() + 120
+    done = 0
+    while time.time() < deadline and p.poll() is None:
+        time.sleep(0.02)
+        if not store.exists():
+            continue
+        try:
+            with sqlite3.connect(f"file:{store}?mode=ro", uri=True, timeout=0.1) as db:
+                done = db.execute("SELECT count(*) FROM runs").fetchone()[0]
+        except sqlite3.Error:
+            continue
+        if done >= 10:
+            break
+    assert p.poll() is None, "the sweep ended before it could be killed: make it longer"
+    p.send_signal(signal.SIGKILL)
+    p.wait()
+    with sqlite3.connect(store) as db:
+        before = dict(db.execute("SELECT key, finished FROM runs").fetchall())
+    assert 10 <= len(before) < n
+    o = subprocess.run(args, capture_output=True, text=True)
+    assert o.returncode == 0, o.stderr
+    assert o.stdout.strip() == "0"
+    with sqlite3.connect(store) as db:
+        rows = db.execute("SELECT key, idx, finished, summary FROM runs ORDER BY idx").fetchall()
+    # Every run exactly once, in study order, and the runs finished before the kill were not run again.
+    assert len(rows) == n and len({r[0] for r in rows}) == n
+    assert [r[1] for r in rows] == list(range(n))
+    assert all(before[k] == f for k, _, f, _ in rows if k in before)
+    # The results equal a sweep that was never interrupted.
+    base = pounding.load_scenario(EXAMPLE)
+    fresh = pounding.sweep(gaps(base, [0.0005 * i for i in range(n)]), progress=False)
+    assert [json.loads(r[3]) for r in rows] == fresh
+
+
+def test_dask_sweep_on_a_local_cluster_equals_the_local_sweep(tmp_path, base):
+    distributed = pytest.importorskip("dask.distributed")
+    import pounding.dask
+
+    scenarios = gaps(base, [0.0, 0.005, 0.01, 0.02, 0.03, 0.05])
+    scenarios.append({"ground_motion": {"record": "el-centro-1940"}, "building": []})
+    local = pounding.sweep(scenarios, progress=False)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            store = tmp_path / "dask.sqlite"
+            remote = pounding.dask.sweep(scenarios, client, store=store, chunk=2)
+            assert remote == local
+            # Resumed from its store: nothing to run, the same results.
+            assert pounding.dask.sweep(scenarios, client, store=store) == local
+    with sqlite3.connect(store) as db:
+        assert db.execute("SELECT count(*) FROM runs").fetchone()[0] == len(scenarios)
+    # The local sweep reads the store the cluster wrote.
+    assert pounding.sweep(scenarios, store=store, progress=False) == local
