@@ -1137,7 +1137,7 @@ fn a_sweep_killed_with_sigkill_resumes_with_every_run_once() {
             .unwrap()
             .lines()
             .count(),
-        301
+        121
     );
 }
 

@@ -379,7 +379,11 @@ fn headline(py: Python<'_>, summary: &str) -> PyResult<Py<PyList>> {
     let row = pounding_study::headline::headline(&v);
     let out = PyList::empty(py);
     for (k, v) in row {
-        out.append((k, v.as_f64()))?;
+        // Counts stay integers; null (a number that is not finite) becomes None.
+        match v.as_u64() {
+            Some(n) => out.append((k, n))?,
+            None => out.append((k, v.as_f64()))?,
+        }
     }
     Ok(out.unbind())
 }

@@ -228,3 +228,20 @@ def test_dask_sweep_on_a_local_cluster_equals_the_local_sweep(tmp_path, base):
         assert db.execute("SELECT count(*) FROM runs").fetchone()[0] == len(scenarios)
     # The local sweep reads the store the cluster wrote.
     assert pounding.sweep(scenarios, store=store, progress=False) == local
+
+
+@pytest.mark.parametrize("name", ["gap_sweep.py", "dask_sweep.py"])
+def test_the_python_examples_run(tmp_path, name):
+    pytest.importorskip("matplotlib" if name == "gap_sweep.py" else "dask.distributed")
+    out = tmp_path / ("gap.png" if name == "gap_sweep.py" else "dask.sqlite")
+    o = subprocess.run(
+        [sys.executable, str(ROOT / "examples" / "python" / name), str(out)],
+        capture_output=True, text=True, timeout=300,
+    )
+    assert o.returncode == 0, o.stderr
+    assert out.exists() and out.stat().st_size > 0
+    if name == "dask_sweep.py":
+        # Every run once in the store, each a success (equality with the local sweep: the Dask test above).
+        with sqlite3.connect(out) as db:
+            status = [r[0] for r in db.execute("SELECT status FROM runs")]
+        assert status == ["ok"] * 20
