@@ -102,15 +102,6 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-fn link_name(s: &Scenario, l: usize) -> String {
-    let link = &s.links()[l];
-    format!(
-        "{}|{}",
-        s.buildings()[link.left].name,
-        s.buildings()[link.right].name
-    )
-}
-
 fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
     let rec = s.record();
     let p = rec.peaks();
@@ -203,7 +194,7 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
             .collect();
         println!(
             "\ncontact {}: gap {} m at floors {}, {}",
-            link_name(s, l),
+            s.link_name(l),
             fmt_num(link.gap),
             floors.join(", "),
             contact_label(link.contact.spec(), link.contact.parameter())
@@ -264,7 +255,7 @@ fn print_results(s: &Scenario, r: &Results) {
         for (l, lr) in r.links.iter().enumerate() {
             println!(
                 "{:<20} {:>7}  {:>12.5e}  {:>17.4e}  {:>19.5e}",
-                link_name(s, l),
+                s.link_name(l),
                 lr.impacts,
                 lr.peak_force,
                 lr.max_penetration,
@@ -306,7 +297,7 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
     }
     for (l, link) in s.links().iter().enumerate() {
         for (i, j) in &link.floors {
-            let _ = write!(out, ",{}_floors{i}-{j}_force_N", link_name(s, l));
+            let _ = write!(out, ",{}_floors{i}-{j}_force_N", s.link_name(l));
         }
     }
     for b in s.buildings() {
@@ -348,7 +339,7 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
             out,
             "{:e},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{}",
             i.time,
-            link_name(s, i.link),
+            s.link_name(i.link),
             i.floors.0,
             i.floors.1,
             i.v_i,

@@ -78,15 +78,6 @@ fn matrix<'py>(py: Python<'py>, cols: &[Vec<f64>], n: usize) -> PyResult<Bound<'
     Ok(d)
 }
 
-fn link_name(s: &Scenario, l: usize) -> String {
-    let link = &s.links()[l];
-    format!(
-        "{}|{}",
-        s.buildings()[link.left].name,
-        s.buildings()[link.right].name
-    )
-}
-
 /// The impacts as columns (lists; `e_post` NaN where the impact gave none).
 fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -98,7 +89,7 @@ fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'p
         "contact",
         r.impacts
             .iter()
-            .map(|i| link_name(s, i.link))
+            .map(|i| s.link_name(i.link))
             .collect::<Vec<_>>(),
     )?;
     d.set_item(
@@ -151,12 +142,12 @@ fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<
     }
     let f = PyDict::new(py);
     for (l, cols) in h.force.iter().enumerate() {
-        f.set_item(link_name(s, l), matrix(py, cols, n)?)?;
+        f.set_item(s.link_name(l), matrix(py, cols, n)?)?;
     }
     d.set_item("contact_force", f)?;
     let floors = PyDict::new(py);
     for (l, link) in s.links().iter().enumerate() {
-        floors.set_item(link_name(s, l), link.floors.clone())?;
+        floors.set_item(s.link_name(l), link.floors.clone())?;
     }
     d.set_item("contact_floors", floors)?;
     let e = PyDict::new(py);
@@ -178,7 +169,7 @@ fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<
 }
 
 /// Runs one scenario (JSON text, or the file at `path`) with the GIL released; returns a dict with
-/// `summary` (JSON text), `impacts` (columns) and `histories` (or None).
+/// `summary` (JSON text), `impacts` (columns) and `histories` (or None). Ctrl-C stops it (KeyboardInterrupt).
 #[pyfunction]
 #[pyo3(signature = (scenario=None, path=None, histories=true))]
 fn run<'py>(
@@ -192,13 +183,28 @@ fn run<'py>(
         histories,
         ..RunOptions::default()
     };
-    let results = py
-        .allow_threads(|| {
-            loaded
-                .scenario
-                .run_with_options(&options, &mut |_| ControlFlow::Continue(()))
+    let mut interrupted = None;
+    let mut last = std::time::Instant::now();
+    let results = py.allow_threads(|| {
+        loaded.scenario.run_with_options(&options, &mut |_| {
+            // Ctrl-C reaches Python only with the GIL: look for it every 0.1 s.
+            if last.elapsed().as_secs_f64() < 0.1 {
+                return ControlFlow::Continue(());
+            }
+            last = std::time::Instant::now();
+            match Python::with_gil(|py| py.check_signals()) {
+                Ok(()) => ControlFlow::Continue(()),
+                Err(e) => {
+                    interrupted = Some(e);
+                    ControlFlow::Break(())
+                }
+            }
         })
-        .map_err(|e| input_err(format!("analysis failed: {e}")))?;
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let results = results.map_err(|e| input_err(format!("analysis failed: {e}")))?;
     let summary = pounding_study::summary::summary(&loaded, &results).map_err(input_err)?;
     let out = PyDict::new(py);
     out.set_item("summary", summary.to_string())?;

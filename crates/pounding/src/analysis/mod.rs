@@ -105,6 +105,15 @@ impl Scenario {
         })
     }
 
+    /// The name of link `l`: `left|right`, the names of its two buildings (as output columns show it).
+    pub fn link_name(&self, l: usize) -> String {
+        let link = &self.links[l];
+        format!(
+            "{}|{}",
+            self.buildings[link.left].name, self.buildings[link.right].name
+        )
+    }
+
     /// Index of the building called `name`.
     pub fn building_index(&self, name: &str) -> Result<usize, Error> {
         self.buildings

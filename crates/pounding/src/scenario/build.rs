@@ -2,7 +2,7 @@
 
 use super::{AlphaDoc, BuildingDoc, ContactDoc, GroundMotionDoc, ScenarioDoc, SchemaError};
 use crate::analysis::{Building, Scenario};
-use crate::contact::{AlphaRule, ContactOptions, Damping, Model, OptionError, Reading, Tension};
+use crate::contact::{AlphaRule, ContactOptions, Damping, Model, Reading, Tension};
 use crate::element::StoreyLaw;
 use crate::ground_motion::{Format, Record, Units};
 use crate::structure::ShearBuilding;
@@ -430,12 +430,8 @@ fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, Sch
     let spec = opts.build(c.stiffness).map_err(|e| {
         // Messages start with the key (`e = 1.5 is not allowed ...`): name it.
         let m = e.message(|k| k.replace('-', "_"));
-        let k = m.split([' ', '=']).next().unwrap_or("").to_string();
-        let path = if matches!(e, OptionError::Value(_)) || !k.is_empty() {
-            key(&k)
-        } else {
-            at.to_string()
-        };
+        let k = m.split([' ', '=']).next().unwrap_or("");
+        let path = if k.is_empty() { at.to_string() } else { key(k) };
         SchemaError::new(path, format!("{pair}: {m}"))
     })?;
     let floors = match &c.floors {

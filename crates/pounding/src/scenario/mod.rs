@@ -14,7 +14,7 @@
 //!   "building": [
 //!     {"name": "A", "masses": [1e5], "stiffnesses": [4e7], "heights": [3.0]},
 //!     {"name": "B", "masses": [2e5], "stiffnesses": [2e7], "heights": [3.0]}],
-//!   "contact": [{"between": ["A", "B"], "gap": 0.01, "stiffness": 1e9, "stiffness_unit": "N/m^1.5"}]
+//!   "contact": [{"between": ["A", "B"], "gap": 0.01, "stiffness": 1e9, "stiffness_unit": "N/m"}]
 //! }"#).unwrap();
 //! let scenario = doc.build(Record::el_centro_1940()).unwrap();
 //! assert_eq!(scenario.links()[0].gap, 0.01);
