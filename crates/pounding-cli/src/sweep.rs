@@ -55,7 +55,9 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
         );
         b
     });
+    let mut skipped = 0;
     let mut report = |p: Progress| {
+        skipped = p.skipped;
         if let Some(b) = &bar {
             b.set_length(p.todo as u64);
             b.set_position(p.done as u64);
@@ -136,10 +138,11 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
         );
     }
     println!(
-        "{} runs: {} ok, {} failed; wrote {}: study.sqlite, runs.csv",
+        "{} runs: {} ok, {} failed ({} distinct runs were in the store already); wrote {}: study.sqlite, runs.csv",
         prepared.len(),
         prepared.len() - failed.len(),
         failed.len(),
+        skipped,
         a.out.display()
     );
     Ok(())
