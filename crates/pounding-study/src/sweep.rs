@@ -212,9 +212,12 @@ pub fn run(
 ) -> Result<Vec<Result<String, String>>, SweepError> {
     let mut outcomes: HashMap<&str, Result<String, String>> = HashMap::new();
     if let Some(st) = store.as_deref() {
+        // The study's own key strings (borrowed from `prepared`), found by value.
+        let keys: std::collections::HashSet<&str> =
+            prepared.iter().map(|p| p.key.as_str()).collect();
         for (k, o) in st.all().map_err(SweepError::Store)? {
-            if let Some(p) = prepared.iter().find(|p| p.key == k) {
-                outcomes.insert(p.key.as_str(), o);
+            if let Some(key) = keys.get(k.as_str()) {
+                outcomes.insert(*key, o);
             }
         }
     }
