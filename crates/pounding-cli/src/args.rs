@@ -115,6 +115,23 @@ pub struct PlotArgs {
 pub enum RecordCmd {
     /// npts, dt, duration, PGA, PGV and PGD (PGV, PGD after a linear baseline correction) of a record.
     Info(RecordArgs),
+    /// Elastic response spectrum: SD (m), PSV (m/s) and PSA (m/s^2) of linear oscillators, by the exact
+    /// piecewise-linear solution, peaks located between samples too.
+    Spectrum(SpectrumArgs),
+}
+
+/// A record and the oscillators of its spectrum.
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct SpectrumArgs {
+    #[command(flatten)]
+    pub record: RecordArgs,
+    /// Damping ratio of the oscillators, 0 <= damping < 1.
+    #[arg(long, default_value_t = 0.05)]
+    pub damping: f64,
+    /// Natural periods, s, comma-separated [default: 100 periods from 0.02 to 10 s, evenly spaced in log].
+    #[arg(long, value_delimiter = ',')]
+    pub periods: Option<Vec<f64>>,
 }
 
 /// Where a ground motion comes from and how to read it.

@@ -31,6 +31,9 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Record {
             cmd: RecordCmd::Info(a),
         } => record_info(&a),
+        Command::Record {
+            cmd: RecordCmd::Spectrum(a),
+        } => record_spectrum(&a),
         Command::Paper { table } => match table {
             PaperTable::Table1 { json, plots } => table1(json, &plots),
             PaperTable::Table2 { json } => table2(json),
@@ -747,6 +750,52 @@ pub fn load_record_from(
         }
     };
     record.scaled(scale).map_err(CliError::from)
+}
+
+/// The default periods of a spectrum: 100 from 0.02 to 10 s, evenly spaced in log, s.
+fn default_periods() -> Vec<f64> {
+    (0..100)
+        .map(|i| 0.02 * (10.0f64 / 0.02).powf(i as f64 / 99.0))
+        .collect()
+}
+
+fn record_spectrum(a: &crate::args::SpectrumArgs) -> Result<(), CliError> {
+    let r = load_record(&a.record)?;
+    let periods = a.periods.clone().unwrap_or_else(default_periods);
+    let s = pounding::ground_motion::spectrum::spectrum(&r, a.damping, &periods)?;
+    if a.record.json {
+        let out = json!({
+            "record": r.name(),
+            "damping": num(s.damping),
+            "periods": s.periods.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+            "sd": s.sd.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+            "psv": s.psv.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+            "psa": s.psa.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+            "units": {"periods": "s", "sd": "m", "psv": "m/s", "psa": "m/s^2", "damping": "ratio"},
+        });
+        println!("{}", serde_json::to_string_pretty(&out).expect("JSON"));
+        return Ok(());
+    }
+    println!(
+        "elastic spectrum of {} ({} samples at {} s), damping {} %, exact piecewise-linear solution",
+        r.name(),
+        r.npts(),
+        fmt_num(r.dt()),
+        fmt_num(100.0 * s.damping)
+    );
+    println!("  period_s        sd_m   psv_m_per_s  psa_m_per_s2   psa_g");
+    let g = pounding::impact::STANDARD_GRAVITY;
+    for i in 0..s.periods.len() {
+        println!(
+            "{:>10.4}  {:>10.5e}  {:>12.5e}  {:>12.5e}  {:>6.4}",
+            s.periods[i],
+            s.sd[i],
+            s.psv[i],
+            s.psa[i],
+            s.psa[i] / g
+        );
+    }
+    Ok(())
 }
 
 fn record_info(a: &RecordArgs) -> Result<(), CliError> {

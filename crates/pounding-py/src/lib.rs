@@ -394,6 +394,32 @@ fn headline(py: Python<'_>, summary: &str) -> PyResult<Py<PyList>> {
     Ok(out.unbind())
 }
 
+/// The elastic spectrum of the record a `[ground_motion]` table names (JSON text of the scenario schema's
+/// `ground_motion`) for `damping` at `periods` (s): `(sd, psv, psa)` in m, m/s, m/s^2.
+#[pyfunction]
+fn spectrum(
+    py: Python<'_>,
+    ground_motion: &str,
+    damping: f64,
+    periods: Vec<f64>,
+) -> PyResult<(Vec<f64>, Vec<f64>, Vec<f64>)> {
+    let value: Value = serde_json::from_str(ground_motion)
+        .map_err(|e| input_err(format!("ground_motion: {e}")))?;
+    let doc: pounding::scenario::GroundMotionDoc =
+        serde_json::from_value(value).map_err(|e| input_err(format!("ground_motion: {e}")))?;
+    let spec = doc.spec().map_err(|e| input_err(e.message))?;
+    let r = pounding_study::input::read_record(&spec)
+        .and_then(|r| {
+            r.scaled(spec.scale)
+                .map_err(pounding::ground_motion::RecordError::Value)
+        })
+        .map_err(|e| input_err(pounding_study::input::record_message(&spec, e)))?;
+    let s = py
+        .allow_threads(|| pounding::ground_motion::spectrum::spectrum(&r, damping, &periods))
+        .map_err(|e| input_err(e.to_string()))?;
+    Ok((s.sd, s.psv, s.psa))
+}
+
 /// The extension module.
 #[pymodule]
 fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -404,6 +430,7 @@ fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(keys, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_runs, m)?)?;
     m.add_function(wrap_pyfunction!(headline, m)?)?;
+    m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_class::<PyStore>()?;
     Ok(())
 }

@@ -245,3 +245,14 @@ def test_the_python_examples_run(tmp_path, name):
         with sqlite3.connect(out) as db:
             status = [r[0] for r in db.execute("SELECT status FROM runs")]
         assert status == ["ok"] * 20
+
+
+def test_spectrum_gives_the_numbers_of_the_command_line():
+    o = cli("record", "spectrum", "el-centro-1940", "--damping", "0.02", "--periods", "0.3,1,2.5", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = json.loads(o.stdout)
+    s = pounding.spectrum("el-centro-1940", damping=0.02, periods=[0.3, 1.0, 2.5])
+    for k in ("sd", "psv", "psa"):
+        assert s[k].tolist() == expected[k]
+    with pytest.raises(pounding.InputError, match="damping = 1 is not allowed"):
+        pounding.spectrum(damping=1.0, periods=[1.0])

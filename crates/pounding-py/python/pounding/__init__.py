@@ -26,7 +26,7 @@ from . import _pounding
 from ._pounding import InputError
 
 __version__ = _pounding.__version__
-__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline"]
+__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum"]
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
@@ -204,3 +204,28 @@ def headline(summaries: Iterable[Dict[str, Any]]):
     except ImportError:
         return rows
     return pd.DataFrame(rows)
+
+
+def spectrum(
+    record: Union[str, "os.PathLike[str]"] = "el-centro-1940",
+    damping: float = 0.05,
+    periods: Optional[Iterable[float]] = None,
+    format: Optional[str] = None,
+    dt: Optional[float] = None,
+    units: str = "g",
+    scale: float = 1.0,
+) -> Dict[str, Any]:
+    """The elastic response spectrum of a record (a built-in name or a file; ``format``, ``dt``, ``units`` and
+    ``scale`` as in a scenario's ``[ground_motion]``) for oscillators of damping ratio ``damping`` at
+    ``periods`` (s; default 100 from 0.02 to 10 s, evenly spaced in log), by the exact piecewise-linear
+    solution with peaks located between samples: a dict of ``damping``, ``periods`` (s), ``sd`` (m), ``psv``
+    (m/s) and ``psa`` (m/s^2), numpy arrays; the numbers of ``pounding record spectrum --json``."""
+    p = np.geomspace(0.02, 10.0, 100) if periods is None else np.asarray(list(periods), dtype=np.float64)
+    source = os.fspath(record)
+    gm = {"record" if source == "el-centro-1940" else "file": source, "units": units, "scale": float(scale)}
+    if format is not None:
+        gm["format"] = format
+    if dt is not None:
+        gm["dt"] = float(dt)
+    sd, psv, psa = _pounding.spectrum(_json(gm), float(damping), p.tolist())
+    return {"damping": float(damping), "periods": p, "sd": np.asarray(sd), "psv": np.asarray(psv), "psa": np.asarray(psa)}

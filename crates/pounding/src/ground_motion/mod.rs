@@ -5,6 +5,7 @@
 //! The library reads text, never files: the caller passes the file's contents.
 
 pub mod parse;
+pub mod spectrum;
 
 use crate::error::check;
 use crate::Error;
