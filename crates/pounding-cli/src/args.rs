@@ -32,6 +32,9 @@ pub enum Command {
     /// Every scenario of a study (a base scenario and axes), in parallel, into a resumable SQLite store and
     /// runs.csv (see docs/studies.md).
     Sweep(SweepArgs),
+    /// Required separation of each pair of neighbours at each contact level (from a run without contact),
+    /// against the ABS, SRSS and DDC rules; over a suite of records with --records.
+    Separation(SeparationArgs),
     /// A self-contained HTML report (inline figures, no network access) of the output folder of a run.
     Report(ReportArgs),
     /// Ground-motion records.
@@ -44,6 +47,22 @@ pub enum Command {
         #[command(subcommand)]
         table: PaperTable,
     },
+}
+
+#[derive(Args, Debug)]
+pub struct SeparationArgs {
+    /// Scenario file (TOML); its contacts say which floors face each other (see docs/separation.md).
+    pub scenario: std::path::PathBuf,
+    /// Records to use in place of the scenario's, comma-separated: built-in names, files, folders or globs
+    /// (read in the scenario's units); with more than one, the mean, median and 84th percentile too.
+    #[arg(long, value_delimiter = ',')]
+    pub records: Vec<String>,
+    /// Factor on the rules at levels whose floors are at the same height (Eurocode 8: 0.7), 0 < f <= 1.
+    #[arg(long)]
+    pub aligned_factor: Option<f64>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Args, Debug)]

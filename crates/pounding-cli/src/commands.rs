@@ -27,6 +27,7 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Compare(a) => compare(&a),
         Command::Run(a) => crate::run::run(&a),
         Command::Sweep(a) => crate::sweep::command(&a),
+        Command::Separation(a) => separation(&a),
         Command::Report(a) => crate::report::command(&a),
         Command::Record {
             cmd: RecordCmd::Info(a),
@@ -750,6 +751,89 @@ pub fn load_record_from(
         }
     };
     record.scaled(scale).map_err(CliError::from)
+}
+
+fn separation(a: &crate::args::SeparationArgs) -> Result<(), CliError> {
+    let file = pounding_study::input::ScenarioFile::read(&a.scenario).map_err(|e| input(e.0))?;
+    // The scenario itself is checked with file and line first.
+    file.load().map_err(|e| input(e.0))?;
+    let mut records = Vec::new();
+    for r in &a.records {
+        records.extend(
+            pounding_study::study::record_sources(Path::new("."), &Value::String(r.clone()))
+                .map_err(|m| input(format!("--{m}")))?,
+        );
+    }
+    let label = a.scenario.display().to_string();
+    let v =
+        pounding_study::separation::report_message(&file.value, &label, &records, a.aligned_factor)
+            .map_err(|m| input(m.replace("aligned_factor = ", "--aligned-factor ")))?;
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&v).expect("JSON"));
+        return Ok(());
+    }
+    let table = |pairs: &Value, pick: &dyn Fn(&Value) -> String| {
+        for p in pairs.as_array().into_iter().flatten() {
+            let between: Vec<&str> = p["between"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter_map(Value::as_str)
+                .collect();
+            for l in p["levels"].as_array().into_iter().flatten() {
+                println!(
+                    "{:<20} {:>3}-{:<3} {}",
+                    between.join("|"),
+                    l["floors"][0],
+                    l["floors"][1],
+                    pick(l)
+                );
+            }
+        }
+    };
+    let m = |x: &Value| x.as_f64().map_or("-".into(), |x| format!("{x:>10.5}"));
+    println!("required separation (a run without contact) and the rules' estimates, m");
+    println!("pair                 floors   peak_left  peak_right  required_gap         abs        srss         ddc    rho");
+    let row = |l: &Value| {
+        format!(
+            "{}  {}  {}    {}  {}  {}  {:.4}",
+            m(&l["peak_left"]),
+            m(&l["peak_right"]),
+            m(&l["required_gap"]),
+            m(&l["abs"]),
+            m(&l["srss"]),
+            m(&l["ddc"]),
+            l["rho"].as_f64().unwrap_or(f64::NAN)
+        )
+    };
+    match v.get("records") {
+        None => table(&v["pairs"], &row),
+        Some(runs) => {
+            for r in runs.as_array().into_iter().flatten() {
+                println!("\nrecord {}", r["record"].as_str().unwrap_or(""));
+                table(&r["pairs"], &row);
+            }
+            for stat in ["mean", "median", "p84"] {
+                println!(
+                    "\n{stat} over {} records",
+                    runs.as_array().map_or(0, Vec::len)
+                );
+                table(&v["statistics"]["pairs"], &|l: &Value| {
+                    let q = |k: &str| m(&l[k][stat]);
+                    format!(
+                        "{}  {}  {}    {}  {}  {}",
+                        q("peak_left"),
+                        q("peak_right"),
+                        q("required_gap"),
+                        q("abs"),
+                        q("srss"),
+                        q("ddc")
+                    )
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The default periods of a spectrum: 100 from 0.02 to 10 s, evenly spaced in log, s.

@@ -1230,3 +1230,37 @@ fn record_spectrum_gives_sd_psv_psa_and_refuses_bad_oscillators() {
         assert!(o.stdout.is_empty());
     }
 }
+
+#[test]
+fn separation_reports_each_level_and_refuses_bad_options() {
+    let v = json(&["separation", &example("three-vs-eight-storey.toml")]);
+    let levels = v["pairs"][0]["levels"].as_array().unwrap();
+    assert_eq!(
+        v["pairs"][0]["between"],
+        serde_json::json!(["3-storey", "8-storey"])
+    );
+    assert_eq!(levels.len(), 3);
+    for l in levels {
+        let g = |k: &str| l[k].as_f64().unwrap();
+        // ABS bounds the required gap at every instant; the rules are ordered by rho >= 0.
+        assert!(g("required_gap") > 0.0 && g("required_gap") <= g("abs"));
+        assert!(g("ddc") <= g("srss") && g("srss") <= g("abs"));
+        assert_eq!(g("factor"), 1.0);
+    }
+    for (args, needle) in [
+        (
+            vec!["--aligned-factor", "2"],
+            "--aligned-factor 2 is not allowed",
+        ),
+        (vec!["--records", "no-such/*.AT2"], "matches no file"),
+    ] {
+        let mut a = vec!["separation".to_string(), example("two-sdof.toml")];
+        a.extend(args.iter().map(|s| s.to_string()));
+        let a: Vec<&str> = a.iter().map(String::as_str).collect();
+        let o = pounding(&a);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
+}

@@ -420,6 +420,38 @@ fn spectrum(
     Ok((s.sd, s.psv, s.psa))
 }
 
+/// The separation report (JSON text) of a scenario (JSON text, or the file at `path`) under its record or
+/// each of `records`; `aligned_factor` multiplies the rules at aligned floors.
+#[pyfunction]
+#[pyo3(signature = (scenario=None, path=None, records=Vec::new(), aligned_factor=None))]
+fn separation(
+    py: Python<'_>,
+    scenario: Option<&str>,
+    path: Option<&str>,
+    records: Vec<String>,
+    aligned_factor: Option<f64>,
+) -> PyResult<String> {
+    let (value, label) = match (scenario, path) {
+        (_, Some(p)) => {
+            let file = ScenarioFile::read(Path::new(p)).map_err(|e| input_err(e.0))?;
+            file.load().map_err(|e| input_err(e.0))?;
+            (file.value, p.to_string())
+        }
+        (Some(text), None) => (
+            serde_json::from_str(text)
+                .map_err(|e| input_err(format!("scenario: not a JSON object: {e}")))?,
+            "<dict>".to_string(),
+        ),
+        (None, None) => return Err(input_err("scenario: give a dict or a path")),
+    };
+    let v = py
+        .allow_threads(|| {
+            pounding_study::separation::report_message(&value, &label, &records, aligned_factor)
+        })
+        .map_err(input_err)?;
+    Ok(v.to_string())
+}
+
 /// The extension module.
 #[pymodule]
 fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -431,6 +463,7 @@ fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep_runs, m)?)?;
     m.add_function(wrap_pyfunction!(headline, m)?)?;
     m.add_function(wrap_pyfunction!(spectrum, m)?)?;
+    m.add_function(wrap_pyfunction!(separation, m)?)?;
     m.add_class::<PyStore>()?;
     Ok(())
 }

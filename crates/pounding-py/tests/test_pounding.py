@@ -256,3 +256,20 @@ def test_spectrum_gives_the_numbers_of_the_command_line():
         assert s[k].tolist() == expected[k]
     with pytest.raises(pounding.InputError, match="damping = 1 is not allowed"):
         pounding.spectrum(damping=1.0, periods=[1.0])
+
+
+def test_separation_gives_the_numbers_of_the_command_line(base):
+    o = cli("separation", "examples/three-vs-eight-storey.toml", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = json.loads(o.stdout)
+    os.chdir(ROOT)
+    assert pounding.separation("examples/three-vs-eight-storey.toml") == expected
+    levels = expected["pairs"][0]["levels"]
+    assert [l["floors"] for l in levels] == [[1, 1], [2, 2], [3, 3]]
+    # Over a suite: each record, then the statistics.
+    two = pounding.separation(base, records=["el-centro-1940", "el-centro-1940"], aligned_factor=0.7)
+    assert len(two["records"]) == 2
+    gap = two["records"][0]["pairs"][0]["levels"][0]["required_gap"]
+    assert two["statistics"]["pairs"][0]["levels"][0]["required_gap"] == {"mean": gap, "median": gap, "p84": gap}
+    with pytest.raises(pounding.InputError, match="aligned_factor = 2 is not allowed"):
+        pounding.separation(base, aligned_factor=2.0)

@@ -7,6 +7,7 @@
 pub mod headline;
 pub mod input;
 pub mod key;
+pub mod separation;
 pub mod store;
 pub mod study;
 pub mod summary;

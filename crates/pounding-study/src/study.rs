@@ -111,7 +111,7 @@ fn set_path(value: &mut Value, path: &str, new: Value) -> Result<(), String> {
 
 /// The record sources a `record` axis value names, relative to `dir`: a built-in, a file, every file of a
 /// folder, or the files a glob matches (sorted).
-fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
+pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
     let Value::String(s) = v else {
         return Err(format!(
             "record = {v} is not allowed: a built-in name, a file, a folder or a glob"
@@ -164,7 +164,7 @@ fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
 
 /// Sets the ground motion of `scenario` to `source` (a built-in or a file), keeping its units, and its format
 /// and time step if it already read a file.
-fn set_record(scenario: &mut Value, source: &str) {
+pub fn set_record(scenario: &mut Value, source: &str) {
     let gm = scenario
         .as_object_mut()
         .map(|m| {

@@ -32,6 +32,7 @@ pub mod limits;
 pub mod paper;
 #[cfg(feature = "serde")]
 pub mod scenario;
+pub mod separation;
 pub mod structure;
 
 pub use error::Error;

@@ -26,7 +26,7 @@ from . import _pounding
 from ._pounding import InputError
 
 __version__ = _pounding.__version__
-__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum"]
+__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation"]
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
@@ -229,3 +229,21 @@ def spectrum(
         gm["dt"] = float(dt)
     sd, psv, psa = _pounding.spectrum(_json(gm), float(damping), p.tolist())
     return {"damping": float(damping), "periods": p, "sd": np.asarray(sd), "psv": np.asarray(psv), "psa": np.asarray(psa)}
+
+
+def separation(
+    scenario: Scenario,
+    records: Optional[Iterable[Union[str, "os.PathLike[str]"]]] = None,
+    aligned_factor: Optional[float] = None,
+) -> Dict[str, Any]:
+    """The required separation of each pair of neighbours at each contact level, from a run without contact,
+    against the ABS, SRSS and DDC rules (docs/separation.md): the JSON of ``pounding separation --json`` as a
+    dict. ``scenario`` is a dict or a path; ``records`` (built-in names or files) replace its record, one run
+    each, and add the mean, median and 84th percentile over them; ``aligned_factor`` (Eurocode 8: 0.7)
+    multiplies the rules where the floors are at the same height."""
+    recs = [os.fspath(r) for r in (records or [])]
+    if isinstance(scenario, (str, os.PathLike)):
+        text = _pounding.separation(path=os.fspath(scenario), records=recs, aligned_factor=aligned_factor)
+    else:
+        text = _pounding.separation(scenario=_json(scenario), records=recs, aligned_factor=aligned_factor)
+    return json.loads(text)

@@ -75,6 +75,10 @@ pub struct Scenario {
 /// [`Scenario::with_min_impact_velocity`]).
 pub const DEFAULT_MIN_IMPACT_VELOCITY: f64 = 1e-3;
 
+/// The gap of [`Scenario::without_contact`]'s links, m: beyond any motion, yet finite, so that penetrations
+/// `u_L - u_R - gap` stay ordinary numbers.
+pub const NO_CONTACT_GAP: f64 = 1e100;
+
 /// Default relative tolerance of the integration (see `docs/verification.md` for the convergence study).
 pub const DEFAULT_TOLERANCE: f64 = 1e-7;
 
@@ -204,16 +208,7 @@ impl Scenario {
                 f
             }
             None => {
-                let (zl, zr) = (sl.elevations(), sr.elevations());
-                let pairs: Vec<(usize, usize)> = zl
-                    .iter()
-                    .enumerate()
-                    .filter_map(|(i, z)| {
-                        zr.iter()
-                            .position(|w| (w - z).abs() <= 1e-3)
-                            .map(|j| (i + 1, j + 1))
-                    })
-                    .collect();
+                let pairs = self.aligned_floors(left);
                 if pairs.is_empty() {
                     return Err(Error::Choice {
                         name: "floors",
@@ -237,6 +232,52 @@ impl Scenario {
         });
         self.links.sort_by_key(|l| l.left);
         Ok(self)
+    }
+
+    /// The floor pairs of buildings `left` and `left + 1` at the same height (within 1 mm), from 1.
+    pub fn aligned_floors(&self, left: usize) -> Vec<(usize, usize)> {
+        let zl = self.buildings[left].structure.elevations();
+        let zr = self.buildings[left + 1].structure.elevations();
+        zl.iter()
+            .enumerate()
+            .filter_map(|(i, z)| {
+                zr.iter()
+                    .position(|w| (w - z).abs() <= 1e-3)
+                    .map(|j| (i + 1, j + 1))
+            })
+            .collect()
+    }
+
+    /// The same scenario without contact: every pair of neighbours is linked at the floors of its contact
+    /// entry (or, without one, at the floors at the same height) by contact elements whose gap no motion
+    /// closes ([`NO_CONTACT_GAP`]), so that a run records each floor pair's largest closing
+    /// ([`LinkResponse::max_closing`]) and nothing else changes. Neighbours without a contact entry and
+    /// without floors at the same height stay unlinked.
+    pub fn without_contact(&self) -> Scenario {
+        let mut s = self.clone();
+        for link in &mut s.links {
+            link.gap = NO_CONTACT_GAP;
+        }
+        for left in 0..self.buildings.len().saturating_sub(1) {
+            if s.links.iter().any(|l| l.left == left) {
+                continue;
+            }
+            let floors = self.aligned_floors(left);
+            // Any contact model: it never acts. Hooke's needs no calibration.
+            let prepared =
+                ContactModel::new(crate::contact::Model::Hooke, 1.0, 1.0).and_then(|c| c.prepare());
+            if let (false, Ok(contact)) = (floors.is_empty(), prepared) {
+                s.links.push(Link {
+                    left,
+                    right: left + 1,
+                    gap: NO_CONTACT_GAP,
+                    floors,
+                    contact,
+                });
+            }
+        }
+        s.links.sort_by_key(|l| l.left);
+        s
     }
 
     /// Sets the analysed duration, s (> 0; may exceed the record, which is followed by free vibration).
@@ -448,6 +489,10 @@ pub struct LinkResponse {
     pub dissipated_energy: f64,
     /// Largest penetration of any element, m.
     pub max_penetration: f64,
+    /// Largest closing `u_left - u_right` of each floor pair (in [`Link::floors`] order) over the run, m,
+    /// located between steps; 0 if the floors never approached. Without contact (a run of
+    /// [`Scenario::without_contact`]) it is the gap each pair needed to never touch.
+    pub max_closing: Vec<f64>,
 }
 
 /// Energies at the end of the analysis, J, and the worst relative error of the balance.

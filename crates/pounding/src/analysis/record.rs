@@ -113,6 +113,8 @@ pub(super) struct Impacts {
     slot: Vec<usize>,
     trackers: Vec<Option<Tracker>>,
     pub impacts: Vec<Impact>,
+    /// Largest closing `u_left - u_right` of each contact element so far, m (0 at rest).
+    pub max_closing: Vec<f64>,
 }
 
 impl Impacts {
@@ -126,6 +128,7 @@ impl Impacts {
             slot,
             trackers: m.contacts.iter().map(|_| None).collect(),
             impacts: Vec::new(),
+            max_closing: vec![0.0; m.contacts.len()],
         }
     }
 
@@ -174,6 +177,22 @@ impl Impacts {
 impl Observer for Impacts {
     fn segment(&mut self, seg: &Segment<'_, '_>) {
         let sys = seg.system;
+        let h = seg.t1 - seg.t0;
+        for (c, m) in self.contacts.iter().zip(self.max_closing.iter_mut()) {
+            // The closing's largest value on the step: at its end or at an interior extremum of its
+            // Hermite interpolant (located, as the floors' peaks are).
+            let ((xa, va), (xb, vb)) = (
+                sys.deformation(c.element, seg.y0),
+                sys.deformation(c.element, seg.y1),
+            );
+            let p = Hermite::new(xa, xb, va, vb, h);
+            *m = m.max(xb);
+            for s in p.extrema() {
+                if !s.is_nan() {
+                    *m = m.max(p.at(s));
+                }
+            }
+        }
         for (c, tr) in self.contacts.iter().zip(self.trackers.iter_mut()) {
             let (Some(tr), Kind::Contact(ct)) = (tr.as_mut(), &sys.elements()[c.element].kind)
             else {

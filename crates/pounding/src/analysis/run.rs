@@ -191,6 +191,13 @@ pub(super) fn run(
                     .map(|c| y[l.block(c.element).start])
                     .sum(),
                 max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
+                max_closing: model
+                    .contacts
+                    .iter()
+                    .zip(&rec.impacts.max_closing)
+                    .filter(|(c, _)| c.link == li)
+                    .map(|(_, m)| *m)
+                    .collect(),
             }
         })
         .collect();

@@ -11,6 +11,7 @@ mod inelastic;
 mod integrated;
 mod paper;
 mod reliability;
+mod separation;
 
 use pounding::contact::{ContactModel, Damping, ForceLaw, Model, Tension};
 use pounding::impact::{simulate, ImpactOptions, ImpactResult, ImpactSetup};
