@@ -137,6 +137,60 @@ pub enum RecordCmd {
     /// Elastic response spectrum: SD (m), PSV (m/s) and PSA (m/s^2) of linear oscillators, by the exact
     /// piecewise-linear solution, peaks located between samples too.
     Spectrum(SpectrumArgs),
+    /// A synthetic record from a seed: filtered white noise (Kanai-Tajimi or Clough-Penzien) under a time
+    /// envelope, scaled to a PGA, written as a two-column file (s, m/s^2). See docs/separation.md.
+    Synth(SynthArgs),
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum FilterArg {
+    KanaiTajimi,
+    CloughPenzien,
+}
+
+/// A synthetic ground motion's parameters.
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct SynthArgs {
+    /// Seed of the random numbers: the same seed gives the same record, bit for bit.
+    #[arg(long)]
+    pub seed: u64,
+    /// File to write (time s, acceleration m/s^2; read it with units = "m/s2").
+    #[arg(long, value_name = "FILE")]
+    pub out: std::path::PathBuf,
+    /// Filters of the white noise.
+    #[arg(long, value_enum, default_value_t = FilterArg::CloughPenzien)]
+    pub filter: FilterArg,
+    /// Circular frequency of the soil filter, rad/s.
+    #[arg(long, default_value_t = 15.6)]
+    pub wg: f64,
+    /// Damping ratio of the soil filter.
+    #[arg(long, default_value_t = 0.6)]
+    pub zg: f64,
+    /// Circular frequency of the high-pass filter (clough-penzien), rad/s.
+    #[arg(long, default_value_t = 1.56)]
+    pub wf: f64,
+    /// Damping ratio of the high-pass filter (clough-penzien).
+    #[arg(long, default_value_t = 0.6)]
+    pub zf: f64,
+    /// Duration, s.
+    #[arg(long, default_value_t = 20.0)]
+    pub duration: f64,
+    /// Time step, s.
+    #[arg(long, default_value_t = 0.01)]
+    pub dt: f64,
+    /// End of the envelope's rise (t/t1)^2, s.
+    #[arg(long, default_value_t = 2.0)]
+    pub t1: f64,
+    /// End of the envelope's strong phase, s.
+    #[arg(long, default_value_t = 10.0)]
+    pub t2: f64,
+    /// Decay rate of the envelope after t2, 1/s.
+    #[arg(long, default_value_t = 0.3)]
+    pub decay: f64,
+    /// Peak ground acceleration of the record, m/s^2.
+    #[arg(long, default_value_t = 3.0)]
+    pub pga: f64,
 }
 
 /// A record and the oscillators of its spectrum.

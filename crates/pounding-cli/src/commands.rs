@@ -35,6 +35,9 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Record {
             cmd: RecordCmd::Spectrum(a),
         } => record_spectrum(&a),
+        Command::Record {
+            cmd: RecordCmd::Synth(a),
+        } => record_synth(&a),
         Command::Paper { table } => match table {
             PaperTable::Table1 { json, plots } => table1(json, &plots),
             PaperTable::Table2 { json } => table2(json),
@@ -833,6 +836,59 @@ fn separation(a: &crate::args::SeparationArgs) -> Result<(), CliError> {
             }
         }
     }
+    Ok(())
+}
+
+fn record_synth(a: &crate::args::SynthArgs) -> Result<(), CliError> {
+    use pounding::ground_motion::synthetic::{Filter, Synthetic};
+    let filter = match a.filter {
+        crate::args::FilterArg::KanaiTajimi => Filter::KanaiTajimi { wg: a.wg, zg: a.zg },
+        crate::args::FilterArg::CloughPenzien => Filter::CloughPenzien {
+            wg: a.wg,
+            zg: a.zg,
+            wf: a.wf,
+            zf: a.zf,
+        },
+    };
+    let s = Synthetic {
+        filter,
+        duration: a.duration,
+        dt: a.dt,
+        t1: a.t1,
+        t2: a.t2,
+        decay: a.decay,
+        pga: Some(a.pga),
+        envelope: true,
+    };
+    let name = a
+        .out
+        .file_stem()
+        .and_then(|x| x.to_str())
+        .unwrap_or("synthetic");
+    let r = s.record(name, a.seed)?;
+    let mut text = format!(
+        "# synthetic ground motion, pounding record synth --seed {} --filter {} --wg {} --zg {} --wf {} --zf {} --duration {} --dt {} --t1 {} --t2 {} --decay {} --pga {}\n# read with units = \"m/s2\" (format time-acc)\ntime_s,acceleration_m_per_s2\n",
+        a.seed,
+        match a.filter {
+            crate::args::FilterArg::KanaiTajimi => "kanai-tajimi",
+            crate::args::FilterArg::CloughPenzien => "clough-penzien",
+        },
+        a.wg,
+        a.zg, a.wf, a.zf, a.duration, a.dt, a.t1, a.t2, a.decay, a.pga
+    );
+    for (k, x) in r.accelerations().iter().enumerate() {
+        text.push_str(&format!("{},{x:e}\n", fmt_num(r.t0() + k as f64 * r.dt())));
+    }
+    write_atomic(&a.out, text.as_bytes())
+        .map_err(|e| CliError::Io(format!("cannot write {}: {e}", a.out.display())))?;
+    println!(
+        "wrote {}: {} samples at {} s, PGA {} m/s^2 (seed {})",
+        a.out.display(),
+        r.npts(),
+        fmt_num(r.dt()),
+        fmt_sig(r.peaks().pga, 6),
+        a.seed
+    );
     Ok(())
 }
 

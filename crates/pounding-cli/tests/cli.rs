@@ -1264,3 +1264,39 @@ fn separation_reports_each_level_and_refuses_bad_options() {
         assert!(err.contains(needle), "{err}");
     }
 }
+
+#[test]
+fn record_synth_is_reproducible_runs_as_a_record_and_refuses_bad_filters() {
+    let dir = tmp("synth");
+    let (a, b) = (dir.join("a.csv"), dir.join("b.csv"));
+    for f in [&a, &b] {
+        let o = pounding(&[
+            "record",
+            "synth",
+            "--seed",
+            "42",
+            "--out",
+            f.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    let info = json(&["record", "info", a.to_str().unwrap(), "--units", "m/s2"]);
+    assert_eq!(info["npts"], 2000);
+    assert!((f(&info, "pga") - 3.0).abs() < 1e-12);
+    let c = dir.join("c.csv");
+    let o = pounding(&[
+        "record",
+        "synth",
+        "--seed",
+        "1",
+        "--out",
+        c.to_str().unwrap(),
+        "--wf",
+        "20",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("--wf 20 is not allowed: 0 < wf < wg"), "{err}");
+    assert!(!c.exists());
+}

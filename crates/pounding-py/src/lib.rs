@@ -452,6 +452,58 @@ fn separation(
     Ok(v.to_string())
 }
 
+/// A synthetic record (docs/separation.md): `seed` and the parameters as JSON text (`filter`, `wg`, `zg`,
+/// `wf`, `zf`, `duration`, `dt`, `t1`, `t2`, `decay`, `pga`); returns `(dt, t0, accelerations)` in s and m/s^2.
+#[pyfunction]
+fn synthetic(seed: u64, params: &str) -> PyResult<(f64, f64, Vec<f64>)> {
+    use pounding::ground_motion::synthetic::{Filter, Synthetic};
+    let p: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
+    let d = Synthetic::default();
+    let num = |k: &str, default: f64| -> PyResult<f64> {
+        match p.get(k) {
+            None | Some(Value::Null) => Ok(default),
+            Some(v) => v
+                .as_f64()
+                .ok_or_else(|| input_err(format!("{k} = {v} is not allowed: a number"))),
+        }
+    };
+    let filter = match p
+        .get("filter")
+        .and_then(Value::as_str)
+        .unwrap_or("clough-penzien")
+    {
+        "kanai-tajimi" => Filter::KanaiTajimi {
+            wg: num("wg", 15.6)?,
+            zg: num("zg", 0.6)?,
+        },
+        "clough-penzien" => Filter::CloughPenzien {
+            wg: num("wg", 15.6)?,
+            zg: num("zg", 0.6)?,
+            wf: num("wf", 1.56)?,
+            zf: num("zf", 0.6)?,
+        },
+        other => {
+            return Err(input_err(format!(
+                "filter = {other:?} is not allowed: one of kanai-tajimi, clough-penzien"
+            )))
+        }
+    };
+    let s = Synthetic {
+        filter,
+        duration: num("duration", d.duration)?,
+        dt: num("dt", d.dt)?,
+        t1: num("t1", d.t1)?,
+        t2: num("t2", d.t2)?,
+        decay: num("decay", d.decay)?,
+        pga: Some(num("pga", 3.0)?),
+        envelope: true,
+    };
+    let r = s
+        .record("synthetic", seed)
+        .map_err(|e| input_err(e.to_string()))?;
+    Ok((r.dt(), r.t0(), r.accelerations().to_vec()))
+}
+
 /// The extension module.
 #[pymodule]
 fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -464,6 +516,7 @@ fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(headline, m)?)?;
     m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(separation, m)?)?;
+    m.add_function(wrap_pyfunction!(synthetic, m)?)?;
     m.add_class::<PyStore>()?;
     Ok(())
 }

@@ -273,3 +273,21 @@ def test_separation_gives_the_numbers_of_the_command_line(base):
     assert two["statistics"]["pairs"][0]["levels"][0]["required_gap"] == {"mean": gap, "median": gap, "p84": gap}
     with pytest.raises(pounding.InputError, match="aligned_factor = 2 is not allowed"):
         pounding.separation(base, aligned_factor=2.0)
+
+
+def test_synthetic_records_are_those_of_the_command_line(tmp_path):
+    out = tmp_path / "s.csv"
+    o = cli("record", "synth", "--seed", "5", "--out", str(out), "--pga", "2.5", "--filter", "kanai-tajimi")
+    assert o.returncode == 0, o.stderr
+    data = np.loadtxt(out, delimiter=",", comments="#", skiprows=3)
+    s = pounding.synthetic(5, pga=2.5, filter="kanai-tajimi")
+    # Accelerations to the last bit (written with 17 digits); times as the file rounds them (12 digits).
+    assert np.array_equal(s["acceleration"], data[:, 1])
+    assert np.allclose(s["time"], data[:, 0], rtol=1e-12, atol=0)
+    assert np.max(np.abs(s["acceleration"])) == pytest.approx(2.5, rel=1e-15)
+    # The file runs as a scenario's record.
+    d = pounding.load_scenario(EXAMPLE)
+    d["ground_motion"] = {"file": str(out), "units": "m/s2"}
+    assert pounding.run(d, histories=False).summary["record"]["pga"] == pytest.approx(2.5, rel=1e-15)
+    with pytest.raises(pounding.InputError, match="zg = 1.5 is not allowed"):
+        pounding.synthetic(1, zg=1.5)

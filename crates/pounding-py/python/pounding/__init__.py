@@ -26,7 +26,7 @@ from . import _pounding
 from ._pounding import InputError
 
 __version__ = _pounding.__version__
-__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation"]
+__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation", "synthetic"]
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
@@ -247,3 +247,14 @@ def separation(
     else:
         text = _pounding.separation(scenario=_json(scenario), records=recs, aligned_factor=aligned_factor)
     return json.loads(text)
+
+
+def synthetic(seed: int, **params: Any) -> Dict[str, Any]:
+    """A synthetic ground motion from ``seed``: filtered white noise under a time envelope, scaled to a PGA,
+    exactly ``pounding record synth`` (docs/separation.md). Parameters (SI units): ``filter``
+    (``"clough-penzien"`` or ``"kanai-tajimi"``), ``wg``, ``zg``, ``wf``, ``zf`` (rad/s and ratios),
+    ``duration``, ``dt``, ``t1``, ``t2`` (s), ``decay`` (1/s), ``pga`` (m/s^2). Returns ``dt`` (s), ``t0`` (s),
+    ``time`` (s) and ``acceleration`` (m/s^2, numpy)."""
+    dt, t0, acc = _pounding.synthetic(int(seed), _json(dict(params)))
+    a = np.asarray(acc)
+    return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(a)), "acceleration": a}

@@ -6,6 +6,7 @@
 
 pub mod parse;
 pub mod spectrum;
+pub mod synthetic;
 
 use crate::error::check;
 use crate::Error;

@@ -77,7 +77,7 @@ pub fn spectrum(record: &Record, damping: f64, periods: &[f64]) -> Result<Spectr
 }
 
 /// The closed-form response over one step of linear ground acceleration, from `(u0, v0)`.
-struct Step {
+pub(crate) struct Step {
     w: f64,
     zeta: f64,
     wd: f64,
@@ -91,7 +91,7 @@ struct Step {
 
 impl Step {
     /// The step where the ground acceleration goes linearly from `a0` to `a1` over `h` s.
-    fn new(w: f64, zeta: f64, u0: f64, v0: f64, a0: f64, a1: f64, h: f64) -> Self {
+    pub(crate) fn new(w: f64, zeta: f64, u0: f64, v0: f64, a0: f64, a1: f64, h: f64) -> Self {
         let wd = w * (1.0 - zeta * zeta).sqrt();
         // Forcing per unit mass p = -a_g = p0 + s tau.
         let (p0, s) = (-a0, -(a1 - a0) / h);
@@ -111,7 +111,7 @@ impl Step {
     }
 
     /// Displacement and velocity at `tau` s into the step.
-    fn at(&self, tau: f64) -> (f64, f64) {
+    pub(crate) fn at(&self, tau: f64) -> (f64, f64) {
         let e = (-self.zeta * self.w * tau).exp();
         let (s, c) = (self.wd * tau).sin_cos();
         let zw = self.zeta * self.w;
