@@ -35,6 +35,9 @@ pub enum Command {
     /// Required separation of each pair of neighbours at each contact level (from a run without contact),
     /// against the ABS, SRSS and DDC rules; over a suite of records with --records.
     Separation(SeparationArgs),
+    /// Incremental dynamic analysis: records x intensity levels (Sa(T1) or PGA) as a resumable sweep, the
+    /// demands of each run, and lognormal fragility curves per limit state (see docs/ida.md).
+    Ida(SweepArgs),
     /// A self-contained HTML report (inline figures, no network access) of the output folder of a run.
     Report(ReportArgs),
     /// Ground-motion records.
@@ -211,7 +214,7 @@ pub struct SpectrumArgs {
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct RecordArgs {
-    /// A record file, or a built-in record: el-centro-1940.
+    /// A record file, or a built-in record: el-centro-1940, synthetic-SEED (seed 0, 1, 2, ...).
     pub file: String,
     /// File format [default: at2 for *.at2 files, time-acc otherwise].
     #[arg(long, value_enum)]

@@ -27,6 +27,7 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Compare(a) => compare(&a),
         Command::Run(a) => crate::run::run(&a),
         Command::Sweep(a) => crate::sweep::command(&a),
+        Command::Ida(a) => crate::sweep::ida(&a),
         Command::Separation(a) => separation(&a),
         Command::Report(a) => crate::report::command(&a),
         Command::Record {
@@ -711,7 +712,7 @@ pub fn load_record_from(
         None => {
             let path = Path::new(source);
             let text = read_text_file(path, "record file", RECORD_FILE_LIMIT)
-                .map_err(|e| input(format!("{e} (built-in records: el-centro-1940)")))?;
+                .map_err(|e| input(format!("{e} (built-in records: {})", Record::BUILTINS)))?;
             let is_at2 = path
                 .extension()
                 .is_some_and(|x| x.eq_ignore_ascii_case("at2"));

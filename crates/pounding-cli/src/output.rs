@@ -1,7 +1,6 @@
 //! Presentation: key-value reports printed as aligned text or as one JSON object, and atomic file writes.
 
 use serde_json::{Map, Value};
-use std::io::Write;
 use std::path::Path;
 
 /// An ordered list of named values with units, rendered as text or JSON from the same source.
@@ -106,28 +105,7 @@ pub fn num(x: f64) -> Value {
     serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
 }
 
-/// Writes `contents` to `path` atomically: a temporary file in the same folder, flushed, then renamed.
-pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
-    };
-    let name = path
-        .file_name()
-        .and_then(|n| n.to_str())
-        .unwrap_or("output");
-    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(contents)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
-}
+pub use pounding_study::input::write_atomic;
 
 /// Renders `figures` (SVG, and PNG if `png`) and writes them into `dir`, each atomically. Everything is
 /// rendered before the first file is written. Returns the file names written.

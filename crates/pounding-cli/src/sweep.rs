@@ -19,6 +19,47 @@ fn default_workers() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
+/// What a sweep's progress reports: the bar (on a terminal, without `quiet`) and the runs found in the store.
+pub struct Bar {
+    /// The bar, if shown.
+    pub bar: Option<indicatif::ProgressBar>,
+    /// Runs found in the store.
+    pub skipped: usize,
+}
+
+/// A sweep's progress state and the callback that feeds it.
+pub fn progress(
+    quiet: bool,
+) -> (
+    std::rc::Rc<std::cell::RefCell<Bar>>,
+    impl FnMut(Progress) -> ControlFlow<()>,
+) {
+    let bar = (!quiet && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(0);
+        b.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{spinner} [{bar:40}] {pos}/{len} runs, {msg} ({elapsed}, about {eta} left)",
+            )
+            .expect("a valid template")
+            .progress_chars("=> "),
+        );
+        b
+    });
+    let state = std::rc::Rc::new(std::cell::RefCell::new(Bar { bar, skipped: 0 }));
+    let shared = state.clone();
+    let report = move |p: Progress| {
+        let mut s = shared.borrow_mut();
+        s.skipped = p.skipped;
+        if let Some(b) = &s.bar {
+            b.set_length(p.todo as u64);
+            b.set_position(p.done as u64);
+            b.set_message(format!("{} failed, {} from the store", p.failed, p.skipped));
+        }
+        ControlFlow::Continue(())
+    };
+    (state, report)
+}
+
 pub fn command(a: &SweepArgs) -> Result<(), CliError> {
     let workers = match a.workers {
         Some(0) => {
@@ -43,28 +84,7 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
         .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
     let mut store = Store::open(&store_path, &id, prepared.len()).map_err(store_err)?;
 
-    let show = !a.quiet && std::io::stderr().is_terminal();
-    let bar = show.then(|| {
-        let b = indicatif::ProgressBar::new(prepared.len() as u64);
-        b.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{spinner} [{bar:40}] {pos}/{len} runs, {msg} ({elapsed}, about {eta} left)",
-            )
-            .expect("a valid template")
-            .progress_chars("=> "),
-        );
-        b
-    });
-    let mut skipped = 0;
-    let mut report = |p: Progress| {
-        skipped = p.skipped;
-        if let Some(b) = &bar {
-            b.set_length(p.todo as u64);
-            b.set_position(p.done as u64);
-            b.set_message(format!("{} failed, {} from the store", p.failed, p.skipped));
-        }
-        ControlFlow::Continue(())
-    };
+    let (bar, mut report) = progress(a.quiet);
     let outcomes = sweep::run(
         &prepared,
         workers,
@@ -73,7 +93,9 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
         &mut report,
     )
     .map_err(|e| CliError::Io(e.to_string()))?;
-    if let Some(b) = &bar {
+    drop(report);
+    let skipped = bar.borrow().skipped;
+    if let Some(b) = &bar.borrow().bar {
         b.finish_and_clear();
     }
 
@@ -143,6 +165,58 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
         prepared.len() - failed.len(),
         failed.len(),
         skipped,
+        a.out.display()
+    );
+    Ok(())
+}
+
+/// `pounding ida STUDY.toml --out DIR`: the runs of an IDA study as a resumable sweep, then runs.csv and
+/// fragility.csv.
+pub fn ida(a: &SweepArgs) -> Result<(), CliError> {
+    use pounding_study::ida::{run, Ida, IdaError};
+    let workers = match a.workers {
+        Some(0) => {
+            return Err(input(
+                "--workers 0 is not allowed: at least 1 (default: the number of cores)",
+            ))
+        }
+        Some(n) => n,
+        None => default_workers(),
+    };
+    let study = Ida::read(&a.study).map_err(|e| input(e.0))?;
+    let (bar, mut report) = progress(a.quiet);
+    let out = run(&study, &a.out, workers, &mut report).map_err(|e| match e {
+        IdaError::Input(e) => input(e.0),
+        IdaError::Io(m) => CliError::Io(m),
+    })?;
+    drop(report);
+    if let Some(b) = &bar.borrow().bar {
+        b.finish_and_clear();
+    }
+    let v = &out.json;
+    println!(
+        "{} records x {} levels of {}: {} runs, {} failed",
+        study.records.len(),
+        study.levels.len(),
+        study.measure_name(),
+        v["runs"],
+        v["failed"]
+    );
+    println!("\nlimit state                    stripes: median_m_per_s2  beta    ida: median_m_per_s2  beta");
+    let cell = |f: &serde_json::Value| match (f["median"].as_f64(), f["beta"].as_f64()) {
+        (Some(m), Some(b)) => format!("{m:>16.4}  {b:>6.3}"),
+        _ => format!("{:>24}", "(no fit)"),
+    };
+    for f in v["fragility"].as_array().into_iter().flatten() {
+        println!(
+            "{:<30} {}    {}",
+            f["limit_state"].as_str().unwrap_or(""),
+            cell(&f["stripes"]),
+            cell(&f["ida"])
+        );
+    }
+    println!(
+        "\nwrote {}: study.sqlite, runs.csv, fragility.csv",
         a.out.display()
     );
     Ok(())

@@ -1300,3 +1300,79 @@ fn record_synth_is_reproducible_runs_as_a_record_and_refuses_bad_filters() {
     assert!(err.contains("--wf 20 is not allowed: 0 < wf < wg"), "{err}");
     assert!(!c.exists());
 }
+
+#[test]
+fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
+    let dir = tmp("ida");
+    let out = dir.join("out");
+    let study = format!(
+        "{}/../../examples/studies/ida.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let o = pounding(&["ida", &study, "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let runs = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    assert_eq!(runs.lines().count(), 301);
+    assert!(runs.lines().skip(1).all(|l| l.contains(",ok,")));
+    let frag = std::fs::read_to_string(out.join("fragility.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = frag
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 6);
+    // Pounding needs less intensity than the drift limit, and the stripes' median lies within the levels.
+    let median = |ls: &str, m: &str| -> f64 {
+        rows.iter().find(|r| r[0] == ls && r[1] == m).unwrap()[2]
+            .parse()
+            .unwrap()
+    };
+    assert!(median("pounding", "stripes") < median("drift_ratio.right > 0.02", "stripes"));
+    assert!((0.25..8.0).contains(&median("pounding", "stripes")));
+    // Started again: everything from the store, the same tables.
+    let again = pounding(&["ida", &study, "--out", out.to_str().unwrap()]);
+    assert!(again.status.success());
+    assert_eq!(
+        std::fs::read_to_string(out.join("fragility.csv")).unwrap(),
+        frag
+    );
+    let base = format!("scenario = {:?}\n", example("two-sdof-inelastic.toml"));
+    let cases = [
+        (
+            "records = [\"synthetic-1..3\"]\n[intensity]\nbuilding = \"right\"\nlevels = [1.0]\n",
+            "limit_states = [...] is required",
+        ),
+        (
+            "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nbuilding = \"middle\"\nlevels = [1.0]\n",
+            "building = \"middle\" names no building",
+        ),
+        (
+            "records = [\"synthetic-1..3\"]\nlimit_states = [\"drift_ratio.middle > 0.01\"]\n[intensity]\nbuilding = \"right\"\nlevels = [1.0]\n",
+            "names no building",
+        ),
+        (
+            "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nbuilding = \"right\"\ndamping = -0.1\nlevels = [1.0]\n",
+            "damping = -0.1 is not allowed",
+        ),
+        (
+            "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nbuilding = \"right\"\nlevels = []\n",
+            "levels = [...] is required",
+        ),
+    ];
+    for (i, (text, needle)) in cases.iter().enumerate() {
+        let file = dir.join(format!("bad{i}.toml"));
+        std::fs::write(&file, format!("{base}{text}")).unwrap();
+        let o_dir = dir.join(format!("bad-out{i}"));
+        let o = pounding(&[
+            "ida",
+            file.to_str().unwrap(),
+            "--out",
+            o_dir.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {i}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
+        assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
+        assert!(!o_dir.exists(), "case {i}");
+    }
+}

@@ -504,6 +504,48 @@ fn synthetic(seed: u64, params: &str) -> PyResult<(f64, f64, Vec<f64>)> {
     Ok((r.dt(), r.t0(), r.accelerations().to_vec()))
 }
 
+/// Runs the IDA study at `study` into `out` (study.sqlite, runs.csv, fragility.csv) on `workers` threads with
+/// the GIL released; returns the result as JSON text.
+#[pyfunction]
+#[pyo3(signature = (study, out, workers, progress=false))]
+fn ida(py: Python<'_>, study: &str, out: &str, workers: usize, progress: bool) -> PyResult<String> {
+    use pounding_study::ida::{run, Ida, IdaError};
+    if workers == 0 {
+        return Err(input_err(
+            "workers = 0 is not allowed: at least 1 (default: the number of cores)",
+        ));
+    }
+    let ida = Ida::read(Path::new(study)).map_err(|e| input_err(e.0))?;
+    let mut interrupted: Option<PyErr> = None;
+    let r = py.allow_threads(|| {
+        let mut report = |p: Progress| {
+            if progress {
+                show(&p, false);
+            }
+            match Python::with_gil(|py| py.check_signals()) {
+                Ok(()) => ControlFlow::Continue(()),
+                Err(e) => {
+                    interrupted = Some(e);
+                    ControlFlow::Break(())
+                }
+            }
+        };
+        let r = run(&ida, Path::new(out), workers, &mut report);
+        if progress {
+            eprintln!();
+        }
+        r
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    match r {
+        Ok(o) => Ok(o.json.to_string()),
+        Err(IdaError::Input(e)) => Err(input_err(e.0)),
+        Err(IdaError::Io(m)) => Err(PyOSError::new_err(m)),
+    }
+}
+
 /// The extension module.
 #[pymodule]
 fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -517,6 +559,7 @@ fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(separation, m)?)?;
     m.add_function(wrap_pyfunction!(synthetic, m)?)?;
+    m.add_function(wrap_pyfunction!(ida, m)?)?;
     m.add_class::<PyStore>()?;
     Ok(())
 }

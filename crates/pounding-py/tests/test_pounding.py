@@ -291,3 +291,53 @@ def test_synthetic_records_are_those_of_the_command_line(tmp_path):
     assert pounding.run(d, histories=False).summary["record"]["pga"] == pytest.approx(2.5, rel=1e-15)
     with pytest.raises(pounding.InputError, match="zg = 1.5 is not allowed"):
         pounding.synthetic(1, zg=1.5)
+
+
+def test_ida_fits_agree_with_scipy_on_the_same_data(tmp_path):
+    pd = pytest.importorskip("pandas")
+    optimize = pytest.importorskip("scipy.optimize")
+    stats = pytest.importorskip("scipy.stats")
+    res = pounding.ida(ROOT / "examples" / "studies" / "ida.toml", tmp_path / "ida", progress=False)
+    runs, frag = res["runs"], res["fragility"]
+    assert isinstance(runs, pd.DataFrame) and len(runs) == 300
+    levels = np.sort(runs["intensity_m_per_s2"].unique())
+    for ls, exceeded in [
+        ("pounding", runs["pounding"] > 0.5),
+        ("drift_ratio.right > 0.02", runs["right_peak_drift_ratio"] > 0.02),
+        ("peak_force > 2e7", runs["peak_force_N"] > 2e7),
+    ]:
+        n = np.array([np.sum(runs["intensity_m_per_s2"] == x) for x in levels])
+        z = np.array([np.sum(exceeded[runs["intensity_m_per_s2"] == x]) for x in levels])
+
+        def nll(p):
+            u = (np.log(levels) - p[0]) / np.exp(p[1])
+            return -np.sum(z * stats.norm.logcdf(u) + (n - z) * stats.norm.logsf(u))
+
+        fit = optimize.minimize(nll, [np.log(np.median(levels)), np.log(0.4)], method="Nelder-Mead",
+                                options={"xatol": 1e-12, "fatol": 1e-14, "maxiter": 20000})
+        row = frag[(frag["limit_state"] == ls) & (frag["method"] == "stripes")].iloc[0]
+        assert row["median_m_per_s2"] == pytest.approx(np.exp(fit.x[0]), rel=1e-6), ls
+        assert row["beta"] == pytest.approx(np.exp(fit.x[1]), rel=1e-6), ls
+        # IDA: the first level at which each record exceeds; censored at the top level if it never does.
+        first, censored = [], 0
+        for _, g in runs.assign(ex=exceeded).groupby("record"):
+            hit = g.sort_values("intensity_m_per_s2").loc[lambda d: d["ex"], "intensity_m_per_s2"]
+            if len(hit):
+                first.append(hit.iloc[0])
+            else:
+                censored += 1
+        logs = np.log(first)
+        row = frag[(frag["limit_state"] == ls) & (frag["method"] == "ida")].iloc[0]
+        if censored == 0:
+            assert row["median_m_per_s2"] == pytest.approx(np.exp(logs.mean()), rel=1e-12), ls
+            assert row["beta"] == pytest.approx(logs.std(), rel=1e-12), ls
+        else:
+            top = np.log(levels[-1])
+
+            def cnll(p):
+                return -np.sum(stats.norm.logpdf(logs, p[0], np.exp(p[1]))) - censored * stats.norm.logsf(top, p[0], np.exp(p[1]))
+
+            c = optimize.minimize(cnll, [logs.mean(), np.log(logs.std())], method="Nelder-Mead",
+                                  options={"xatol": 1e-12, "fatol": 1e-14, "maxiter": 20000})
+            assert row["median_m_per_s2"] == pytest.approx(np.exp(c.x[0]), rel=1e-6), ls
+            assert row["beta"] == pytest.approx(np.exp(c.x[1]), rel=1e-6), ls

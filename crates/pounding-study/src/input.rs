@@ -43,6 +43,29 @@ pub fn read_text_file(path: &Path, what: &str, limit: u64) -> Result<String, Str
     Ok(text)
 }
 
+/// Writes `contents` to `path` atomically: a temporary file in the same folder, flushed, then renamed.
+pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    let name = path
+        .file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or("output");
+    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        std::io::Write::write_all(&mut f, contents)?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
 /// How a record file is read when no format is given: AT2 for `*.at2`, two columns otherwise.
 pub fn default_format(path: &Path) -> Format {
     if path
@@ -62,7 +85,11 @@ pub fn read_record(spec: &RecordSpec) -> Result<Record, RecordError> {
         return Record::builtin(&spec.source).ok_or_else(|| {
             RecordError::Parse(pounding::ground_motion::ParseError {
                 line: 0,
-                message: format!("{:?} is not a built-in record: el-centro-1940", spec.source),
+                message: format!(
+                    "{:?} is not a built-in record: {}",
+                    spec.source,
+                    Record::BUILTINS
+                ),
             })
         });
     }
@@ -70,7 +97,7 @@ pub fn read_record(spec: &RecordSpec) -> Result<Record, RecordError> {
     let text = read_text_file(path, "record file", RECORD_FILE_LIMIT).map_err(|e| {
         RecordError::Parse(pounding::ground_motion::ParseError {
             line: 0,
-            message: format!("{e} (built-in records: el-centro-1940)"),
+            message: format!("{e} (built-in records: {})", Record::BUILTINS),
         })
     })?;
     let stem = path

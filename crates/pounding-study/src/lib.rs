@@ -5,6 +5,7 @@
 //! The library (`pounding`) reads no files; this crate does, and never does physics.
 
 pub mod headline;
+pub mod ida;
 pub mod input;
 pub mod key;
 pub mod separation;

@@ -120,6 +120,21 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
     if pounding::ground_motion::Record::builtin(s).is_some() {
         return Ok(vec![s.clone()]);
     }
+    // A suite of synthetic records: `synthetic-1..20` (both ends included).
+    if let Some((a, b)) = s
+        .strip_prefix("synthetic-")
+        .and_then(|r| r.split_once(".."))
+    {
+        let (a, b): (u64, u64) = match (a.parse(), b.parse()) {
+            (Ok(a), Ok(b)) if a <= b && b - a < 100_000 => (a, b),
+            _ => {
+                return Err(format!(
+                    "record = {s:?} is not allowed: synthetic-FIRST..LAST with 0 <= FIRST <= LAST, at most 100000 records"
+                ))
+            }
+        };
+        return Ok((a..=b).map(|k| format!("synthetic-{k}")).collect());
+    }
     let p = dir.join(s);
     if s.contains(['*', '?', '[']) {
         let pattern = p.to_string_lossy().into_owned();
@@ -158,7 +173,7 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
         return Ok(vec![p.to_string_lossy().into_owned()]);
     }
     Err(format!(
-        "record = {s:?} is neither a built-in record (el-centro-1940), a file, a folder nor a glob that matches a file"
+        "record = {s:?} is neither a built-in record ({}), a file, a folder nor a glob that matches a file", pounding::ground_motion::Record::BUILTINS
     ))
 }
 

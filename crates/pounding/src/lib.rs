@@ -25,6 +25,7 @@ pub mod analysis;
 pub mod contact;
 pub mod element;
 pub mod engine;
+pub mod fragility;
 pub mod ground_motion;
 pub mod impact;
 pub mod integrate;

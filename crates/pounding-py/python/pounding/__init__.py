@@ -18,6 +18,7 @@ from __future__ import annotations
 import json
 import os
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, Dict, Iterable, List, Optional, Union
 
 import numpy as np
@@ -26,7 +27,7 @@ from . import _pounding
 from ._pounding import InputError
 
 __version__ = _pounding.__version__
-__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation", "synthetic"]
+__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation", "synthetic", "ida"]
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
@@ -258,3 +259,29 @@ def synthetic(seed: int, **params: Any) -> Dict[str, Any]:
     dt, t0, acc = _pounding.synthetic(int(seed), _json(dict(params)))
     a = np.asarray(acc)
     return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(a)), "acceleration": a}
+
+
+def ida(
+    study: Union[str, "os.PathLike[str]"],
+    out: Union[str, "os.PathLike[str]"],
+    workers: Optional[int] = None,
+    progress: bool = True,
+) -> Dict[str, Any]:
+    """Runs the IDA study file ``study`` (docs/ida.md) into the folder ``out``, exactly as ``pounding ida``
+    does (a resumable store, runs.csv, fragility.csv), and returns a dict: ``runs`` and ``fragility`` as
+    pandas DataFrames (lists of dicts without pandas) and ``result``, the JSON summary (measure, levels,
+    records and their intensities, the fits)."""
+    n = workers if workers is not None else (os.cpu_count() or 1)
+    result = json.loads(_pounding.ida(os.fspath(study), os.fspath(out), n, progress))
+    folder = Path(os.fspath(out))
+    try:
+        import pandas as pd
+
+        runs = pd.read_csv(folder / "runs.csv")
+        fragility = pd.read_csv(folder / "fragility.csv")
+    except ImportError:
+        import csv
+
+        runs = list(csv.DictReader(open(folder / "runs.csv")))
+        fragility = list(csv.DictReader(open(folder / "fragility.csv")))
+    return {"runs": runs, "fragility": fragility, "result": result}

@@ -160,10 +160,27 @@ impl Record {
         r
     }
 
-    /// A built-in record by name (`el-centro-1940`).
+    /// A built-in record by name: `el-centro-1940`, or `synthetic-SEED` (SEED a whole number from 0 to
+    /// 2^64 - 1), the synthetic motion of [`synthetic::Synthetic::default`] with that seed (Clough–Penzien
+    /// noise on firm soil, 20 s at 0.01 s, PGA 3 m/s^2).
     pub fn builtin(name: &str) -> Option<Self> {
-        (name == "el-centro-1940").then(Self::el_centro_1940)
+        if name == "el-centro-1940" {
+            return Some(Self::el_centro_1940());
+        }
+        let seed = name.strip_prefix("synthetic-")?;
+        // Digits only: "synthetic-+1" or "synthetic-01" would name the same record twice.
+        if seed.is_empty()
+            || !seed.bytes().all(|b| b.is_ascii_digit())
+            || (seed.len() > 1 && seed.starts_with('0'))
+        {
+            return None;
+        }
+        let seed: u64 = seed.parse().ok()?;
+        synthetic::Synthetic::default().record(name, seed).ok()
     }
+
+    /// The names of the built-in records, as messages list them.
+    pub const BUILTINS: &'static str = "el-centro-1940, synthetic-SEED (SEED 0, 1, 2, ...)";
 
     /// The same record with accelerations multiplied by `scale` (finite).
     pub fn scaled(mut self, scale: f64) -> Result<Self, Error> {

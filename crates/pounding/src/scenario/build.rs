@@ -79,7 +79,7 @@ impl GroundMotionDoc {
             if Record::builtin(&source).is_none() {
                 return Err(SchemaError::new(
                     "ground_motion.record",
-                    format!("record = {source:?} is not a built-in record: el-centro-1940 (for a file, use file = \"path\")"),
+                    format!("record = {source:?} is not a built-in record: {} (for a file, use file = \"path\")", Record::BUILTINS),
                 ));
             }
         }

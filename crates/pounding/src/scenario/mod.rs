@@ -48,7 +48,7 @@ pub struct ScenarioDoc {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct GroundMotionDoc {
-    /// A built-in record: `el-centro-1940`.
+    /// A built-in record: `el-centro-1940` or `synthetic-SEED`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub record: Option<String>,
     /// A record file (relative paths are the caller's to resolve).

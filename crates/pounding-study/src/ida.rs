@@ -1,0 +1,621 @@
+//! Incremental dynamic analysis and fragility: a base scenario under each record of a suite, scaled to each of
+//! a list of intensity levels (Sa(T1, zeta) of a named building, or PGA), run as one resumable sweep; the
+//! engineering demand parameters of each run; and, for each limit state, lognormal fragility functions fitted
+//! by maximum likelihood from the stripes and from each record's first exceedance.
+//!
+//! ```toml
+//! scenario = "../three-vs-eight-inelastic.toml"
+//! records = ["el-centro-1940", "suite/"]           # built-ins, files, folders, globs
+//! limit_states = ["drift_ratio > 0.015", "pounding", "peak_force > 2e7"]
+//!
+//! [intensity]
+//! measure = "sa"          # "sa": pseudo-spectral acceleration at the building's T1 (m/s^2); "pga" (m/s^2)
+//! building = "3-storey"   # whose first period (for "sa")
+//! damping = 0.05          # of the spectrum (for "sa")
+//! levels = [0.5, 1.0, 2.0, 3.0, 4.0]   # m/s^2
+//! ```
+
+use crate::input::{read_record, read_text_file, ScenarioFile, SCENARIO_FILE_LIMIT};
+use crate::study::{record_sources, set_record};
+use crate::summary::num;
+use crate::InputError;
+use pounding::fragility::{fit_ida, fit_stripes, Fragility};
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+
+/// An engineering demand parameter of a run, read from its summary.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Edp {
+    /// Largest storey drift ratio (drift / storey height) of a building, or of all.
+    DriftRatio(Option<String>),
+    /// Largest absolute floor acceleration, m/s^2, of a building, or of all.
+    Acceleration(Option<String>),
+    /// Largest floor displacement, m, of a building, or of all.
+    Displacement(Option<String>),
+    /// Largest contact force of any contact, N.
+    PeakForce,
+    /// Largest penetration of any contact, m.
+    Penetration,
+    /// Whether any impact occurred (1) or not (0).
+    Pounding,
+}
+
+impl Edp {
+    /// The EDP's value in a run's summary.
+    pub fn value(&self, s: &Value) -> f64 {
+        let buildings = s["buildings"].as_array().cloned().unwrap_or_default();
+        let of = |name: &Option<String>, key: &str| {
+            buildings
+                .iter()
+                .filter(|b| name.as_ref().is_none_or(|n| b["name"] == n.as_str()))
+                .flat_map(|b| b[key].as_array().cloned().unwrap_or_default())
+                .filter_map(|v| v.as_f64())
+                .fold(0.0f64, f64::max)
+        };
+        let contacts = s["contacts"].as_array().cloned().unwrap_or_default();
+        let cmax = |key: &str| {
+            contacts
+                .iter()
+                .filter_map(|c| c[key].as_f64())
+                .fold(0.0f64, f64::max)
+        };
+        match self {
+            Edp::DriftRatio(b) => of(b, "peak_drift_ratio"),
+            Edp::Acceleration(b) => of(b, "peak_absolute_acceleration"),
+            Edp::Displacement(b) => of(b, "peak_displacement"),
+            Edp::PeakForce => cmax("peak_force"),
+            Edp::Penetration => cmax("max_penetration"),
+            Edp::Pounding => f64::from(u8::from(cmax("impacts") > 0.0)),
+        }
+    }
+}
+
+/// A limit state: an EDP above a threshold (or, for `pounding`, any impact).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LimitState {
+    /// As written in the study file.
+    pub name: String,
+    /// The EDP.
+    pub edp: Edp,
+    /// Exceeded when the EDP is above this.
+    pub threshold: f64,
+}
+
+const EDPS: &str = "drift_ratio, acceleration, displacement (each optionally .BUILDING), peak_force, penetration, pounding";
+
+fn parse_limit(text: &str, buildings: &[String]) -> Result<LimitState, String> {
+    let (lhs, threshold) = match text.split_once('>') {
+        Some((l, r)) => {
+            let t: f64 = r
+                .trim()
+                .parse()
+                .map_err(|_| format!("limit state {text:?}: {:?} is not a number", r.trim()))?;
+            if !t.is_finite() {
+                return Err(format!(
+                    "limit state {text:?}: the threshold must be finite"
+                ));
+            }
+            (l.trim(), Some(t))
+        }
+        None => (text.trim(), None),
+    };
+    let (name, building) = match lhs.split_once('.') {
+        Some((n, b)) => (n, Some(b.to_string())),
+        None => (lhs, None),
+    };
+    if let Some(b) = &building {
+        if !buildings.contains(b) {
+            return Err(format!(
+                "limit state {text:?} names no building: {b:?}; the scenario's are {}",
+                buildings
+                    .iter()
+                    .map(|b| format!("{b:?}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ));
+        }
+    }
+    let edp = match (name, building) {
+        ("drift_ratio", b) => Edp::DriftRatio(b),
+        ("acceleration", b) => Edp::Acceleration(b),
+        ("displacement", b) => Edp::Displacement(b),
+        ("peak_force", None) => Edp::PeakForce,
+        ("penetration", None) => Edp::Penetration,
+        ("pounding", None) => Edp::Pounding,
+        _ => {
+            return Err(format!(
+                "limit state {text:?}: unknown quantity {lhs:?}; allowed: {EDPS}"
+            ))
+        }
+    };
+    let threshold = match (&edp, threshold) {
+        (Edp::Pounding, None) => 0.5,
+        (Edp::Pounding, Some(_)) => {
+            return Err(format!(
+                "limit state {text:?}: pounding takes no threshold (write \"pounding\")"
+            ))
+        }
+        (_, Some(t)) => t,
+        (_, None) => {
+            return Err(format!(
+                "limit state {text:?} needs a threshold: \"{lhs} > value\" (SI units)"
+            ))
+        }
+    };
+    Ok(LimitState {
+        name: text.trim().to_string(),
+        edp,
+        threshold,
+    })
+}
+
+/// The intensity measure.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Measure {
+    /// Pseudo-spectral acceleration at period `period` (s) and damping ratio `damping`, m/s^2.
+    Sa {
+        /// The building it is named after.
+        building: String,
+        /// Its first period, s.
+        period: f64,
+        /// Damping ratio of the spectrum.
+        damping: f64,
+    },
+    /// Peak ground acceleration, m/s^2.
+    Pga,
+}
+
+/// An IDA study, read and checked.
+pub struct Ida {
+    /// The study file.
+    pub path: PathBuf,
+    /// The base scenario as JSON.
+    pub base: Value,
+    /// Record sources.
+    pub records: Vec<String>,
+    /// The intensity measure.
+    pub measure: Measure,
+    /// Intensity levels, m/s^2, ascending.
+    pub levels: Vec<f64>,
+    /// The limit states.
+    pub limit_states: Vec<LimitState>,
+    /// The base scenario's buildings, left to right.
+    pub buildings: Vec<String>,
+}
+
+fn err(path: &Path, msg: impl std::fmt::Display) -> InputError {
+    InputError::new(format!("{}: {msg}", path.display()))
+}
+
+impl Ida {
+    /// Reads and checks the study at `path`: one line naming the file for bad input.
+    pub fn read(path: &Path) -> Result<Ida, InputError> {
+        let text =
+            read_text_file(path, "study file", SCENARIO_FILE_LIMIT).map_err(InputError::new)?;
+        let table: toml::Table =
+            toml::from_str(&text).map_err(|e| err(path, e.message().trim().replace('\n', " ")))?;
+        let top = serde_json::to_value(table).map_err(|e| err(path, e))?;
+        for k in top.as_object().into_iter().flat_map(|o| o.keys()) {
+            if !["scenario", "records", "limit_states", "intensity"].contains(&k.as_str()) {
+                return Err(err(
+                    path,
+                    format!(
+                        "unknown key {k:?}; allowed: scenario, records, limit_states, [intensity]"
+                    ),
+                ));
+            }
+        }
+        let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+        let base_path = match top.get("scenario") {
+            Some(Value::String(s)) => dir.join(s),
+            _ => return Err(err(path, "scenario = \"base.toml\" is required: the base scenario, relative to the study file")),
+        };
+        let base_file = ScenarioFile::read(&base_path)?;
+        let base_loaded = base_file.load()?;
+        let names: Vec<String> = base_loaded
+            .scenario
+            .buildings()
+            .iter()
+            .map(|b| b.name.clone())
+            .collect();
+        let mut records = Vec::new();
+        match top.get("records") {
+            Some(Value::Array(a)) if !a.is_empty() => {
+                for v in a {
+                    records.extend(record_sources(&dir, v).map_err(|m| err(path, format!("records: {m}")))?);
+                }
+            }
+            _ => return Err(err(path, "records = [...] is required: built-in names, files, folders or globs, at least one")),
+        }
+        let limit_states = match top.get("limit_states") {
+            Some(Value::Array(a)) if !a.is_empty() => a
+                .iter()
+                .map(|v| match v {
+                    Value::String(s) => parse_limit(s, &names),
+                    other => Err(format!("limit state {other} is not a string like \"drift_ratio > 0.015\"")),
+                })
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(|m| err(path, m))?,
+            _ => {
+                return Err(err(
+                    path,
+                    format!("limit_states = [...] is required, at least one (for example \"drift_ratio > 0.015\", \"pounding\"); quantities: {EDPS}"),
+                ))
+            }
+        };
+        let Some(Value::Object(int)) = top.get("intensity") else {
+            return Err(err(
+                path,
+                "[intensity] is required: measure, levels (and building, damping for sa)",
+            ));
+        };
+        for k in int.keys() {
+            if !["measure", "building", "damping", "levels"].contains(&k.as_str()) {
+                return Err(err(path, format!("[intensity] unknown key {k:?}; allowed: measure, building, damping, levels")));
+            }
+        }
+        let measure = match int.get("measure").and_then(Value::as_str).unwrap_or("sa") {
+            "pga" => Measure::Pga,
+            "sa" => {
+                let building = match int.get("building") {
+                    Some(Value::String(b)) => b.clone(),
+                    _ => return Err(err(path, "[intensity] building = \"name\" is required for measure = \"sa\" (whose first period)")),
+                };
+                let Some(b) = base_loaded
+                    .scenario
+                    .buildings()
+                    .iter()
+                    .find(|x| x.name == building)
+                else {
+                    return Err(err(path, format!(
+                        "[intensity] building = {building:?} names no building; the scenario's are {}",
+                        names.iter().map(|b| format!("{b:?}")).collect::<Vec<_>>().join(", ")
+                    )));
+                };
+                let damping = match int.get("damping") {
+                    None => 0.05,
+                    Some(v) => v
+                        .as_f64()
+                        .ok_or_else(|| err(path, "[intensity] damping is not a number"))?,
+                };
+                if !(0.0..1.0).contains(&damping) {
+                    return Err(err(
+                        path,
+                        format!("[intensity] damping = {damping} is not allowed: 0 <= damping < 1"),
+                    ));
+                }
+                Measure::Sa {
+                    period: b.structure.modes().periods()[0],
+                    building,
+                    damping,
+                }
+            }
+            other => {
+                return Err(err(
+                    path,
+                    format!("[intensity] measure = {other:?} is not allowed: one of sa, pga"),
+                ))
+            }
+        };
+        let levels: Vec<f64> = match int.get("levels") {
+            Some(Value::Array(a)) if !a.is_empty() => a
+                .iter()
+                .map(|v| v.as_f64().filter(|x| x.is_finite() && *x > 0.0))
+                .collect::<Option<Vec<_>>>()
+                .ok_or_else(|| err(path, "[intensity] levels must be numbers > 0 (m/s^2)"))?,
+            _ => {
+                return Err(err(
+                    path,
+                    "[intensity] levels = [...] is required: at least one intensity, m/s^2",
+                ))
+            }
+        };
+        let mut sorted = levels.clone();
+        sorted.sort_by(f64::total_cmp);
+        sorted.dedup();
+        Ok(Ida {
+            path: path.to_path_buf(),
+            base: base_file.value,
+            records,
+            measure,
+            levels: sorted,
+            limit_states,
+            buildings: names,
+        })
+    }
+
+    /// The intensity of each record at scale 1 (m/s^2): one line on error.
+    pub fn intensities(&self) -> Result<Vec<f64>, InputError> {
+        self.records
+            .iter()
+            .map(|r| {
+                let mut v = self.base.clone();
+                set_record(&mut v, r);
+                let mut doc: pounding::scenario::GroundMotionDoc =
+                    serde_json::from_value(v["ground_motion"].clone())
+                        .map_err(|e| err(&self.path, format!("ground_motion: {e}")))?;
+                doc.scale = 1.0;
+                let spec = doc
+                    .spec()
+                    .map_err(|e| err(&self.path, format!("record {r}: {}", e.message)))?;
+                let rec = read_record(&spec).map_err(|e| {
+                    err(
+                        &self.path,
+                        format!("record {r}: {}", crate::input::record_message(&spec, e)),
+                    )
+                })?;
+                let im = match &self.measure {
+                    Measure::Pga => rec.peaks().pga,
+                    Measure::Sa {
+                        period, damping, ..
+                    } => {
+                        pounding::ground_motion::spectrum::spectrum(&rec, *damping, &[*period])
+                            .map_err(|e| err(&self.path, e))?
+                            .psa[0]
+                    }
+                };
+                if im > 0.0 && im.is_finite() {
+                    Ok(im)
+                } else {
+                    Err(err(
+                        &self.path,
+                        format!("record {r} has intensity {im}: it cannot be scaled"),
+                    ))
+                }
+            })
+            .collect()
+    }
+
+    /// The scenarios, record by record and level by level, with `(record index, level index, scale)`.
+    pub fn scenarios(&self, ims: &[f64]) -> Vec<((usize, usize, f64), Value)> {
+        let mut out = Vec::new();
+        for (i, r) in self.records.iter().enumerate() {
+            for (j, level) in self.levels.iter().enumerate() {
+                let mut v = self.base.clone();
+                set_record(&mut v, r);
+                let scale = level / ims[i];
+                v["ground_motion"]["scale"] = json!(scale);
+                out.push(((i, j, scale), v));
+            }
+        }
+        out
+    }
+
+    /// The unit of the intensity measure.
+    pub fn measure_name(&self) -> String {
+        match &self.measure {
+            Measure::Pga => "pga (m/s^2)".into(),
+            Measure::Sa {
+                building,
+                period,
+                damping,
+            } => format!("sa (m/s^2) at T1 = {period:.4} s of {building:?}, damping {damping}"),
+        }
+    }
+
+    /// Fits every limit state from the runs' summaries (`None` for a failed run), laid out record by record,
+    /// level by level.
+    pub fn fit(&self, summaries: &[Option<Value>]) -> Vec<Fit> {
+        let nl = self.levels.len();
+        self.limit_states
+            .iter()
+            .map(|ls| {
+                let exceeded = |i: usize, j: usize| {
+                    summaries[i * nl + j]
+                        .as_ref()
+                        .map(|s| ls.edp.value(s) > ls.threshold)
+                };
+                let counts: Vec<(usize, usize)> = (0..nl)
+                    .map(|j| {
+                        let runs: Vec<bool> = (0..self.records.len())
+                            .filter_map(|i| exceeded(i, j))
+                            .collect();
+                        (runs.len(), runs.iter().filter(|x| **x).count())
+                    })
+                    .collect();
+                let n: Vec<usize> = counts.iter().map(|c| c.0).collect();
+                let z: Vec<usize> = counts.iter().map(|c| c.1).collect();
+                let stripes = fit_stripes(&self.levels, &n, &z).map_err(|e| e.to_string());
+                let first: Vec<Option<f64>> = (0..self.records.len())
+                    .map(|i| {
+                        (0..nl)
+                            .find(|&j| exceeded(i, j) == Some(true))
+                            .map(|j| self.levels[j])
+                    })
+                    .collect();
+                let ida = fit_ida(&first, self.levels[nl - 1]).map_err(|e| e.to_string());
+                Fit {
+                    limit_state: ls.name.clone(),
+                    stripes,
+                    ida,
+                    exceedances: counts,
+                }
+            })
+            .collect()
+    }
+}
+
+/// The fragility fits of one limit state.
+pub struct Fit {
+    /// The limit state, as written.
+    pub limit_state: String,
+    /// From the stripes (binomial likelihood), or why not.
+    pub stripes: Result<Fragility, String>,
+    /// From each record's first exceedance, or why not.
+    pub ida: Result<Fragility, String>,
+    /// `(runs, exceeding)` at each level.
+    pub exceedances: Vec<(usize, usize)>,
+}
+
+/// The EDP columns of runs.csv for buildings `names`: column name (with its unit) and how to read it.
+pub fn edp_columns(names: &[String]) -> Vec<(String, Edp)> {
+    let mut cols = Vec::new();
+    for n in names {
+        let b = Some(n.clone());
+        cols.push((format!("{n}_peak_drift_ratio"), Edp::DriftRatio(b.clone())));
+        cols.push((
+            format!("{n}_peak_acceleration_m_per_s2"),
+            Edp::Acceleration(b.clone()),
+        ));
+        cols.push((format!("{n}_peak_displacement_m"), Edp::Displacement(b)));
+    }
+    cols.push(("peak_force_N".into(), Edp::PeakForce));
+    cols.push(("max_penetration_m".into(), Edp::Penetration));
+    cols.push(("pounding".into(), Edp::Pounding));
+    cols
+}
+
+/// The fragility table as JSON rows.
+pub fn fragility_json(fits: &[Fit]) -> Value {
+    let one = |r: &Result<Fragility, String>| match r {
+        Ok(f) => json!({"median": num(f.median), "beta": num(f.beta)}),
+        Err(m) => json!({"error": m}),
+    };
+    Value::Array(
+        fits.iter()
+            .map(|f| {
+                json!({
+                    "limit_state": f.limit_state,
+                    "stripes": one(&f.stripes),
+                    "ida": one(&f.ida),
+                    "exceedances": f.exceedances.iter().map(|(n, z)| json!([z, n])).collect::<Vec<_>>(),
+                })
+            })
+            .collect(),
+    )
+}
+
+/// What an IDA wrote and found.
+pub struct IdaOutput {
+    /// runs.csv, as written.
+    pub runs_csv: String,
+    /// fragility.csv, as written.
+    pub fragility_csv: String,
+    /// The whole result as JSON: measure, levels, records, the fits.
+    pub json: Value,
+}
+
+/// How an IDA ended early.
+#[derive(Debug)]
+pub enum IdaError {
+    /// Bad input (the study, its records, another study's store): exit code 2.
+    Input(InputError),
+    /// The store or the files could not be written.
+    Io(String),
+}
+
+/// Runs the IDA `ida` into `out` (created if missing): `out/study.sqlite` (resumable), `out/runs.csv` and
+/// `out/fragility.csv`, written atomically at the end. `progress` as for [`crate::sweep::run`].
+pub fn run(
+    ida: &Ida,
+    out: &Path,
+    workers: usize,
+    progress: &mut dyn FnMut(crate::sweep::Progress) -> std::ops::ControlFlow<()>,
+) -> Result<IdaOutput, IdaError> {
+    use crate::store::{Store, StoreError};
+    let ims = ida.intensities().map_err(IdaError::Input)?;
+    let variants = ida.scenarios(&ims);
+    let label = ida.path.display().to_string();
+    let values: Vec<(Value, String)> = variants
+        .iter()
+        .enumerate()
+        .map(|(n, (_, v))| (v.clone(), format!("{label}#{n}")))
+        .collect();
+    let prepared = crate::sweep::prepare(values, workers);
+    let id = crate::sweep::study_id(&prepared);
+    let db = out.join("study.sqlite");
+    let store_err = |e: StoreError| match e {
+        StoreError::Mismatch(m) => IdaError::Input(InputError::new(m)),
+        StoreError::Io(m) => IdaError::Io(m),
+    };
+    Store::check(&db, &id, prepared.len()).map_err(store_err)?;
+    std::fs::create_dir_all(out)
+        .map_err(|e| IdaError::Io(format!("cannot create {}: {e}", out.display())))?;
+    let mut store = Store::open(&db, &id, prepared.len()).map_err(store_err)?;
+    let outcomes = crate::sweep::run(
+        &prepared,
+        workers,
+        &pounding::analysis::RunOptions::summary_only(),
+        Some(&mut store),
+        progress,
+    )
+    .map_err(|e| IdaError::Io(e.to_string()))?;
+    let summaries: Vec<Option<Value>> = outcomes
+        .iter()
+        .map(|o| o.as_ref().ok().and_then(|s| serde_json::from_str(s).ok()))
+        .collect();
+    // runs.csv
+    let cols = edp_columns(&ida.buildings);
+    let mut runs = String::from("record,intensity_m_per_s2,record_intensity_m_per_s2,scale,status");
+    for (c, _) in &cols {
+        runs.push(',');
+        runs.push_str(c);
+    }
+    runs.push_str(",impacts,error\n");
+    for (((i, j, scale), _), (o, s)) in variants.iter().zip(outcomes.iter().zip(&summaries)) {
+        runs.push_str(&format!(
+            "{},{},{},{},{}",
+            crate::headline::csv_field(&ida.records[*i]),
+            ida.levels[*j],
+            ims[*i],
+            scale,
+            if o.is_ok() { "ok" } else { "error" }
+        ));
+        for (_, e) in &cols {
+            runs.push(',');
+            if let Some(s) = s {
+                runs.push_str(&e.value(s).to_string());
+            }
+        }
+        runs.push(',');
+        if let Some(s) = s {
+            let impacts: u64 = s["contacts"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter_map(|c| c["impacts"].as_u64())
+                .sum();
+            runs.push_str(&impacts.to_string());
+        }
+        runs.push(',');
+        if let Err(e) = o {
+            runs.push_str(&crate::headline::csv_field(e));
+        }
+        runs.push('\n');
+    }
+    // fragility.csv
+    let fits = ida.fit(&summaries);
+    let mut frag = String::from("limit_state,method,median_m_per_s2,beta,note\n");
+    for f in &fits {
+        let name = &f.limit_state;
+        for (method, r) in [("stripes", &f.stripes), ("ida", &f.ida)] {
+            let (m, b, note) = match r {
+                Ok(f) => (f.median.to_string(), f.beta.to_string(), String::new()),
+                Err(e) => (String::new(), String::new(), e.clone()),
+            };
+            frag.push_str(&format!(
+                "{},{method},{m},{b},{}\n",
+                crate::headline::csv_field(name),
+                crate::headline::csv_field(&note)
+            ));
+        }
+    }
+    for (name, text) in [("runs.csv", &runs), ("fragility.csv", &frag)] {
+        crate::input::write_atomic(&out.join(name), text.as_bytes())
+            .map_err(|e| IdaError::Io(format!("cannot write {}: {e}", out.join(name).display())))?;
+    }
+    let json = json!({
+        "measure": ida.measure_name(),
+        "levels": ida.levels,
+        "records": ida.records.iter().zip(&ims).map(|(r, im)| json!({"record": r, "intensity": num(*im)})).collect::<Vec<_>>(),
+        "runs": outcomes.len(),
+        "failed": outcomes.iter().filter(|o| o.is_err()).count(),
+        "fragility": fragility_json(&fits),
+        "units": {"levels": "m/s^2", "intensity": "m/s^2 at scale 1", "median": "m/s^2 (of the measure)", "beta": "logarithmic standard deviation", "exceedances": "[exceeding, runs] per level"},
+    });
+    Ok(IdaOutput {
+        runs_csv: runs,
+        fragility_csv: frag,
+        json,
+    })
+}
