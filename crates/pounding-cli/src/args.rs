@@ -37,7 +37,7 @@ pub enum Command {
     Separation(SeparationArgs),
     /// Incremental dynamic analysis: records x intensity levels (Sa(T1) or PGA) as a resumable sweep, the
     /// demands of each run, and lognormal fragility curves per limit state (see docs/ida.md).
-    Ida(SweepArgs),
+    Ida(IdaArgs),
     /// A self-contained HTML report (inline figures, no network access) of the output folder of a run.
     Report(ReportArgs),
     /// Ground-motion records.
@@ -66,6 +66,18 @@ pub struct SeparationArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
+    /// Figure: each rule's estimate against the required gap.
+    #[command(flatten)]
+    pub plots: PlotArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct IdaArgs {
+    #[command(flatten)]
+    pub sweep: SweepArgs,
+    /// Figures: the IDA curves and the fragility functions with the observed fractions.
+    #[command(flatten)]
+    pub plots: PlotArgs,
 }
 
 #[derive(Args, Debug)]
@@ -208,6 +220,9 @@ pub struct SpectrumArgs {
     /// Natural periods, s, comma-separated [default: 100 periods from 0.02 to 10 s, evenly spaced in log].
     #[arg(long, value_delimiter = ',')]
     pub periods: Option<Vec<f64>>,
+    /// Figures: the record (acceleration, velocity, displacement) and its spectra.
+    #[command(flatten)]
+    pub plots: PlotArgs,
 }
 
 /// Where a ground motion comes from and how to read it.

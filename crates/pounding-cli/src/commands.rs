@@ -167,7 +167,7 @@ fn results(rep: &mut Report, s: &ContactModel, r: &ImpactResult, exact_e: Option
 }
 
 /// Fails early (before any work or output) if `--plots` names a file.
-fn check_plots(p: &PlotArgs) -> Result<(), CliError> {
+pub fn check_plots(p: &PlotArgs) -> Result<(), CliError> {
     match &p.plots {
         Some(dir) if dir.is_file() => Err(input(format!(
             "--plots {} is a file; give a folder (it is created if missing)",
@@ -178,7 +178,11 @@ fn check_plots(p: &PlotArgs) -> Result<(), CliError> {
 }
 
 /// Writes `figs` if `--plots` was given; prints the files unless `quiet`.
-fn save_figures(p: &PlotArgs, figs: &[crate::plot::Figure], quiet: bool) -> Result<(), CliError> {
+pub fn save_figures(
+    p: &PlotArgs,
+    figs: &[crate::plot::Figure],
+    quiet: bool,
+) -> Result<(), CliError> {
     if let Some(dir) = &p.plots {
         let names = write_figures(dir, figs, p.png)?;
         if !quiet {
@@ -769,9 +773,15 @@ fn separation(a: &crate::args::SeparationArgs) -> Result<(), CliError> {
         );
     }
     let label = a.scenario.display().to_string();
+    check_plots(&a.plots)?;
     let v =
         pounding_study::separation::report_message(&file.value, &label, &records, a.aligned_factor)
             .map_err(|m| input(m.replace("aligned_factor = ", "--aligned-factor ")))?;
+    let fig = crate::plot::analyses::separation(
+        &v,
+        &format!("{label}; {} record(s)", records.len().max(1)),
+    );
+    save_figures(&a.plots, &[fig], true)?;
     if a.json {
         println!("{}", serde_json::to_string_pretty(&v).expect("JSON"));
         return Ok(());
@@ -901,9 +911,23 @@ fn default_periods() -> Vec<f64> {
 }
 
 fn record_spectrum(a: &crate::args::SpectrumArgs) -> Result<(), CliError> {
+    check_plots(&a.plots)?;
     let r = load_record(&a.record)?;
     let periods = a.periods.clone().unwrap_or_else(default_periods);
     let s = pounding::ground_motion::spectrum::spectrum(&r, a.damping, &periods)?;
+    let figs = vec![
+        crate::plot::analyses::record(
+            &r,
+            &format!(
+                "{} samples at {} s, scale {}",
+                r.npts(),
+                fmt_num(r.dt()),
+                fmt_num(a.record.scale)
+            ),
+        ),
+        crate::plot::analyses::spectrum(&s, &format!("Record {}", r.name())),
+    ];
+    save_figures(&a.plots, &figs, true)?;
     if a.record.json {
         let out = json!({
             "record": r.name(),

@@ -172,8 +172,10 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
 
 /// `pounding ida STUDY.toml --out DIR`: the runs of an IDA study as a resumable sweep, then runs.csv and
 /// fragility.csv.
-pub fn ida(a: &SweepArgs) -> Result<(), CliError> {
-    use pounding_study::ida::{run, Ida, IdaError};
+pub fn ida(args: &crate::args::IdaArgs) -> Result<(), CliError> {
+    use pounding_study::ida::{run, Edp, Ida, IdaError};
+    let a = &args.sweep;
+    crate::commands::check_plots(&args.plots)?;
     let workers = match a.workers {
         Some(0) => {
             return Err(input(
@@ -219,5 +221,48 @@ pub fn ida(a: &SweepArgs) -> Result<(), CliError> {
         "\nwrote {}: study.sqlite, runs.csv, fragility.csv",
         a.out.display()
     );
+    // Figures: each limit state's EDP per record and level.
+    let nl = study.levels.len();
+    let edps: Vec<Vec<Vec<Option<f64>>>> = study
+        .limit_states
+        .iter()
+        .map(|ls| {
+            (0..study.records.len())
+                .map(|i| {
+                    (0..nl)
+                        .map(|j| out.summaries[i * nl + j].as_ref().map(|s| ls.edp.value(s)))
+                        .collect()
+                })
+                .collect()
+        })
+        .collect();
+    let states: Vec<crate::plot::analyses::StateAxis> = study
+        .limit_states
+        .iter()
+        .map(|l| crate::plot::analyses::StateAxis {
+            name: l.name.clone(),
+            threshold: l.threshold,
+            unit: match l.edp {
+                Edp::DriftRatio(_) | Edp::Pounding => "",
+                Edp::Acceleration(_) => "m/s^2",
+                Edp::Displacement(_) | Edp::Penetration => "m",
+                Edp::PeakForce => "N",
+            },
+            boolean: l.edp == Edp::Pounding,
+        })
+        .collect();
+    let short = match study.measure {
+        pounding_study::ida::Measure::Pga => "PGA",
+        pounding_study::ida::Measure::Sa { .. } => "Sa(T1)",
+    };
+    let figs = crate::plot::analyses::ida(
+        &study.levels,
+        &study.records,
+        &edps,
+        &states,
+        &v["fragility"],
+        (short, &study.measure_name()),
+    );
+    crate::commands::save_figures(&args.plots, &figs, false)?;
     Ok(())
 }

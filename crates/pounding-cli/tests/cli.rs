@@ -1213,6 +1213,18 @@ fn record_spectrum_gives_sd_psv_psa_and_refuses_bad_oscillators() {
         let w = 2.0 * std::f64::consts::PI / t;
         assert_eq!(v["psv"][i].as_f64().unwrap(), w * sd[i].as_f64().unwrap());
     }
+    let figs = tmp("spectrum-figures");
+    let o = pounding(&[
+        "record",
+        "spectrum",
+        "el-centro-1940",
+        "--plots",
+        figs.to_str().unwrap(),
+    ]);
+    assert!(o.status.success());
+    for f in ["record.svg", "spectrum.svg"] {
+        roxmltree::Document::parse(&std::fs::read_to_string(figs.join(f)).unwrap()).unwrap();
+    }
     let default = json(&["record", "spectrum", "el-centro-1940"]);
     assert_eq!(default["periods"].as_array().unwrap().len(), 100);
     for (args, needle) in [
@@ -1309,8 +1321,24 @@ fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
         "{}/../../examples/studies/ida.toml",
         env!("CARGO_MANIFEST_DIR")
     );
-    let o = pounding(&["ida", &study, "--out", out.to_str().unwrap()]);
+    let figs = dir.join("figs");
+    let o = pounding(&[
+        "ida",
+        &study,
+        "--out",
+        out.to_str().unwrap(),
+        "--plots",
+        figs.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for f in ["ida-curves.svg", "fragility.svg"] {
+        let svg = std::fs::read_to_string(figs.join(f)).unwrap();
+        roxmltree::Document::parse(&svg).unwrap();
+        assert!(
+            svg.contains("observed fraction") || svg.contains("threshold"),
+            "{f}"
+        );
+    }
     let runs = std::fs::read_to_string(out.join("runs.csv")).unwrap();
     assert_eq!(runs.lines().count(), 301);
     assert!(runs.lines().skip(1).all(|l| l.contains(",ok,")));

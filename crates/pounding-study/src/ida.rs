@@ -493,6 +493,8 @@ pub struct IdaOutput {
     pub fragility_csv: String,
     /// The whole result as JSON: measure, levels, records, the fits.
     pub json: Value,
+    /// Each run's summary (`None` for a failed run), record by record, level by level.
+    pub summaries: Vec<Option<Value>>,
 }
 
 /// How an IDA ended early.
@@ -617,5 +619,6 @@ pub fn run(
         runs_csv: runs,
         fragility_csv: frag,
         json,
+        summaries,
     })
 }

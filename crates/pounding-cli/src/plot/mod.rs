@@ -4,6 +4,7 @@
 //! Every figure can be read back: each panel carries its data range and its pixel box as `data-*`
 //! attributes and each series its label, so a test (or a user's script) can turn pixels back into data.
 
+pub mod analyses;
 pub mod axis;
 pub mod figures;
 pub mod font;

@@ -1,0 +1,293 @@
+//! Figures of the analyses beyond one run: a record and its response spectra, the required separation against
+//! the code rules, and an IDA's curves and fragility functions.
+
+use super::{Figure, Legend, Panel, Quantity, Series, Style, PLOT};
+use pounding::ground_motion::spectrum::Spectrum;
+use pounding::ground_motion::Record;
+use serde_json::Value;
+
+fn time() -> Quantity {
+    Quantity::new("time", "s")
+}
+
+/// The record as analysed (from rest, no baseline correction): acceleration, and the velocity and
+/// displacement integrated exactly for the piecewise-linear acceleration.
+pub fn record(r: &Record, subtitle: &str) -> Figure {
+    let (dt, a) = (r.dt(), r.accelerations());
+    // From rest at t = 0: the ramp to the first sample at t0, then the samples.
+    let mut t = vec![0.0];
+    let mut acc = vec![0.0];
+    let (mut vel, mut dis) = (vec![0.0], vec![0.0]);
+    let mut step = |a0: f64, a1: f64, h: f64, t1: f64| {
+        let (v0, d0) = (*vel.last().unwrap_or(&0.0), *dis.last().unwrap_or(&0.0));
+        vel.push(v0 + (a0 + a1) / 2.0 * h);
+        dis.push(d0 + v0 * h + (2.0 * a0 + a1) * h * h / 6.0);
+        t.push(t1);
+        acc.push(a1);
+    };
+    if r.t0() > 0.0 {
+        step(0.0, a[0], r.t0(), r.t0());
+    }
+    for k in 1..a.len() {
+        step(a[k - 1], a[k], dt, r.t0() + k as f64 * dt);
+    }
+    let panel = |name: &str, unit: &'static str, y: Vec<f64>, i: usize| {
+        let mut p = Panel::new("", time(), Quantity::new(name, unit));
+        p.series.push(Series::line("", t.clone(), y, Style::nth(i)));
+        p.x_tight = true;
+        p.legend = Legend::None;
+        p
+    };
+    Figure {
+        id: "record".into(),
+        title: format!(
+            "Record {}: ground acceleration, velocity and displacement",
+            r.name()
+        ),
+        subtitle: format!(
+            "{subtitle}; velocity and displacement from rest, without baseline correction"
+        ),
+        panels: vec![
+            panel("ground acceleration", "m/s^2", acc, 0),
+            panel("ground velocity", "m/s", vel, 0),
+            panel("ground displacement", "m", dis, 0),
+        ],
+        columns: 1,
+        plot: (PLOT.0, 170.0),
+    }
+}
+
+/// SD, PSV and PSA against period.
+pub fn spectrum(s: &Spectrum, title: &str) -> Figure {
+    let period = || Quantity::new("period", "s");
+    let panel = |name: &str, unit: &'static str, y: &[f64]| {
+        let mut p = Panel::new("", period(), Quantity::new(name, unit));
+        p.series.push(Series::line(
+            "",
+            s.periods.clone(),
+            y.to_vec(),
+            Style::nth(0),
+        ));
+        p.x_tight = true;
+        p.y_zero = true;
+        p.legend = Legend::None;
+        p
+    };
+    Figure {
+        id: "spectrum".into(),
+        title: format!("{title}: elastic response spectra"),
+        subtitle: format!(
+            "damping {} %, exact piecewise-linear solution, peaks located between samples",
+            100.0 * s.damping
+        ),
+        panels: vec![
+            panel("spectral displacement SD", "m", &s.sd),
+            panel("pseudo-velocity PSV", "m/s", &s.psv),
+            panel("pseudo-acceleration PSA", "m/s^2", &s.psa),
+        ],
+        columns: 1,
+        plot: (PLOT.0, 170.0),
+    }
+}
+
+/// Each rule's estimate against the required gap, every level (and every record of a suite), with the line
+/// where the estimate equals the requirement: points below it are unconservative.
+pub fn separation(report: &Value, subtitle: &str) -> Figure {
+    let runs: Vec<&Value> = match report.get("records") {
+        Some(r) => r
+            .as_array()
+            .into_iter()
+            .flatten()
+            .map(|x| &x["pairs"])
+            .collect(),
+        None => vec![&report["pairs"]],
+    };
+    let mut p = Panel::new(
+        "",
+        Quantity::new("required gap (run without contact)", "m"),
+        Quantity::new("rule's estimate", "m"),
+    );
+    let mut hi = 0.0f64;
+    for (i, rule) in ["abs", "srss", "ddc"].iter().enumerate() {
+        let (mut x, mut y) = (Vec::new(), Vec::new());
+        for pairs in &runs {
+            for pair in pairs.as_array().into_iter().flatten() {
+                for l in pair["levels"].as_array().into_iter().flatten() {
+                    if let (Some(g), Some(e)) = (l["required_gap"].as_f64(), l[*rule].as_f64()) {
+                        x.push(g);
+                        y.push(e);
+                        hi = hi.max(g).max(e);
+                    }
+                }
+            }
+        }
+        let style = Style {
+            width: 3.0,
+            ..Style::nth(i)
+        };
+        p.series
+            .push(Series::points(rule.to_uppercase(), x, y, style));
+    }
+    p.series.insert(
+        0,
+        Series::line(
+            "estimate = required",
+            vec![0.0, hi],
+            vec![0.0, hi],
+            Style::reference(),
+        ),
+    );
+    p.x_zero = true;
+    p.y_zero = true;
+    Figure {
+        id: "separation".into(),
+        title: "Required separation: the code rules against the gap each level needed".into(),
+        subtitle: subtitle.into(),
+        panels: vec![p],
+        columns: 1,
+        plot: (PLOT.0, 320.0),
+    }
+}
+
+/// The IDA curves (each record's EDP against intensity, one panel per limit state with a threshold) and the
+/// fragility functions (the two fits with the observed fraction at each level, one panel per limit state).
+/// `runs` are `(record, level, edp values by limit state)`; `fits` the study's fragility JSON.
+/// A limit state for the figures: its name, threshold, the unit of its demand, and whether it is `pounding`.
+pub struct StateAxis {
+    /// As written.
+    pub name: String,
+    /// Threshold, in `unit`.
+    pub threshold: f64,
+    /// SI unit of the demand ("" for a ratio).
+    pub unit: &'static str,
+    /// `pounding` (a yes/no demand: no IDA curve).
+    pub boolean: bool,
+}
+
+pub fn ida(
+    levels: &[f64],
+    records: &[String],
+    edps: &[Vec<Vec<Option<f64>>>],
+    limit_states: &[StateAxis],
+    fits: &Value,
+    measure: (&str, &str),
+) -> Vec<Figure> {
+    let im = || Quantity::new(measure.0, "m/s^2");
+    let mut curves = Vec::new();
+    for (l, ls) in limit_states.iter().enumerate() {
+        let (name, threshold) = (&ls.name, &ls.threshold);
+        if ls.boolean {
+            continue;
+        }
+        let demand = name
+            .split(['>', ' '])
+            .next()
+            .unwrap_or("demand")
+            .to_string();
+        let mut p = Panel::new(name.clone(), Quantity::new(demand, ls.unit), im());
+        for (i, _) in records.iter().enumerate() {
+            let (x, y): (Vec<f64>, Vec<f64>) = levels
+                .iter()
+                .enumerate()
+                .filter_map(|(j, lv)| edps[l][i][j].map(|e| (e, *lv)))
+                .unzip();
+            let st = Style {
+                width: 1.0,
+                ..Style::nth(0)
+            };
+            p.series.push(Series::line("", x, y, st));
+        }
+        p.series.push(Series::line(
+            "threshold",
+            vec![*threshold, *threshold],
+            vec![0.0, levels.last().copied().unwrap_or(1.0)],
+            Style::reference(),
+        ));
+        p.x_zero = true;
+        p.y_zero = true;
+        curves.push(p);
+    }
+    let mut frag = Vec::new();
+    for f in fits.as_array().into_iter().flatten() {
+        let name = f["limit_state"].as_str().unwrap_or("").to_string();
+        let mut p = Panel::new(name, im(), Quantity::new("probability of exceedance", ""));
+        let top = levels.last().copied().unwrap_or(1.0) * 1.1;
+        let xs: Vec<f64> = (1..=200).map(|k| top * k as f64 / 200.0).collect();
+        for (i, method) in ["stripes", "ida"].iter().enumerate() {
+            if let (Some(m), Some(b)) = (f[*method]["median"].as_f64(), f[*method]["beta"].as_f64())
+            {
+                let fr = pounding::fragility::Fragility { median: m, beta: b };
+                let label = format!(
+                    "{} fit: median {}, beta {:.3}",
+                    if *method == "stripes" {
+                        "stripes"
+                    } else {
+                        "IDA"
+                    },
+                    crate::output::fmt_sig(m, 4),
+                    b
+                );
+                p.series.push(Series::line(
+                    label,
+                    xs.clone(),
+                    xs.iter().map(|x| fr.probability(*x)).collect(),
+                    Style::nth(i),
+                ));
+            }
+        }
+        let (x, y): (Vec<f64>, Vec<f64>) = f["exceedances"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .zip(levels)
+            .filter_map(|(c, lv)| {
+                let (z, n) = (c[0].as_f64()?, c[1].as_f64()?);
+                (n > 0.0).then_some((*lv, z / n))
+            })
+            .unzip();
+        p.series.push(Series::points(
+            "observed fraction",
+            x,
+            y,
+            Style {
+                width: 3.0,
+                ..Style::nth(6)
+            },
+        ));
+        p.y_range = Some((0.0, 1.0));
+        p.x_zero = true;
+        frag.push(p);
+    }
+    let mut out = Vec::new();
+    if !curves.is_empty() {
+        let n = curves.len();
+        out.push(Figure {
+            id: "ida-curves".into(),
+            title: "IDA curves: each record's demand against intensity".into(),
+            subtitle: format!(
+                "{} records, {} levels; {}",
+                records.len(),
+                levels.len(),
+                measure.1
+            ),
+            panels: curves,
+            columns: n.min(2),
+            plot: (420.0, 260.0),
+        });
+    }
+    let n = frag.len();
+    out.push(Figure {
+        id: "fragility".into(),
+        title: "Fragility: lognormal fits (maximum likelihood) and observed fractions".into(),
+        subtitle: format!(
+            "{} records, {} levels; {}",
+            records.len(),
+            levels.len(),
+            measure.1
+        ),
+        panels: frag,
+        columns: n.clamp(1, 2),
+        plot: (420.0, 260.0),
+    });
+    out
+}
