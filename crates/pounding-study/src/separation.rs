@@ -82,8 +82,8 @@ pub fn report(
             })
             .collect()
     };
-    let mut runs = Vec::new();
-    for (record, v) in &variants {
+    // Each record's run is independent: on every core, in order.
+    let one = |(record, v): &(Option<&String>, Value)| -> Result<(String, Value), (Option<String>, String)> {
         let loaded = from_value(v, label)?;
         let names: Vec<String> = loaded
             .scenario
@@ -101,8 +101,12 @@ pub fn report(
             other => (None, format!("analysis failed: {other}")),
         })?;
         let source = record.map_or(loaded.record_source.clone(), |r| r.clone());
-        runs.push((source, pairs_json(&names, &pairs)));
-    }
+        Ok((source, pairs_json(&names, &pairs)))
+    };
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let results = crate::sweep::parallel_map(&variants, threads, one);
+    // The first error in record order, as a sequential loop would give.
+    let mut runs = results.into_iter().collect::<Result<Vec<_>, _>>()?;
     if runs.len() == 1 {
         let (_, pairs) = runs.pop().expect("one run");
         return Ok(json!({ "pairs": pairs, "units": units() }));

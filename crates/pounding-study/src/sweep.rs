@@ -111,20 +111,21 @@ fn bytes_of(acc: &[f64], dt: f64) -> Vec<u8> {
     b
 }
 
-/// Prepares `values` (with their labels) on `workers` threads: parsed, keyed, records read once each.
-pub fn prepare(values: Vec<(Value, String)>, workers: usize) -> Vec<Prepared> {
-    let cache = RecordCache::default();
+/// `f` of every item on `workers` threads (each taking the next index), results in input order.
+pub fn parallel_map<T: Sync, R: Send>(
+    items: &[T],
+    workers: usize,
+    f: impl Fn(&T) -> R + Sync,
+) -> Vec<R> {
     let next = AtomicUsize::new(0);
-    let slots: Vec<Mutex<Option<Prepared>>> = (0..values.len()).map(|_| Mutex::new(None)).collect();
+    let slots: Vec<Mutex<Option<R>>> = items.iter().map(|_| Mutex::new(None)).collect();
     std::thread::scope(|s| {
-        for _ in 0..workers.max(1).min(values.len().max(1)) {
+        for _ in 0..workers.max(1).min(items.len()) {
             s.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some((v, label)) = values.get(i) else {
-                    break;
-                };
-                let p = prepare_one(v, label.clone(), &cache);
-                *slots[i].lock().unwrap_or_else(|p| p.into_inner()) = Some(p);
+                let Some(item) = items.get(i) else { break };
+                let r = f(item);
+                *slots[i].lock().unwrap_or_else(|p| p.into_inner()) = Some(r);
             });
         }
     });
@@ -136,6 +137,14 @@ pub fn prepare(values: Vec<(Value, String)>, workers: usize) -> Vec<Prepared> {
                 .expect("every slot is filled")
         })
         .collect()
+}
+
+/// Prepares `values` (with their labels) on `workers` threads: parsed, keyed, records read once each.
+pub fn prepare(values: Vec<(Value, String)>, workers: usize) -> Vec<Prepared> {
+    let cache = RecordCache::default();
+    parallel_map(&values, workers, |(v, label)| {
+        prepare_one(v, label.clone(), &cache)
+    })
 }
 
 /// The identity of a study: the hash of its run keys, in order.
