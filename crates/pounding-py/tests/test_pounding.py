@@ -133,7 +133,7 @@ def test_a_sweep_equals_single_runs_in_input_order(base):
     for s, o in zip(scenarios[:4], out[:4]):
         assert o == pounding.run(s, histories=False).summary
     assert out[4] == {
-        "error": 'ground_motion.record: record = "kobe" is not a built-in record: el-centro-1940 (for a file, use file = "path")'
+        "error": 'ground_motion.record: record = "kobe" is not a built-in record: el-centro-1940, synthetic-SEED (SEED 0, 1, 2, ...) (for a file, use file = "path")'
     }
     table = pounding.headline(out)
     assert list(table["left|right_peak_force_N"][:4]) == [o["contacts"][0]["peak_force"] for o in out[:4]]
