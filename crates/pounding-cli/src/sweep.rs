@@ -14,9 +14,15 @@ use pounding_study::sweep::{self, Progress};
 use std::io::IsTerminal;
 use std::ops::ControlFlow;
 
-/// Threads to use when `--workers` is not given: the machine's.
-fn default_workers() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get())
+/// The threads of `--workers`, by default the machine's cores.
+fn workers(a: &SweepArgs) -> Result<usize, CliError> {
+    match a.workers {
+        Some(0) => Err(input(
+            "--workers 0 is not allowed: at least 1 (default: the number of cores)",
+        )),
+        Some(n) => Ok(n),
+        None => Ok(std::thread::available_parallelism().map_or(1, |n| n.get())),
+    }
 }
 
 /// What a sweep's progress reports: the bar (on a terminal, without `quiet`) and the runs found in the store.
@@ -61,15 +67,7 @@ pub fn progress(
 }
 
 pub fn command(a: &SweepArgs) -> Result<(), CliError> {
-    let workers = match a.workers {
-        Some(0) => {
-            return Err(input(
-                "--workers 0 is not allowed: at least 1 (default: the number of cores)",
-            ))
-        }
-        Some(n) => n,
-        None => default_workers(),
-    };
+    let workers = workers(a)?;
     let study = Study::read(&a.study).map_err(|e| input(e.0))?;
     let prepared = sweep::prepare(study.scenarios(), workers);
     let id = sweep::study_id(&prepared);
@@ -176,15 +174,7 @@ pub fn ida(args: &crate::args::IdaArgs) -> Result<(), CliError> {
     use pounding_study::ida::{run, Edp, Ida, IdaError};
     let a = &args.sweep;
     crate::commands::check_plots(&args.plots)?;
-    let workers = match a.workers {
-        Some(0) => {
-            return Err(input(
-                "--workers 0 is not allowed: at least 1 (default: the number of cores)",
-            ))
-        }
-        Some(n) => n,
-        None => default_workers(),
-    };
+    let workers = workers(a)?;
     let study = Ida::read(&a.study).map_err(|e| input(e.0))?;
     let (bar, mut report) = progress(a.quiet);
     let out = run(&study, &a.out, workers, &mut report).map_err(|e| match e {

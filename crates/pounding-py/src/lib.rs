@@ -265,6 +265,26 @@ fn show(p: &Progress, end: bool) {
     }
 }
 
+/// A sweep's progress callback: the line on stderr if `progress`, and Ctrl-C, which reaches Python only with
+/// the GIL, looked for at every report (the error is kept in `interrupted` and the sweep stops).
+fn reporter(
+    progress: bool,
+    interrupted: &mut Option<PyErr>,
+) -> impl FnMut(Progress) -> ControlFlow<()> + '_ {
+    move |p: Progress| {
+        if progress {
+            show(&p, false);
+        }
+        match Python::with_gil(|py| py.check_signals()) {
+            Ok(()) => ControlFlow::Continue(()),
+            Err(e) => {
+                *interrupted = Some(e);
+                ControlFlow::Break(())
+            }
+        }
+    }
+}
+
 /// Runs the scenarios (JSON texts, with labels) on `workers` threads with the GIL released, committing each
 /// finished run to the store at `store` if given; returns `(key, ok, summary JSON or error message)` in input
 /// order. Ctrl-C stops the sweep (finished runs stay in the store) and raises KeyboardInterrupt.
@@ -293,19 +313,7 @@ fn sweep_runs(
     };
     let mut interrupted: Option<PyErr> = None;
     let outcomes = py.allow_threads(|| {
-        let mut report = |p: Progress| {
-            if progress {
-                show(&p, false);
-            }
-            // Ctrl-C reaches Python only with the GIL: look for it at every report.
-            match Python::with_gil(|py| py.check_signals()) {
-                Ok(()) => ControlFlow::Continue(()),
-                Err(e) => {
-                    interrupted = Some(e);
-                    ControlFlow::Break(())
-                }
-            }
-        };
+        let mut report = reporter(progress, &mut interrupted);
         let r = sweep::run(
             &prepared,
             workers,
@@ -518,18 +526,7 @@ fn ida(py: Python<'_>, study: &str, out: &str, workers: usize, progress: bool) -
     let ida = Ida::read(Path::new(study)).map_err(|e| input_err(e.0))?;
     let mut interrupted: Option<PyErr> = None;
     let r = py.allow_threads(|| {
-        let mut report = |p: Progress| {
-            if progress {
-                show(&p, false);
-            }
-            match Python::with_gil(|py| py.check_signals()) {
-                Ok(()) => ControlFlow::Continue(()),
-                Err(e) => {
-                    interrupted = Some(e);
-                    ControlFlow::Break(())
-                }
-            }
-        };
+        let mut report = reporter(progress, &mut interrupted);
         let r = run(&ida, Path::new(out), workers, &mut report);
         if progress {
             eprintln!();
