@@ -169,6 +169,20 @@ pub fn fit_stripes(x: &[f64], n: &[usize], z: &[usize]) -> Result<Fragility, Err
             allowed: "some analyses that exceed the limit state and some that do not (else the median is unbounded)".into(),
         });
     }
+    // Perfectly separated data (no exceedance up to some level, only exceedances above it) have no maximum:
+    // the likelihood grows as beta goes to 0 with the median anywhere between the two levels.
+    let mut order: Vec<usize> = (0..x.len()).filter(|&j| n[j] > 0).collect();
+    order.sort_by(|&a, &b| x[a].total_cmp(&x[b]));
+    if let Some(k) = order.iter().position(|&j| z[j] > 0) {
+        if order[k..].iter().all(|&j| z[j] == n[j]) {
+            let below = if k > 0 { x[order[k - 1]] } else { 0.0 };
+            return Err(Error::Choice {
+                name: "stripes",
+                value: format!("no exceedance up to {below}, only exceedances from {}", x[order[k]]),
+                allowed: "data that overlap (the median lies between those levels, beta is not identifiable: analyse levels between them)".into(),
+            });
+        }
+    }
     let nll = |p: [f64; 2]| -> f64 {
         let (ln_theta, beta) = (p[0], p[1].exp());
         let mut s = 0.0;
@@ -212,6 +226,13 @@ pub fn fit_ida(first: &[Option<f64>], censor: f64) -> Result<Fragility, Error> {
     let mean = logs.iter().sum::<f64>() / n;
     let sd = (logs.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / n).sqrt();
     let censored = first.len() - seen.len();
+    if sd == 0.0 {
+        return Err(Error::Choice {
+            name: "records",
+            value: format!("every record first exceeds at {}", seen[0]),
+            allowed: "first exceedances at different intensities (beta is 0 otherwise: analyse levels between)".into(),
+        });
+    }
     if censored == 0 {
         return Ok(Fragility {
             median: mean.exp(),
@@ -333,5 +354,9 @@ mod tests {
         assert!(fit_stripes(&[1.0, 2.0], &[10, 10], &[10, 10]).is_err());
         assert!(fit_stripes(&[1.0, -2.0], &[10, 10], &[1, 5]).is_err());
         assert!(fit_ida(&[Some(1.0), None, None], 2.0).is_err());
+        // Perfect separation between 1 and 2: no maximum of the likelihood.
+        assert!(fit_stripes(&[0.5, 1.0, 2.0, 3.0], &[5, 5, 5, 5], &[0, 0, 5, 5]).is_err());
+        assert!(fit_stripes(&[0.5, 1.0, 2.0, 3.0], &[5, 5, 5, 5], &[0, 1, 5, 5]).is_ok());
+        assert!(fit_ida(&[Some(1.0), Some(1.0)], 2.0).is_err());
     }
 }
