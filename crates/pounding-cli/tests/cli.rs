@@ -894,6 +894,66 @@ fn pounding_within(args: &[&str], limit: f64) -> Option<Output> {
     Some(child.wait_with_output().unwrap())
 }
 
+/// Values a fuzzed key is given: zeros, signs, the ends of f64, NaN, infinity, wrong types.
+const EXTREMES: [&str; 18] = [
+    "0",
+    "-1",
+    "0.0",
+    "1e308",
+    "-1e308",
+    "5e-324",
+    "nan",
+    "inf",
+    "1e30",
+    "1e-30",
+    "\"x\"",
+    "[]",
+    "[0.0]",
+    "[1e300, 1e-300]",
+    "\"\\r\"",
+    "1e12",
+    "1e-12",
+    "0.01",
+];
+
+/// `text` with one to three lines deleted, duplicated or given an extreme value, drawn by `next(n)` (0..n).
+fn mutate(text: &str, next: &mut impl FnMut(usize) -> usize) -> String {
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    for _ in 0..1 + next(3) {
+        let k = next(lines.len());
+        match next(3) {
+            0 => {
+                lines.remove(k);
+            }
+            1 => {
+                let l = lines[k].clone();
+                lines.insert(k, l);
+            }
+            _ => {
+                if let Some((key, _)) = lines[k].split_once('=') {
+                    lines[k] = format!("{key}= {}", EXTREMES[next(EXTREMES.len())]);
+                }
+            }
+        }
+    }
+    lines.join("\n")
+}
+
+/// A linear congruential stream from the campaign's seed (POUNDING_FUZZ_SEED): `next(n)` in 0..n.
+fn fuzz_stream() -> impl FnMut(usize) -> usize {
+    let seed0 = std::env::var("POUNDING_FUZZ_SEED")
+        .ok()
+        .and_then(|c| c.parse::<u64>().ok())
+        .unwrap_or(0);
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15 ^ seed0;
+    move |n: usize| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((seed >> 33) as usize) % n
+    }
+}
+
 #[test]
 fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
     // Bounded fuzzing of the scenario loader and of whole runs: lines of the examples deleted, duplicated or
@@ -901,26 +961,6 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
     // another campaign).
     let env = |name: &str| std::env::var(name).ok().and_then(|c| c.parse::<u64>().ok());
     let cases = env("POUNDING_FUZZ_CASES").unwrap_or(24) as usize;
-    let extremes = [
-        "0",
-        "-1",
-        "0.0",
-        "1e308",
-        "-1e308",
-        "5e-324",
-        "nan",
-        "inf",
-        "1e30",
-        "1e-30",
-        "\"x\"",
-        "[]",
-        "[0.0]",
-        "[1e300, 1e-300]",
-        "\"\\r\"",
-        "1e12",
-        "1e-12",
-        "0.01",
-    ];
     let texts: Vec<String> = [
         "two-sdof.toml",
         "three-vs-eight-inelastic.toml",
@@ -931,33 +971,9 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
     .map(|e| std::fs::read_to_string(example(e)).unwrap())
     .collect();
     let dir = tmp("fuzz");
-    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15 ^ env("POUNDING_FUZZ_SEED").unwrap_or(0);
-    let mut next = |n: usize| {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((seed >> 33) as usize) % n
-    };
+    let mut next = fuzz_stream();
     for i in 0..cases {
-        let mut lines: Vec<String> = texts[i % texts.len()].lines().map(String::from).collect();
-        for _ in 0..1 + next(3) {
-            let k = next(lines.len());
-            match next(3) {
-                0 => {
-                    lines.remove(k);
-                }
-                1 => {
-                    let l = lines[k].clone();
-                    lines.insert(k, l);
-                }
-                _ => {
-                    if let Some((key, _)) = lines[k].split_once('=') {
-                        lines[k] = format!("{key}= {}", extremes[next(extremes.len())]);
-                    }
-                }
-            }
-        }
-        let text = lines.join("\n");
+        let text = mutate(&texts[i % texts.len()], &mut next);
         let file = dir.join(format!("m{i}.toml"));
         std::fs::write(&file, &text).unwrap();
         let out = dir.join(format!("o{i}"));
@@ -1402,5 +1418,66 @@ fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
         assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}");
         assert!(err.contains(needle), "case {i}: {err} lacks {needle}");
         assert!(!o_dir.exists(), "case {i}");
+    }
+}
+
+#[test]
+fn mutated_studies_end_in_their_tables_or_one_line_exit_2() {
+    // The same bounded fuzzing for the study files of `sweep` and `ida` (POUNDING_FUZZ_CASES for more).
+    let cases = std::env::var("POUNDING_FUZZ_CASES")
+        .ok()
+        .and_then(|c| c.parse::<usize>().ok())
+        .unwrap_or(9);
+    let studies = format!("{}/../../examples/studies", env!("CARGO_MANIFEST_DIR"));
+    let texts: Vec<(&str, String)> = [
+        ("sweep", "gap-sweep.toml"),
+        ("sweep", "models.toml"),
+        ("ida", "ida.toml"),
+    ]
+    .iter()
+    .map(|(cmd, f)| {
+        // The mutated file lives elsewhere: its base scenario by absolute path.
+        let t = std::fs::read_to_string(format!("{studies}/{f}"))
+            .unwrap()
+            .replace("scenario = \"../", &format!("scenario = \"{studies}/../"));
+        (*cmd, t)
+    })
+    .collect();
+    let dir = tmp("fuzz-studies");
+    let mut next = fuzz_stream();
+    for i in 0..cases {
+        let (cmd, base) = &texts[i % texts.len()];
+        let text = mutate(base, &mut next);
+        let file = dir.join(format!("m{i}.toml"));
+        std::fs::write(&file, &text).unwrap();
+        let out = dir.join(format!("o{i}"));
+        let o = pounding_within(
+            &[
+                cmd,
+                file.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--quiet",
+                "--workers",
+                "2",
+            ],
+            60.0,
+        )
+        .unwrap_or_else(|| panic!("case {i} hung:\n{text}"));
+        let err = String::from_utf8_lossy(&o.stderr);
+        match o.status.code() {
+            Some(0) => {
+                let runs = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+                assert!(
+                    !runs.contains("NaN") && !runs.contains("inf,"),
+                    "case {i}\n{text}"
+                );
+            }
+            Some(2) => {
+                assert_eq!(err.trim_end().lines().count(), 1, "case {i}: {err}\n{text}");
+                assert!(!out.exists(), "case {i}: output written\n{text}");
+            }
+            code => panic!("case {i}: exit {code:?}: {err}\n{text}"),
+        }
     }
 }
