@@ -700,9 +700,6 @@ pub fn load_record(a: &RecordArgs) -> Result<Record, CliError> {
 
 /// Loads a built-in record called `source`, or the file at `source` in `format` (default: at2 for
 /// `*.at2`, time-acc otherwise), with values in `units` multiplied by `scale`.
-pub use pounding_study::input::read_text_file;
-use pounding_study::input::RECORD_FILE_LIMIT;
-
 pub fn load_record_from(
     source: &str,
     format: Option<FormatArg>,
@@ -711,53 +708,45 @@ pub fn load_record_from(
     scale: f64,
 ) -> Result<Record, CliError> {
     let name = flag;
-    let record = match Record::builtin(source) {
-        Some(r) => r,
-        None => {
-            let path = Path::new(source);
-            let text = read_text_file(path, "record file", RECORD_FILE_LIMIT)
-                .map_err(|e| input(format!("{e} (built-in records: {})", Record::BUILTINS)))?;
-            let is_at2 = path
-                .extension()
-                .is_some_and(|x| x.eq_ignore_ascii_case("at2"));
-            let format = match (format, dt) {
-                (Some(FormatArg::Values), Some(dt)) => Format::Values { dt },
-                (Some(FormatArg::Values), None) => {
-                    return Err(input(format!(
-                        "{} values needs {} (the time step, s)",
-                        name("format"),
-                        name("dt")
-                    )))
-                }
-                (Some(FormatArg::At2), _) => Format::At2,
-                (Some(FormatArg::TimeAcc), _) => Format::TimeAcc,
-                (None, _) if is_at2 => Format::At2,
-                (None, _) => Format::TimeAcc,
-            };
-            if dt.is_some() && !matches!(format, Format::Values { .. }) {
-                return Err(input(format!(
-                    "{} applies to {} values only (other formats carry their time step)",
-                    name("dt"),
-                    name("format")
-                )));
-            }
-            let units = match units {
-                UnitsArg::G => Units::G,
-                UnitsArg::MPerS2 => Units::MPerS2,
-                UnitsArg::CmPerS2 => Units::CmPerS2,
-            };
-            let stem = path
-                .file_stem()
-                .and_then(|s| s.to_str())
-                .unwrap_or("record");
-            Record::parse(stem, &text, format, units).map_err(|e| match e {
-                pounding::ground_motion::RecordError::Parse(p) => {
-                    input(format!("{}: {p}", path.display()))
-                }
-                pounding::ground_motion::RecordError::Value(v) => CliError::from(v),
-            })?
+    let is_file = Record::builtin(source).is_none();
+    // The options are checked here, in the command line's words; reading is the scenarios' own.
+    let format = match (format, dt) {
+        // A built-in record carries its own format.
+        _ if !is_file => None,
+        (Some(FormatArg::Values), Some(dt)) => Some(Format::Values { dt }),
+        (Some(FormatArg::Values), None) => {
+            return Err(input(format!(
+                "{} values needs {} (the time step, s)",
+                name("format"),
+                name("dt")
+            )))
         }
+        (Some(FormatArg::At2), _) => Some(Format::At2),
+        (Some(FormatArg::TimeAcc), _) => Some(Format::TimeAcc),
+        (None, _) => None,
     };
+    if is_file && dt.is_some() && !matches!(format, Some(Format::Values { .. })) {
+        return Err(input(format!(
+            "{} applies to {} values only (other formats carry their time step)",
+            name("dt"),
+            name("format")
+        )));
+    }
+    let spec = pounding::scenario::RecordSpec {
+        source: source.to_string(),
+        is_file,
+        format,
+        units: match units {
+            UnitsArg::G => Units::G,
+            UnitsArg::MPerS2 => Units::MPerS2,
+            UnitsArg::CmPerS2 => Units::CmPerS2,
+        },
+        scale,
+    };
+    let record = pounding_study::input::read_record(&spec).map_err(|e| match e {
+        pounding::ground_motion::RecordError::Value(v) => CliError::from(v),
+        parse => input(pounding_study::input::record_message(&spec, parse)),
+    })?;
     record.scaled(scale).map_err(CliError::from)
 }
 

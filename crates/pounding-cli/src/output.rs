@@ -100,10 +100,7 @@ pub fn fmt_sig(x: f64, digits: i32) -> String {
     fmt_num((x * f).round() / f)
 }
 
-/// A finite number as JSON, or null (JSON has no infinity or NaN).
-pub fn num(x: f64) -> Value {
-    serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
-}
+pub use pounding_study::summary::num;
 
 pub use pounding_study::input::write_atomic;
 
