@@ -7,8 +7,8 @@ use crate::output::{fmt_num, fmt_sig, write_figures};
 use crate::run_data::RunData;
 use crate::scenario::load;
 use crate::CliError;
-use pounding::analysis::{Results, Scenario};
-use pounding::element::StoreyLaw;
+use pounding::analysis::{Bumper, Device, DeviceEnds, Results, Scenario, Side, Site};
+use pounding::element::{DeviceLaw, StoreyLaw};
 use std::fmt::Write as _;
 use std::io::IsTerminal;
 use std::path::Path;
@@ -125,13 +125,30 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
         let modes = st.modes();
         let part = modes.participation(st.masses());
         let m_tot = st.total_mass();
+        let damping = match st.isolator() {
+            None => format!(
+                "damping {} % (Rayleigh, modes 1 and 2)",
+                fmt_num(100.0 * st.damping_ratio())
+            ),
+            Some(iso) => format!(
+                "isolated: {} isolator (storey 1) under the base slab (floor 1){}; superstructure damped {} % on its fixed-base modes 1 and 2, isolator by its hysteresis{}",
+                iso.model.name(),
+                iso.clearance
+                    .map_or(String::new(), |c| format!(", clearance {} m", fmt_num(c))),
+                fmt_num(100.0 * st.damping_ratio()),
+                if iso.damping > 0.0 {
+                    format!(" and {} N s/m", fmt_sig(iso.damping, 4))
+                } else {
+                    String::new()
+                }
+            ),
+        };
         println!(
-            "\nbuilding {:?}: {} storeys, {} kg, height {} m, damping {} % (Rayleigh, modes 1 and 2)",
+            "\nbuilding {:?}: {} storeys, {} kg, height {} m, {damping}",
             b.name,
             st.storeys(),
             fmt_num(m_tot),
             fmt_num(st.elevations().last().copied().unwrap_or(0.0)),
-            fmt_num(100.0 * st.damping_ratio())
         );
         let laws = st.storey_laws();
         if laws.iter().any(|l| l.is_inelastic()) {
@@ -167,7 +184,11 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
                 })
                 .collect();
             println!("  storeys: {}", desc.join("; "));
-            println!("  (modes and Rayleigh damping of the initial stiffness)");
+            if st.isolator().is_some() {
+                println!("  (modes of the initial stiffness; damping_% is phi^T C phi / 2w, the isolator's hysteresis not counted)");
+            } else {
+                println!("  (modes and Rayleigh damping of the initial stiffness)");
+            }
         }
         println!("  mode  period_s  damping_%  mass_%  shape (floor 1 up, largest = 1)");
         let shapes = modes.shapes_normalised();
@@ -177,7 +198,7 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
                 "  {:>4}  {:>8.4}  {:>9.2}  {:>6.1}  {}",
                 r + 1,
                 t,
-                100.0 * st.modal_damping(modes.omega[r]),
+                100.0 * st.damping_of_mode(r),
                 100.0 * part[r].1 / m_tot,
                 shape.join(" ")
             );
@@ -199,8 +220,84 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
             floors.join(", "),
             contact_label(link.contact.spec(), link.contact.parameter())
         );
+        describe_extras(&link.bumper, link.seat);
+    }
+    for w in s.walls() {
+        let floors: Vec<String> = w.floors.iter().map(|f| f.to_string()).collect();
+        println!(
+            "\nwall {}: {} of {}, gap {} m, floors {}, {}",
+            w.name,
+            w.side.name(),
+            s.buildings()[w.building].name,
+            fmt_num(w.gap),
+            floors.join(", "),
+            contact_label(w.contact.spec(), w.contact.parameter())
+        );
+        describe_extras(&w.bumper, w.seat);
+    }
+    for d in s.devices() {
+        let (a, b) = device_ends(s, d);
+        let floors: Vec<String> = d.floors.iter().map(|(i, j)| format!("{i}-{j}")).collect();
+        println!(
+            "\ndevice {}: {} between {a} and {b} at floors {}",
+            d.name,
+            device_label(&d.law),
+            floors.join(", ")
+        );
     }
     println!();
+}
+
+/// The names of a device's two ends.
+pub(crate) fn device_ends(s: &Scenario, d: &Device) -> (String, String) {
+    match d.ends {
+        DeviceEnds::Buildings { left, right } => (
+            s.buildings()[left].name.clone(),
+            s.buildings()[right].name.clone(),
+        ),
+        DeviceEnds::Wall { wall } => {
+            let w = &s.walls()[wall];
+            (s.buildings()[w.building].name.clone(), w.name.clone())
+        }
+    }
+}
+
+/// A device's law in words, with units.
+fn device_label(law: &DeviceLaw) -> String {
+    match *law {
+        DeviceLaw::Spring { stiffness } => format!("spring k {} N/m", fmt_sig(stiffness, 4)),
+        DeviceLaw::Dashpot { damping } => format!("dashpot c {} N s/m", fmt_sig(damping, 4)),
+        DeviceLaw::Kelvin { stiffness, damping } => format!(
+            "kelvin k {} N/m, c {} N s/m",
+            fmt_sig(stiffness, 4),
+            fmt_sig(damping, 4)
+        ),
+        DeviceLaw::Maxwell { stiffness, damping } => format!(
+            "maxwell k {} N/m, c {} N s/m",
+            fmt_sig(stiffness, 4),
+            fmt_sig(damping, 4)
+        ),
+        DeviceLaw::Restrainer { stiffness, slack } => format!(
+            "restrainer k {} N/m, slack {} m (tension only)",
+            fmt_sig(stiffness, 4),
+            fmt_num(slack)
+        ),
+    }
+}
+
+/// A bumper and a seat, if given.
+fn describe_extras(bumper: &Option<Bumper>, seat: Option<f64>) {
+    if let Some(b) = bumper {
+        println!(
+            "  bumper {} m thick, consumed at strain {}: {}",
+            fmt_num(b.thickness),
+            fmt_num(b.max_strain),
+            contact_label(b.contact.spec(), b.contact.parameter())
+        );
+    }
+    if let Some(seat) = seat {
+        println!("  seat {} m (unseating check)", fmt_num(seat));
+    }
 }
 
 fn print_results(s: &Scenario, r: &Results) {
@@ -248,18 +345,65 @@ fn print_results(s: &Scenario, r: &Results) {
             }
         }
     }
-    if !s.links().is_empty() {
-        println!(
-            "\ncontact              impacts  peak_force_N  max_penetration_m  dissipated_energy_J"
-        );
-        for (l, lr) in r.links.iter().enumerate() {
+    let isolated: Vec<usize> = (0..s.buildings().len())
+        .filter(|&b| s.buildings()[b].structure.isolator().is_some())
+        .collect();
+    if !isolated.is_empty() {
+        println!("\nbuilding    isolator           peak_displacement_m  clearance_m  residual_m");
+        for b in isolated {
+            let (st, resp) = (&s.buildings()[b].structure, &r.buildings[b]);
+            let iso = st.isolator().expect("isolated");
+            let clearance = iso.clearance.map_or("-".to_string(), fmt_num);
+            let over = match iso.clearance {
+                Some(c) if resp.peak_drift[0] > c => "  EXCEEDED",
+                _ => "",
+            };
             println!(
-                "{:<20} {:>7}  {:>12.5e}  {:>17.4e}  {:>19.5e}",
-                s.link_name(l),
-                lr.impacts,
-                lr.peak_force,
-                lr.max_penetration,
-                lr.dissipated_energy
+                "{:<10}  {:<17}  {:>19.6}  {:>11}  {:>10.6}{over}",
+                s.buildings()[b].name,
+                iso.model.name(),
+                resp.peak_drift[0],
+                clearance,
+                resp.residual_drift[0]
+            );
+        }
+    }
+    if !s.links().is_empty() || !s.walls().is_empty() {
+        println!(
+            "\ncontact              impacts  peak_force_N  max_penetration_m  dissipated_energy_J  max_opening_m"
+        );
+        let rows =
+            r.links
+                .iter()
+                .enumerate()
+                .map(|(l, lr)| {
+                    (
+                        s.link_name(l),
+                        lr,
+                        s.links()[l].seat,
+                        s.links()[l].bumper.is_some(),
+                    )
+                })
+                .chain(
+                    r.walls.iter().zip(s.walls()).map(|(wr, w)| {
+                        (format!("wall {}", w.name), wr, w.seat, w.bumper.is_some())
+                    }),
+                );
+        for (name, lr, seat, bumper) in rows {
+            let opening = lr.max_opening.iter().fold(0.0, |a: f64, b| a.max(*b));
+            let unseat = match (seat, lr.unseated) {
+                (Some(seat), Some(true)) => format!("  UNSEATED (seat {} m)", fmt_num(seat)),
+                (Some(seat), _) => format!("  (seat {} m)", fmt_num(seat)),
+                _ => String::new(),
+            };
+            let consumed = if bumper {
+                format!("  bumper consumed {} times", lr.consumed)
+            } else {
+                String::new()
+            };
+            println!(
+                "{:<20} {:>7}  {:>12.5e}  {:>17.4e}  {:>19.5e}  {:>13.6}{unseat}{consumed}",
+                name, lr.impacts, lr.peak_force, lr.max_penetration, lr.dissipated_energy, opening
             );
         }
         let ended: Vec<f64> = r.impacts.iter().filter_map(|i| i.e_post).collect();
@@ -270,6 +414,21 @@ fn print_results(s: &Scenario, r: &Results) {
                     (a.min(*e), b.max(*e))
                 });
             println!("e_post of the impacts: {lo:.4} to {hi:.4} (see impacts.csv)");
+        }
+    }
+    if !s.devices().is_empty() {
+        println!("\ndevice               floors  peak_force_N  max_closing_m  max_opening_m");
+        for (d, dr) in s.devices().iter().zip(&r.devices) {
+            for (k, (i, j)) in d.floors.iter().enumerate() {
+                println!(
+                    "{:<20} {:>6}  {:>12.5e}  {:>13.6}  {:>13.6}",
+                    d.name,
+                    format!("{i}-{j}"),
+                    dr.peak_force[k],
+                    dr.max_closing[k],
+                    dr.max_opening[k]
+                );
+            }
         }
     }
     let e = &r.energy.end;
@@ -300,6 +459,16 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
             let _ = write!(out, ",{}_floors{i}-{j}_force_N", s.link_name(l));
         }
     }
+    for w in s.walls() {
+        for f in &w.floors {
+            let _ = write!(out, ",{}_floor{f}_force_N", w.name);
+        }
+    }
+    for d in s.devices() {
+        for (i, j) in &d.floors {
+            let _ = write!(out, ",{}_floors{i}-{j}_force_N", d.name);
+        }
+    }
     for b in s.buildings() {
         for f in 1..=b.structure.storeys() {
             let _ = write!(out, ",{}_floor{f}_absolute_acceleration_m_per_s2", b.name);
@@ -318,7 +487,13 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
                 let _ = write!(out, ",{:e}", col[k]);
             }
         }
-        for group in [&h.force, &h.absolute_acceleration, &h.storey_shear] {
+        for group in [
+            &h.force,
+            &h.wall_force,
+            &h.device_force,
+            &h.absolute_acceleration,
+            &h.storey_shear,
+        ] {
             for cols in group {
                 for col in cols {
                     let _ = write!(out, ",{:e}", col[k]);
@@ -332,16 +507,18 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
 
 fn impacts_csv(s: &Scenario, r: &Results) -> String {
     let mut out = String::from(
-        "time_s,contact,floor_left,floor_right,v_i_m_per_s,e_post,peak_force_N,time_of_peak_force_s,duration_s,dissipated_energy_J,max_penetration_m,ended,resting\n",
+        "time_s,contact,floor_left,floor_right,layer,v_i_m_per_s,e_post,peak_force_N,time_of_peak_force_s,duration_s,dissipated_energy_J,max_penetration_m,ended,resting\n",
     );
     for i in &r.impacts {
+        let (fl, fr) = impact_floors(s, i.site);
         let _ = writeln!(
             out,
-            "{:e},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{}",
+            "{:e},{},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{}",
             i.time,
-            s.link_name(i.link),
-            i.floors.0,
-            i.floors.1,
+            s.site_name(i.site),
+            fl,
+            fr,
+            i.layer.name(),
             i.v_i,
             i.e_post.map_or(String::new(), |e| format!("{e:e}")),
             i.peak_force,
@@ -354,6 +531,17 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
         );
     }
     out
+}
+
+/// The floors of an impact's two sides, as impacts.csv shows them: blank on a wall's side.
+pub(crate) fn impact_floors(s: &Scenario, site: Site) -> (String, String) {
+    match site {
+        Site::Link { floors, .. } => (floors.0.to_string(), floors.1.to_string()),
+        Site::Wall { wall, floor } => match s.walls()[wall].side {
+            Side::Right => (floor.to_string(), String::new()),
+            Side::Left => (String::new(), floor.to_string()),
+        },
+    }
 }
 
 fn energy_csv(r: &Results) -> String {

@@ -2,7 +2,7 @@
 //! the store). The Python package `pounding` (python/pounding) wraps it in numpy arrays and dicts; scenarios
 //! cross as JSON text, so that a dict is validated by exactly the schema a TOML file is.
 
-use pounding::analysis::{Results, RunOptions, Scenario};
+use pounding::analysis::{Results, RunOptions, Scenario, Side, Site};
 use pounding_study::input::{dict_message, from_value, Loaded, ScenarioFile};
 use pounding_study::store::{Finished, Store, StoreError};
 use pounding_study::sweep::{self, Prepared, Progress};
@@ -89,16 +89,29 @@ fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'p
         "contact",
         r.impacts
             .iter()
-            .map(|i| s.link_name(i.link))
+            .map(|i| s.site_name(i.site))
             .collect::<Vec<_>>(),
     )?;
-    d.set_item(
-        "floor_left",
-        r.impacts.iter().map(|i| i.floors.0).collect::<Vec<_>>(),
-    )?;
+    // The floor on each side; 0 on a wall's side (impacts.csv leaves it blank).
+    let floors: Vec<(usize, usize)> = r
+        .impacts
+        .iter()
+        .map(|i| match i.site {
+            Site::Link { floors, .. } => floors,
+            Site::Wall { wall, floor } => match s.walls()[wall].side {
+                Side::Right => (floor, 0),
+                Side::Left => (0, floor),
+            },
+        })
+        .collect();
+    d.set_item("floor_left", floors.iter().map(|f| f.0).collect::<Vec<_>>())?;
     d.set_item(
         "floor_right",
-        r.impacts.iter().map(|i| i.floors.1).collect::<Vec<_>>(),
+        floors.iter().map(|f| f.1).collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "layer",
+        r.impacts.iter().map(|i| i.layer.name()).collect::<Vec<_>>(),
     )?;
     d.set_item("v_i_m_per_s", col(&|i| i.v_i))?;
     d.set_item("e_post", col(&|i| i.e_post.unwrap_or(f64::NAN)))?;
@@ -150,6 +163,20 @@ fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<
         floors.set_item(s.link_name(l), link.floors.clone())?;
     }
     d.set_item("contact_floors", floors)?;
+    let (wf, wfl) = (PyDict::new(py), PyDict::new(py));
+    for (w, cols) in s.walls().iter().zip(&h.wall_force) {
+        wf.set_item(&w.name, matrix(py, cols, n)?)?;
+        wfl.set_item(&w.name, w.floors.clone())?;
+    }
+    d.set_item("wall_force", wf)?;
+    d.set_item("wall_floors", wfl)?;
+    let (df, dfl) = (PyDict::new(py), PyDict::new(py));
+    for (dv, cols) in s.devices().iter().zip(&h.device_force) {
+        df.set_item(&dv.name, matrix(py, cols, n)?)?;
+        dfl.set_item(&dv.name, dv.floors.clone())?;
+    }
+    d.set_item("device_force", df)?;
+    d.set_item("device_floors", dfl)?;
     let e = PyDict::new(py);
     for (c, name) in [
         "input",

@@ -65,7 +65,7 @@ def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
     assert len(r.impacts["time_s"]) == len(rows) == expected["contacts"][0]["impacts"]
     first = rows[0].split(",")
     assert r.impacts["time_s"][0] == float(first[0])
-    assert r.impacts["peak_force_N"][0] == float(first[6])
+    assert r.impacts["peak_force_N"][0] == float(first[7])
     resp = np.loadtxt(tmp_path / "out" / "response.csv", delimiter=",", skiprows=1)
     h = r.histories
     assert h.time.shape == (resp.shape[0],)

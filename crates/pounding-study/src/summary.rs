@@ -1,7 +1,9 @@
 //! The summary of a run: what `summary.json`, Python's `result.summary` and a sweep's store hold, built once.
 
 use crate::input::Loaded;
-use pounding::analysis::{Results, Scenario};
+use pounding::analysis::{Bumper, DeviceEnds, LinkResponse, Results, Scenario};
+use pounding::contact::PreparedContact;
+use pounding::element::DeviceLaw;
 use serde_json::{json, Value};
 
 /// A finite number as JSON, or null (JSON has no infinity or NaN).
@@ -54,7 +56,7 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "name": b.name,
                 "storeys": st.storeys(),
                 "periods": modes.periods().into_iter().map(num).collect::<Vec<_>>(),
-                "modal_damping_ratios": modes.omega.iter().map(|w| num(st.modal_damping(*w))).collect::<Vec<_>>(),
+                "modal_damping_ratios": (0..modes.omega.len()).map(|r| num(st.damping_of_mode(r))).collect::<Vec<_>>(),
                 "mode_shapes": modes.shapes_normalised().into_iter().map(|s| s.into_iter().map(num).collect::<Vec<_>>()).collect::<Vec<_>>(),
                 "effective_modal_mass_ratios": part.iter().map(|p| num(p.1 / st.total_mass())).collect::<Vec<_>>(),
                 "peak_displacement": resp.peak_displacement.iter().copied().map(num).collect::<Vec<_>>(),
@@ -68,6 +70,21 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "residual_displacement": nums(&resp.residual_displacement),
                 "residual_drift": nums(&resp.residual_drift),
             });
+            if let Some(iso) = st.isolator() {
+                out["isolator"] = json!({
+                    "model": serde_json::to_value(iso.model).unwrap_or(Value::Null),
+                    "height": num(iso.height),
+                    "damping_coefficient": num(iso.damping),
+                    "clearance": iso.clearance.map_or(Value::Null, num),
+                    "peak_displacement": num(resp.peak_drift[0]),
+                    "exceeds_clearance": iso.clearance.map_or(Value::Null, |c| Value::Bool(resp.peak_drift[0] > c)),
+                    "residual_displacement": num(resp.residual_drift[0]),
+                });
+                if iso.clearance.is_none() {
+                    // No clearance given: nothing to compare the demand with (null is kept for JSON readers).
+                    out["isolator"].as_object_mut().expect("object").retain(|k, _| k != "clearance" && k != "exceeds_clearance");
+                }
+            }
             // Ductility and hysteretic energy exist for inelastic storeys only: listed with their numbers.
             let inelastic: Vec<usize> = (0..st.storeys()).filter(|&j| st.storey_laws()[j].is_inelastic()).collect();
             if !inelastic.is_empty() {
@@ -84,26 +101,59 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
         .iter()
         .zip(&r.links)
         .map(|(link, lr)| {
-            let spec = link.contact.spec();
-            let param = link.contact.parameter().and_then(|p| p.named());
-            json!({
+            let mut v = json!({
                 "between": [s.buildings()[link.left].name, s.buildings()[link.right].name],
                 "gap": num(link.gap),
                 "floors": link.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
-                "model": spec.model().name(),
-                "e": num(spec.restitution()),
-                "stiffness": num(spec.stiffness()),
-                "exponent": num(spec.exponent()),
-                "damping_parameter": match (link.contact.parameter(), param) {
-                    (None, _) => json!({ "name": "per-impact" }),
-                    (Some(_), None) => json!({ "name": "none" }),
-                    (Some(_), Some((n, v))) => json!({ "name": n, "value": num(v) }),
-                },
-                "impacts": lr.impacts,
-                "peak_force": num(lr.peak_force),
-                "max_penetration": num(lr.max_penetration),
-                "dissipated_energy": num(lr.dissipated_energy),
-            })
+            });
+            site_totals(&mut v, &link.contact, &link.bumper, link.seat, lr);
+            v
+        })
+        .collect();
+    let walls: Vec<Value> = s
+        .walls()
+        .iter()
+        .zip(&r.walls)
+        .map(|(w, wr)| {
+            let mut v = json!({
+                "name": w.name,
+                "facing": s.buildings()[w.building].name,
+                "side": w.side.name(),
+                "gap": num(w.gap),
+                "floors": w.floors,
+            });
+            site_totals(&mut v, &w.contact, &w.bumper, w.seat, wr);
+            v
+        })
+        .collect();
+    let devices: Vec<Value> = s
+        .devices()
+        .iter()
+        .zip(&r.devices)
+        .map(|(d, dr)| {
+            let between = match d.ends {
+                DeviceEnds::Buildings { left, right } => [
+                    s.buildings()[left].name.clone(),
+                    s.buildings()[right].name.clone(),
+                ],
+                DeviceEnds::Wall { wall } => {
+                    let w = &s.walls()[wall];
+                    [s.buildings()[w.building].name.clone(), w.name.clone()]
+                }
+            };
+            let mut v = json!({
+                "name": d.name,
+                "between": between,
+                "floors": d.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
+                "law": serde_json::to_value(d.law).unwrap_or(Value::Null),
+                "peak_force": nums(&dr.peak_force),
+                "max_closing": nums(&dr.max_closing),
+                "max_opening": nums(&dr.max_opening),
+            });
+            if let DeviceLaw::Restrainer { slack, .. } = d.law {
+                v["slack"] = num(slack);
+            }
+            v
         })
         .collect();
     let e = &r.energy.end;
@@ -121,6 +171,8 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
         "tolerance": num(s.tolerance()),
         "buildings": buildings,
         "contacts": contacts,
+        "walls": walls,
+        "devices": devices,
         "energy": {
             "input": num(e.input),
             "kinetic": num(e.kinetic),
@@ -135,19 +187,30 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
             "rejected_steps": r.statistics.rejected,
             "events": r.statistics.events,
         },
-        "units": {
-            "periods": "s", "mode_shapes": "largest component = 1, top floor positive", "peak_displacement": "m", "time_of_peak_displacement": "s",
-            "peak_drift": "m", "peak_drift_ratio": "drift / storey height",
-            "peak_absolute_acceleration": "m/s^2", "time_of_peak_absolute_acceleration": "s",
-            "peak_storey_shear": "N (restoring force of the storey, without Rayleigh damping)",
-            "residual_displacement": "m (signed, at the end of the analysis)", "residual_drift": "m (signed, at the end of the analysis)",
-            "inelastic_storeys": "storey numbers, from 1", "yield_forces": "N", "ductility": "peak drift / yield drift",
-            "hysteretic_energy": "J", "gap": "m", "stiffness": "N/m^exponent",
-            "peak_force": "N", "max_penetration": "m", "dissipated_energy": "J", "energy": "J",
-            "energy_balance_error": "max |input - kinetic - strain - damping - hysteretic - contact| / max energy",
-            "warnings": "what the run says about its own accuracy (an energy balance error above 1e-4)",
-            "duration": "s", "output_dt": "s", "record.dt": "s", "record.pga": "m/s^2",
-        },
+        "units": units(),
+    })
+}
+
+/// The unit of every number of a summary.
+fn units() -> Value {
+    json!({
+        "periods": "s", "mode_shapes": "largest component = 1, top floor positive", "peak_displacement": "m", "time_of_peak_displacement": "s",
+        "peak_drift": "m", "peak_drift_ratio": "drift / storey height",
+        "peak_absolute_acceleration": "m/s^2", "time_of_peak_absolute_acceleration": "s",
+        "peak_storey_shear": "N (restoring force of the storey, without Rayleigh damping)",
+        "residual_displacement": "m (signed, at the end of the analysis)", "residual_drift": "m (signed, at the end of the analysis)",
+        "inelastic_storeys": "storey numbers, from 1", "yield_forces": "N", "ductility": "peak drift / yield drift",
+        "hysteretic_energy": "J", "gap": "m", "stiffness": "N/m^exponent",
+        "peak_force": "N", "max_penetration": "m", "dissipated_energy": "J", "energy": "J",
+        "energy_balance_error": "max |input - kinetic - strain - damping - hysteretic - contact| / max energy",
+        "warnings": "what the run says about its own accuracy (an energy balance error above 1e-4)",
+        "duration": "s", "output_dt": "s", "record.dt": "s", "record.pga": "m/s^2",
+        "max_closing": "m (largest u_left - u_right of each floor pair; for a wall, towards it)",
+        "max_opening": "m (largest u_right - u_left of each floor pair; for a wall, away from it)",
+        "seat": "m", "unseated": "largest opening > seat", "consumed": "impacts of the hard law behind a consumed bumper",
+        "bumper.thickness": "m", "isolator.peak_displacement": "m (peak |drift| of storey 1)", "isolator.clearance": "m",
+        "devices.law": "stiffness N/m, damping N s/m, slack m", "devices.peak_force": "N (elastic and viscous)",
+
     })
 }
 
@@ -167,6 +230,48 @@ fn first_null(v: &Value, path: &str) -> Option<String> {
             .find_map(|(k, x)| first_null(x, &format!("{path}.{k}"))),
         _ => None,
     }
+}
+
+/// The contact law, bumper, seat and totals of a link or a wall, into `v`.
+fn site_totals(
+    v: &mut Value,
+    contact: &PreparedContact,
+    bumper: &Option<Bumper>,
+    seat: Option<f64>,
+    r: &LinkResponse,
+) {
+    law(v, contact);
+    if let Some(b) = bumper {
+        let mut bv = json!({ "thickness": num(b.thickness), "max_strain": num(b.max_strain) });
+        law(&mut bv, &b.contact);
+        v["bumper"] = bv;
+        v["consumed"] = json!(r.consumed);
+    }
+    v["impacts"] = json!(r.impacts);
+    v["peak_force"] = num(r.peak_force);
+    v["max_penetration"] = num(r.max_penetration);
+    v["dissipated_energy"] = num(r.dissipated_energy);
+    v["max_closing"] = json!(nums(&r.max_closing));
+    v["max_opening"] = json!(nums(&r.max_opening));
+    if let (Some(seat), Some(u)) = (seat, r.unseated) {
+        v["seat"] = num(seat);
+        v["unseated"] = json!(u);
+    }
+}
+
+/// A contact law's model, e, stiffness, exponent and damping parameter, into `v`.
+fn law(v: &mut Value, contact: &PreparedContact) {
+    let spec = contact.spec();
+    let param = contact.parameter().and_then(|p| p.named());
+    v["model"] = json!(spec.model().name());
+    v["e"] = num(spec.restitution());
+    v["stiffness"] = num(spec.stiffness());
+    v["exponent"] = num(spec.exponent());
+    v["damping_parameter"] = match (contact.parameter(), param) {
+        (None, _) => json!({ "name": "per-impact" }),
+        (Some(_), None) => json!({ "name": "none" }),
+        (Some(_), Some((n, x))) => json!({ "name": n, "value": num(x) }),
+    };
 }
 
 fn nums(xs: &[f64]) -> Vec<Value> {

@@ -103,7 +103,7 @@ pub fn separation(
         .map(|(link, lr)| {
             let (sl, sr) = (&b[link.left].structure, &b[link.right].structure);
             let (wl, wr) = (sl.modes().omega[0], sr.modes().omega[0]);
-            let rho = cqc_correlation(wl, sl.modal_damping(wl), wr, sr.modal_damping(wr));
+            let rho = cqc_correlation(wl, sl.damping_of_mode(0), wr, sr.damping_of_mode(0));
             let aligned = free.aligned_floors(link.left);
             let levels = link
                 .floors

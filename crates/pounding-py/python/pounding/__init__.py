@@ -72,7 +72,10 @@ class Histories:
     - ``displacement`` (m, relative to the ground), ``absolute_acceleration`` (m/s^2) and ``storey_shear``
       (N): for each building by name, an array of samples x floors (floor or storey 1 first);
     - ``contact_force`` (N): for each contact (``"left|right"``), an array of samples x floor pairs, in the
-      order of ``contact_floors``;
+      order of ``contact_floors`` (with a bumper, the layer's and the hard law's force together);
+    - ``wall_force`` (N): for each wall by name, samples x floors, in the order of ``wall_floors``;
+    - ``device_force`` (N, positive pushing apart): for each device by name, samples x floor pairs, in the
+      order of ``device_floors``;
     - ``energy`` (J): ``input``, ``kinetic``, ``strain``, ``structural_damping``, ``hysteretic``, ``contact``.
     """
 
@@ -83,12 +86,18 @@ class Histories:
     storey_shear: Dict[str, np.ndarray]
     contact_force: Dict[str, np.ndarray]
     contact_floors: Dict[str, List[tuple]]
+    wall_force: Dict[str, np.ndarray]
+    wall_floors: Dict[str, List[int]]
+    device_force: Dict[str, np.ndarray]
+    device_floors: Dict[str, List[tuple]]
     energy: Dict[str, np.ndarray]
 
 
 class Result:
     """One run: ``summary`` (a dict, the content of ``summary.json``), ``impacts`` (columns as numpy arrays:
-    ``time_s``, ``contact``, ``floor_left``, ``floor_right``, ``v_i_m_per_s``, ``e_post`` (NaN where an impact
+    ``time_s``, ``contact`` (a link ``"left|right"`` or a wall's name), ``floor_left``, ``floor_right`` (0 on a
+    wall's side), ``layer`` (``direct``, ``bumper``, or ``consumed``: the hard law behind a consumed bumper),
+    ``v_i_m_per_s``, ``e_post`` (NaN where an impact
     gave none), ``peak_force_N``, ``time_of_peak_force_s``, ``duration_s``, ``dissipated_energy_J``,
     ``max_penetration_m``, ``ended``, ``resting``) and ``histories`` (a :class:`Histories`, or None for a run
     without them)."""
@@ -97,14 +106,14 @@ class Result:
         self.summary: Dict[str, Any] = json.loads(raw["summary"])
         imp = raw["impacts"]
         self.impacts: Dict[str, np.ndarray] = {
-            k: np.asarray(v, dtype=object if k == "contact" else None) for k, v in imp.items()
+            k: np.asarray(v, dtype=object if k in ("contact", "layer") else None) for k, v in imp.items()
         }
         for k in ("floor_left", "floor_right"):
             self.impacts[k] = np.asarray(imp[k], dtype=np.int64)
         for k in ("ended", "resting"):
             self.impacts[k] = np.asarray(imp[k], dtype=bool)
         for k, v in imp.items():
-            if k not in ("contact", "floor_left", "floor_right", "ended", "resting"):
+            if k not in ("contact", "layer", "floor_left", "floor_right", "ended", "resting"):
                 self.impacts[k] = np.asarray(v, dtype=np.float64)
         h = raw["histories"]
         self.histories: Optional[Histories] = None
@@ -117,6 +126,10 @@ class Result:
                 storey_shear={k: _array(v) for k, v in h["storey_shear"].items()},
                 contact_force={k: _array(v) for k, v in h["contact_force"].items()},
                 contact_floors={k: [tuple(p) for p in v] for k, v in h["contact_floors"].items()},
+                wall_force={k: _array(v) for k, v in h["wall_force"].items()},
+                wall_floors={k: list(v) for k, v in h["wall_floors"].items()},
+                device_force={k: _array(v) for k, v in h["device_force"].items()},
+                device_floors={k: [tuple(p) for p in v] for k, v in h["device_floors"].items()},
                 energy={k: np.frombuffer(v, dtype="<f8") for k, v in h["energy"].items()},
             )
 

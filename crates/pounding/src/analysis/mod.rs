@@ -25,6 +25,7 @@
 mod model;
 mod record;
 mod run;
+mod sites;
 
 use crate::contact::{ContactModel, PreparedContact};
 use crate::error::check;
@@ -34,6 +35,7 @@ use crate::Error;
 use std::ops::ControlFlow;
 
 pub use run::Progress;
+pub use sites::{Bumper, Device, DeviceEnds, DeviceSpec, Layer, Side, Site, Wall, WallSpec};
 
 /// A building of the row, with its name.
 #[derive(Clone, Debug, PartialEq)]
@@ -55,8 +57,12 @@ pub struct Link {
     pub gap: f64,
     /// Floor pairs `(floor of left, floor of right)`, numbered from 1 at the lowest floor.
     pub floors: Vec<(usize, usize)>,
-    /// The contact model of every element of the link.
+    /// The contact model of every element of the link (behind the bumper, if there is one).
     pub contact: PreparedContact,
+    /// A bumper on the joint's face ([`Scenario::with_link_bumper`]).
+    pub bumper: Option<Bumper>,
+    /// Seat length of the joint for the unseating check, m ([`Scenario::with_link_seat`]).
+    pub seat: Option<f64>,
 }
 
 /// A pounding analysis: buildings, links, ground motion and settings.
@@ -64,6 +70,8 @@ pub struct Link {
 pub struct Scenario {
     buildings: Vec<Building>,
     links: Vec<Link>,
+    walls: Vec<Wall>,
+    devices: Vec<Device>,
     record: Record,
     duration: f64,
     output_dt: f64,
@@ -101,6 +109,8 @@ impl Scenario {
         Ok(Self {
             buildings,
             links: Vec::new(),
+            walls: Vec::new(),
+            devices: Vec::new(),
             record,
             duration,
             output_dt: 0.005,
@@ -229,6 +239,8 @@ impl Scenario {
             gap,
             floors,
             contact,
+            bumper: None,
+            seat: None,
         });
         self.links.sort_by_key(|l| l.left);
         Ok(self)
@@ -251,12 +263,19 @@ impl Scenario {
     /// The same scenario without contact: every pair of neighbours is linked at the floors of its contact
     /// entry (or, without one, at the floors at the same height) by contact elements whose gap no motion
     /// closes ([`NO_CONTACT_GAP`]), so that a run records each floor pair's largest closing
-    /// ([`LinkResponse::max_closing`]) and nothing else changes. Neighbours without a contact entry and
-    /// without floors at the same height stay unlinked.
+    /// ([`LinkResponse::max_closing`]) and nothing else changes; walls stay, out of reach, to record the
+    /// largest approach to each ([`WallResponse::max_closing`]); bumpers go; devices stay (they are part of
+    /// the structure). Neighbours without a contact entry and without floors at the same height stay
+    /// unlinked.
     pub fn without_contact(&self) -> Scenario {
         let mut s = self.clone();
         for link in &mut s.links {
             link.gap = NO_CONTACT_GAP;
+            link.bumper = None;
+        }
+        for wall in &mut s.walls {
+            wall.gap = NO_CONTACT_GAP;
+            wall.bumper = None;
         }
         for left in 0..self.buildings.len().saturating_sub(1) {
             if s.links.iter().any(|l| l.left == left) {
@@ -273,6 +292,8 @@ impl Scenario {
                     gap: NO_CONTACT_GAP,
                     floors,
                     contact,
+                    bumper: None,
+                    seat: None,
                 });
             }
         }
@@ -421,10 +442,10 @@ impl RunOptions {
 /// One impact of one contact element.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Impact {
-    /// Index of the link in [`Scenario::links`].
-    pub link: usize,
-    /// Floor pair `(left, right)`, from 1.
-    pub floors: (usize, usize),
+    /// Where: a link's floor pair, or a wall's floor.
+    pub site: Site,
+    /// Which law: the contact's own, a bumper's layer, or the hard law behind a consumed bumper.
+    pub layer: Layer,
     /// Time of touch, s.
     pub time: f64,
     /// Relative velocity at touch, m/s.
@@ -478,12 +499,15 @@ pub struct BuildingResponse {
     pub hysteretic_energy: Vec<f64>,
 }
 
-/// Totals of one link (all its elements).
+/// Totals of one link (all its elements), or of one wall ([`WallResponse`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinkResponse {
-    /// Number of impacts.
+    /// Number of impacts (on the bumper's face, if there is one).
     pub impacts: usize,
-    /// Largest contact force of any element, N.
+    /// Impacts of the hard law behind a consumed bumper (0 without a bumper).
+    pub consumed: usize,
+    /// Largest contact force of a floor pair, N: of any impact, located between steps, or (with a bumper)
+    /// of the layer and the hard law together, at the integration nodes.
     pub peak_force: f64,
     /// Energy dissipated by the link's contacts, J.
     pub dissipated_energy: f64,
@@ -493,6 +517,26 @@ pub struct LinkResponse {
     /// located between steps; 0 if the floors never approached. Without contact (a run of
     /// [`Scenario::without_contact`]) it is the gap each pair needed to never touch.
     pub max_closing: Vec<f64>,
+    /// Largest opening `u_right - u_left` of each floor pair, m (0 if they never moved apart).
+    pub max_opening: Vec<f64>,
+    /// Whether the largest opening exceeded the seat ([`Link::seat`]; `None` without one).
+    pub unseated: Option<bool>,
+}
+
+/// Totals of one wall (all its floors): a [`LinkResponse`] whose floor pairs are the wall's floors
+/// ([`Wall::floors`] order), whose closing is a floor's displacement towards the wall and whose opening is
+/// its displacement away from it.
+pub type WallResponse = LinkResponse;
+
+/// Peaks of one device, per floor pair ([`Device::floors`] order).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DeviceResponse {
+    /// Largest |force| (elastic and viscous), N, over the integration nodes.
+    pub peak_force: Vec<f64>,
+    /// Largest closing `x` (m; for a restrainer, negative values are openings).
+    pub max_closing: Vec<f64>,
+    /// Largest opening `-x`, m.
+    pub max_opening: Vec<f64>,
 }
 
 /// Energies at the end of the analysis, J, and the worst relative error of the balance.
@@ -519,8 +563,13 @@ pub struct Histories {
     pub absolute_acceleration: Vec<Vec<Vec<f64>>>,
     /// `storey_shear[building][storey][sample]`: the restoring force of each storey, N.
     pub storey_shear: Vec<Vec<Vec<f64>>>,
-    /// `force[link][element][sample]`, N (elements in the order of [`Link::floors`]).
+    /// `force[link][pair][sample]`, N (pairs in the order of [`Link::floors`]; with a bumper, the layer's and
+    /// the hard law's force together).
     pub force: Vec<Vec<Vec<f64>>>,
+    /// `wall_force[wall][floor][sample]`, N (floors in the order of [`Wall::floors`]).
+    pub wall_force: Vec<Vec<Vec<f64>>>,
+    /// `device_force[device][pair][sample]`, N, positive pushing apart (pairs in [`Device::floors`] order).
+    pub device_force: Vec<Vec<Vec<f64>>>,
     /// Energies, J: input, kinetic, recoverable strain, viscous damping, hysteretic, contact work
     /// (`energy[0..6][sample]`).
     pub energy: [Vec<f64>; 6],
@@ -579,7 +628,16 @@ impl Results {
             &h.absolute_acceleration,
             &h.storey_shear,
             &h.force,
+            &h.wall_force,
+            &h.device_force,
         ];
+        if self
+            .devices
+            .iter()
+            .any(|d| bad(&d.peak_force) || bad(&d.max_closing) || bad(&d.max_opening))
+        {
+            return Some("devices".into());
+        }
         if groups.iter().any(|g| g.iter().flatten().any(|c| bad(c)))
             || h.energy.iter().any(|c| bad(c))
         {
@@ -596,6 +654,10 @@ pub struct Results {
     pub buildings: Vec<BuildingResponse>,
     /// Totals of each link.
     pub links: Vec<LinkResponse>,
+    /// Totals of each wall.
+    pub walls: Vec<WallResponse>,
+    /// Peaks of each device.
+    pub devices: Vec<DeviceResponse>,
     /// Every impact, in order of touch.
     pub impacts: Vec<Impact>,
     /// Energy balance.

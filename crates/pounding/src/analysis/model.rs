@@ -1,8 +1,11 @@
 //! The row of buildings as a system of the engine: one degree of freedom per floor, one storey element per
-//! storey, one contact element per floor pair of each link.
+//! storey (and, for an isolated building, one dashpot per floor above the base slab for the
+//! mass-proportional damping of its superstructure), one contact element per floor pair of each link and
+//! per floor of each wall (two with a bumper), and one device element per floor pair of each device.
 
-use super::Scenario;
-use crate::element::{Contact, Element, End, Storey};
+use super::{Bumper, DeviceEnds, Layer, Scenario, Side, Site, Wall};
+use crate::contact::PreparedContact;
+use crate::element::{Contact, Device, DeviceLaw, Element, End, Storey};
 use crate::engine::{Dof, Ground, System};
 
 /// A contact element and where it stands.
@@ -10,10 +13,19 @@ use crate::engine::{Dof, Ground, System};
 pub(super) struct ContactRef {
     /// Index of the element in the system.
     pub element: usize,
-    /// Index of the link in [`Scenario::links`].
-    pub link: usize,
-    /// Floor pair `(left, right)`, from 1.
-    pub floors: (usize, usize),
+    /// The link's floor pair or the wall's floor.
+    pub site: Site,
+    /// Which law of the site.
+    pub layer: Layer,
+}
+
+/// A device element and where it stands.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct DeviceRef {
+    /// Index of the element in the system.
+    pub element: usize,
+    /// Index in [`Scenario::devices`].
+    pub device: usize,
 }
 
 /// The system and the map from buildings, storeys and contacts to its degrees of freedom and elements.
@@ -25,8 +37,11 @@ pub(super) struct Model<'a> {
     pub first_storey: Vec<usize>,
     /// Element index of the storey under each floor (degree of freedom).
     pub storey_under: Vec<usize>,
-    /// The contact elements, link by link, floor pair by floor pair.
+    /// The contact elements: links (floor pair by floor pair), then walls (floor by floor); a bumper's layer
+    /// comes before the hard law behind it.
     pub contacts: Vec<ContactRef>,
+    /// The elements of the devices, device by device, floor pair by floor pair.
+    pub devices: Vec<DeviceRef>,
 }
 
 impl<'a> Model<'a> {
@@ -36,9 +51,11 @@ impl<'a> Model<'a> {
         let mut offsets = Vec::new();
         let mut first_storey = Vec::new();
         let mut storey_under = Vec::new();
+        // Dashpots of the mass-proportional damping of isolated superstructures, relative to the base slab.
+        let mut base_dashpots = Vec::new();
         for b in s.buildings() {
             let st = &b.structure;
-            let (a0, a1) = st.rayleigh();
+            let (c, a0, base) = st.damping_layout();
             let offset = dofs.len();
             offsets.push(offset);
             first_storey.push(elements.len());
@@ -49,35 +66,116 @@ impl<'a> Model<'a> {
                     End::Dof(offset + j - 1)
                 };
                 storey_under.push(elements.len());
-                // Rayleigh damping on the initial stiffness (OpenSees' betaKinit).
+                // Rayleigh damping on the initial stiffness (OpenSees' betaKinit); an isolator's own.
                 elements.push(Element::storey(
                     offset + j,
                     bottom,
-                    Storey::new(k, *law, a1 * k),
+                    Storey::new(k, *law, c[j]),
                 ));
             }
-            dofs.extend(st.masses().iter().map(|&mass| Dof { mass, a0 }));
+            let a0_dof = if base.is_some() { 0.0 } else { a0 };
+            dofs.extend(st.masses().iter().map(|&mass| Dof { mass, a0: a0_dof }));
+            if let (Some(base), true) = (base, a0 > 0.0) {
+                for (i, &m) in st.masses().iter().enumerate().filter(|(i, _)| *i != base) {
+                    base_dashpots.push((offset + i, offset + base, a0 * m));
+                }
+            }
+        }
+        for (i, b, c) in base_dashpots {
+            elements.push(Element::device(
+                End::Dof(i),
+                End::Dof(b),
+                Device::new(DeviceLaw::Dashpot { damping: c }),
+            ));
         }
         let mut contacts = Vec::new();
+        let mut add = |elements: &mut Vec<Element>,
+                       site: Site,
+                       (a, b): (End, End),
+                       gap: f64,
+                       contact: &PreparedContact,
+                       bumper: &Option<Bumper>,
+                       m_eff: f64| {
+            let mut push = |layer, gap, contact: &PreparedContact| {
+                contacts.push(ContactRef {
+                    element: elements.len(),
+                    site,
+                    layer,
+                });
+                elements.push(Element::contact(
+                    a,
+                    b,
+                    Contact::new(contact.clone(), gap, m_eff, s.min_impact_velocity()),
+                ));
+            };
+            match bumper {
+                None => push(Layer::Direct, gap, contact),
+                Some(bm) => {
+                    let (touch, consumed) = bm.gaps(gap);
+                    push(Layer::Bumper, touch, &bm.contact);
+                    push(Layer::Consumed, consumed, contact);
+                }
+            }
+        };
         for (li, link) in s.links().iter().enumerate() {
             for &(fl, fr) in &link.floors {
                 let (left, right) = (offsets[link.left] + fl - 1, offsets[link.right] + fr - 1);
                 let (ml, mr) = (dofs[left].mass, dofs[right].mass);
-                contacts.push(ContactRef {
-                    element: elements.len(),
+                let site = Site::Link {
                     link: li,
                     floors: (fl, fr),
-                });
-                elements.push(Element::contact(
-                    End::Dof(left),
-                    End::Dof(right),
-                    Contact::new(
-                        link.contact.clone(),
-                        link.gap,
-                        ml * mr / (ml + mr),
-                        s.min_impact_velocity(),
+                };
+                let ends = (End::Dof(left), End::Dof(right));
+                let m_eff = ml * mr / (ml + mr);
+                add(
+                    &mut elements,
+                    site,
+                    ends,
+                    link.gap,
+                    &link.contact,
+                    &link.bumper,
+                    m_eff,
+                );
+            }
+        }
+        let wall_ends = |w: &Wall, f: usize| {
+            let i = End::Dof(offsets[w.building] + f - 1);
+            match w.side {
+                Side::Right => (i, End::Ground),
+                Side::Left => (End::Ground, i),
+            }
+        };
+        for (wi, w) in s.walls().iter().enumerate() {
+            for &f in &w.floors {
+                let site = Site::Wall { wall: wi, floor: f };
+                // Against a rigid wall the effective mass is the floor's own.
+                let m = dofs[offsets[w.building] + f - 1].mass;
+                add(
+                    &mut elements,
+                    site,
+                    wall_ends(w, f),
+                    w.gap,
+                    &w.contact,
+                    &w.bumper,
+                    m,
+                );
+            }
+        }
+        let mut devices = Vec::new();
+        for (di, d) in s.devices().iter().enumerate() {
+            for &(fa, fb) in &d.floors {
+                let ends = match d.ends {
+                    DeviceEnds::Buildings { left, right } => (
+                        End::Dof(offsets[left] + fa - 1),
+                        End::Dof(offsets[right] + fb - 1),
                     ),
-                ));
+                    DeviceEnds::Wall { wall } => wall_ends(&s.walls()[wall], fa),
+                };
+                devices.push(DeviceRef {
+                    element: elements.len(),
+                    device: di,
+                });
+                elements.push(Element::device(ends.0, ends.1, Device::new(d.law)));
             }
         }
         Self {
@@ -86,6 +184,7 @@ impl<'a> Model<'a> {
             first_storey,
             storey_under,
             contacts,
+            devices,
         }
     }
 
@@ -162,6 +261,18 @@ impl<'a> Model<'a> {
                     // Bouc–Wen: z is dimensionless and of order 1; then the work of its hysteretic part.
                     if r.len() == 2 {
                         atol[r.start] = rtol;
+                        atol[r.start + 1] = rtol * e_scale;
+                    }
+                }
+                crate::element::Kind::Device(_) => {
+                    // Maxwell: the dashpot's stroke, as its ends' displacements; the energy it dissipated.
+                    if r.len() == 2 {
+                        let u = ends
+                            .iter()
+                            .flatten()
+                            .map(|&i| u_scale[i])
+                            .fold(0.0, f64::max);
+                        atol[r.start] = rtol * u;
                         atol[r.start + 1] = rtol * e_scale;
                     }
                 }

@@ -1,8 +1,8 @@
 //! What a pounding run keeps, as observers of the engine: peaks of floors and storeys, impacts, the energy
 //! balance, and (optionally) histories at the output interval.
 
-use super::model::{ContactRef, Model};
-use super::{Histories, Impact, Progress};
+use super::model::{ContactRef, DeviceRef, Model};
+use super::{Histories, Impact, Progress, Site};
 use crate::element::{ContactPiece, Engagement, Event, Kind};
 use crate::engine::{hermite_peak, EventInfo, Hermite, Observer, PeakTracker, Segment, System};
 use std::ops::ControlFlow;
@@ -115,6 +115,14 @@ pub(super) struct Impacts {
     pub impacts: Vec<Impact>,
     /// Largest closing `u_left - u_right` of each contact element so far, m (0 at rest).
     pub max_closing: Vec<f64>,
+    /// Largest opening (the closing's opposite) of each contact element so far, m (0 at rest).
+    pub max_opening: Vec<f64>,
+    /// The site (floor pair or wall floor) of each contact element, numbered in order: a bumper's layer and
+    /// the hard law behind it share one.
+    pub pair: Vec<usize>,
+    /// Largest total force of each site at the integration nodes, N.
+    pub pair_peak: Vec<f64>,
+    pair_sum: Vec<f64>,
 }
 
 impl Impacts {
@@ -123,12 +131,27 @@ impl Impacts {
         for (k, c) in m.contacts.iter().enumerate() {
             slot[c.element] = k;
         }
+        let mut pair = Vec::with_capacity(m.contacts.len());
+        for (k, c) in m.contacts.iter().enumerate() {
+            let same = k > 0 && m.contacts[k - 1].site == c.site;
+            let last = pair.last().copied();
+            pair.push(match (same, last) {
+                (true, Some(p)) => p,
+                (_, Some(p)) => p + 1,
+                (_, None) => 0,
+            });
+        }
+        let pairs = pair.last().map_or(0, |p| p + 1);
         Self {
             contacts: m.contacts.clone(),
             slot,
             trackers: m.contacts.iter().map(|_| None).collect(),
             impacts: Vec::new(),
             max_closing: vec![0.0; m.contacts.len()],
+            max_opening: vec![0.0; m.contacts.len()],
+            pair,
+            pair_peak: vec![0.0; pairs],
+            pair_sum: vec![0.0; pairs],
         }
     }
 
@@ -140,8 +163,8 @@ impl Impacts {
     fn impact(c: &ContactRef, tr: &mut Tracker, t: f64, v_out: Option<f64>, work: f64) -> Impact {
         let (time_of_peak_force, peak_force) = tr.peak.finish();
         Impact {
-            link: c.link,
-            floors: c.floors,
+            site: c.site,
+            layer: c.layer,
             time: tr.time,
             v_i: tr.v_i,
             v_out,
@@ -178,20 +201,31 @@ impl Observer for Impacts {
     fn segment(&mut self, seg: &Segment<'_, '_>) {
         let sys = seg.system;
         let h = seg.t1 - seg.t0;
-        for (c, m) in self.contacts.iter().zip(self.max_closing.iter_mut()) {
-            // The closing's largest value on the step: at its end or at an interior extremum of its
-            // Hermite interpolant (located, as the floors' peaks are).
+        self.pair_sum.iter_mut().for_each(|f| *f = 0.0);
+        for (k, c) in self.contacts.iter().enumerate() {
+            // The closing's largest and smallest values on the step: at its end or at an interior extremum
+            // of its Hermite interpolant (located, as the floors' peaks are).
             let ((xa, va), (xb, vb)) = (
                 sys.deformation(c.element, seg.y0),
                 sys.deformation(c.element, seg.y1),
             );
             let p = Hermite::new(xa, xb, va, vb, h);
-            *m = m.max(xb);
+            let (hi, lo) = (&mut self.max_closing[k], &mut self.max_opening[k]);
+            *hi = hi.max(xb);
+            *lo = lo.max(-xb);
             for s in p.extrema() {
                 if !s.is_nan() {
-                    *m = m.max(p.at(s));
+                    let x = p.at(s);
+                    *hi = hi.max(x);
+                    *lo = lo.max(-x);
                 }
             }
+            if let Kind::Contact(ct) = &sys.elements()[c.element].kind {
+                self.pair_sum[self.pair[k]] += ct.reported_force(xb, vb);
+            }
+        }
+        for (peak, f) in self.pair_peak.iter_mut().zip(&self.pair_sum) {
+            *peak = peak.max(*f);
         }
         for (c, tr) in self.contacts.iter().zip(self.trackers.iter_mut()) {
             let (Some(tr), Kind::Contact(ct)) = (tr.as_mut(), &sys.elements()[c.element].kind)
@@ -296,16 +330,19 @@ pub(super) struct HistoryRecorder {
     offsets: Vec<usize>,
     first_storey: Vec<usize>,
     contacts: Vec<ContactRef>,
+    /// Index of each contact's column within its link or wall.
+    column: Vec<usize>,
+    devices: Vec<DeviceRef>,
     ys: Vec<f64>,
     rate: Vec<f64>,
 }
 
 impl HistoryRecorder {
     /// Samples at `k dt` (the last one at `t_end`), `n_out` of them.
+    /// `storeys` per building, floor pairs per link, `walls` floors per wall, `devices` pairs per device.
     pub fn new(
         m: &Model,
-        storeys: &[usize],
-        links: &[usize],
+        (storeys, links, walls, devices): (&[usize], &[usize], &[usize], &[usize]),
         n_out: usize,
         dt: f64,
         t_end: f64,
@@ -325,6 +362,8 @@ impl HistoryRecorder {
                 absolute_acceleration: per(storeys),
                 storey_shear: per(storeys),
                 force: per(links),
+                wall_force: per(walls),
+                device_force: per(devices),
                 energy: std::array::from_fn(|_| Vec::with_capacity(n_out)),
             },
             times: (0..n_out).map(|k| (k as f64 * dt).min(t_end)).collect(),
@@ -332,6 +371,28 @@ impl HistoryRecorder {
             offsets: m.offsets.clone(),
             first_storey: m.first_storey.clone(),
             contacts: m.contacts.clone(),
+            column: {
+                // Columns follow the sites in order; a bumper's two elements share one.
+                let mut col = Vec::with_capacity(m.contacts.len());
+                let mut prev: Option<Site> = None;
+                let mut n = 0;
+                for c in &m.contacts {
+                    let same_owner = match (prev, c.site) {
+                        (Some(Site::Link { link: a, .. }), Site::Link { link: b, .. }) => a == b,
+                        (Some(Site::Wall { wall: a, .. }), Site::Wall { wall: b, .. }) => a == b,
+                        _ => false,
+                    };
+                    if !same_owner {
+                        n = 0;
+                    } else if prev != Some(c.site) {
+                        n += 1;
+                    }
+                    col.push(n);
+                    prev = Some(c.site);
+                }
+                col
+            },
+            devices: m.devices.clone(),
             ys: vec![0.0; dim],
             rate: vec![0.0; dim],
         }
@@ -364,18 +425,27 @@ impl Observer for HistoryRecorder {
                     col.push(sys.element_force(s0 + j, &self.ys));
                 }
             }
-            let mut k = 0;
-            for link in h.force.iter_mut() {
-                for col in link.iter_mut() {
-                    let e = self.contacts[k].element;
-                    let (x, v) = sys.deformation(e, &self.ys);
-                    let f = match &sys.elements()[e].kind {
-                        Kind::Contact(c) => c.reported_force(x, v),
-                        Kind::Storey(_) => 0.0,
-                    };
-                    col.push(f);
-                    k += 1;
-                }
+            for col in h.force.iter_mut().chain(h.wall_force.iter_mut()).flatten() {
+                col.push(0.0);
+            }
+            for (c, &j) in self.contacts.iter().zip(&self.column) {
+                let (x, v) = sys.deformation(c.element, &self.ys);
+                let f = match &sys.elements()[c.element].kind {
+                    Kind::Contact(ct) => ct.reported_force(x, v),
+                    _ => 0.0,
+                };
+                let col = match c.site {
+                    Site::Link { link, .. } => &mut h.force[link][j],
+                    Site::Wall { wall, .. } => &mut h.wall_force[wall][j],
+                };
+                *col.last_mut().expect("a sample") += f;
+            }
+            let mut prev = usize::MAX;
+            let mut j = 0;
+            for d in &self.devices {
+                j = if d.device == prev { j + 1 } else { 0 };
+                prev = d.device;
+                h.device_force[d.device][j].push(device_force(sys, d.element, &self.ys));
             }
             let e = sys.energies(&self.ys);
             for (col, x) in h.energy.iter_mut().zip(e.terms()) {
@@ -386,10 +456,51 @@ impl Observer for HistoryRecorder {
     }
 }
 
+/// The force of device element `e` in state `y` (elastic and viscous), N.
+fn device_force(sys: &System, e: usize, y: &[f64]) -> f64 {
+    let (x, v) = sys.deformation(e, y);
+    let r = sys.layout().block(e);
+    let mut ds = [0.0; 2];
+    let (f, fv) = sys.elements()[e].evaluate(x, v, &y[r.clone()], &mut ds[..r.len()]);
+    f + fv
+}
+
+/// Peaks of every device element.
+pub(super) struct DevicePeaks {
+    devices: Vec<DeviceRef>,
+    pub force: Vec<f64>,
+    pub closing: Vec<f64>,
+    pub opening: Vec<f64>,
+}
+
+impl DevicePeaks {
+    pub fn new(m: &Model) -> Self {
+        let n = m.devices.len();
+        Self {
+            devices: m.devices.clone(),
+            force: vec![0.0; n],
+            closing: vec![0.0; n],
+            opening: vec![0.0; n],
+        }
+    }
+}
+
+impl Observer for DevicePeaks {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        for (k, d) in self.devices.iter().enumerate() {
+            let (x, _) = seg.system.deformation(d.element, seg.y1);
+            self.force[k] = self.force[k].max(device_force(seg.system, d.element, seg.y1).abs());
+            self.closing[k] = self.closing[k].max(x);
+            self.opening[k] = self.opening[k].max(-x);
+        }
+    }
+}
+
 /// Everything a run keeps, and its progress reports.
 pub(super) struct Recorders<'p> {
     pub peaks: Peaks,
     pub impacts: Impacts,
+    pub devices: DevicePeaks,
     pub balance: Balance,
     pub histories: Option<HistoryRecorder>,
     pub progress: &'p mut dyn FnMut(Progress) -> ControlFlow<()>,
@@ -402,11 +513,13 @@ impl<'p> Recorders<'p> {
     pub fn new(
         peaks: Peaks,
         impacts: Impacts,
+        devices: DevicePeaks,
         histories: Option<HistoryRecorder>,
         progress: &'p mut dyn FnMut(Progress) -> ControlFlow<()>,
         t_end: f64,
     ) -> Self {
         Self {
+            devices,
             peaks,
             impacts,
             balance: Balance::default(),
@@ -423,6 +536,7 @@ impl Observer for Recorders<'_> {
     fn segment(&mut self, seg: &Segment<'_, '_>) {
         self.peaks.segment(seg);
         self.impacts.segment(seg);
+        self.devices.segment(seg);
         self.balance.segment(seg);
         if let Some(h) = self.histories.as_mut() {
             h.segment(seg);

@@ -1,9 +1,10 @@
 //! A pounding run: the row as a system of the engine, its recorders, and the results they kept.
 
 use super::model::Model;
-use super::record::{HistoryRecorder, Impacts, Peak, Peaks, Recorders};
+use super::record::{DevicePeaks, HistoryRecorder, Impacts, Peak, Peaks, Recorders};
 use super::{
-    BuildingResponse, EnergyBalance, LinkResponse, Results, RunOptions, Scenario, Statistics,
+    BuildingResponse, DeviceResponse, EnergyBalance, Layer, LinkResponse, Results, RunOptions,
+    Scenario, Site, Statistics,
 };
 use crate::element::Kind;
 use crate::engine::{self, Settings};
@@ -44,7 +45,9 @@ pub(super) fn run(
         });
     }
     let floors: usize = s.buildings().iter().map(|b| b.structure.storeys()).sum();
-    let contacts: usize = s.links().iter().map(|l| l.floors.len()).sum();
+    let contacts: usize = s.links().iter().map(|l| l.floors.len()).sum::<usize>()
+        + s.walls().iter().map(|w| w.floors.len()).sum::<usize>()
+        + s.devices().iter().map(|d| d.floors.len()).sum::<usize>();
     let columns = 2 + 3 * floors + contacts + 6;
     if opts.histories
         && s.output_samples().saturating_mul(columns) > crate::limits::MAX_HISTORY_VALUES
@@ -65,10 +68,11 @@ pub(super) fn run(
             .map(|b| b.structure.storeys())
             .collect();
         let links: Vec<usize> = s.links().iter().map(|l| l.floors.len()).collect();
+        let walls: Vec<usize> = s.walls().iter().map(|w| w.floors.len()).collect();
+        let devices: Vec<usize> = s.devices().iter().map(|d| d.floors.len()).collect();
         HistoryRecorder::new(
             &model,
-            &storeys,
-            &links,
+            (&storeys, &links, &walls, &devices),
             s.output_samples(),
             s.output_dt(),
             t_end,
@@ -77,6 +81,7 @@ pub(super) fn run(
     let mut rec = Recorders::new(
         Peaks::new(&model),
         Impacts::new(&model),
+        DevicePeaks::new(&model),
         histories,
         progress,
         t_end,
@@ -150,7 +155,7 @@ pub(super) fn run(
             let storeys = s0..s0 + b.structure.storeys();
             let storey = |e: usize| match &sys.elements()[e].kind {
                 Kind::Storey(st) => Some(st),
-                Kind::Contact(_) => None,
+                _ => None,
             };
             let residual_drift: Vec<f64> =
                 storeys.clone().map(|e| sys.deformation(e, y).0).collect();
@@ -178,26 +183,64 @@ pub(super) fn run(
         })
         .collect();
     let impacts = rec.impacts.finish(sys, out.t, y);
+    // Totals of a link or a wall: its impacts, the work of its elements, its closings and openings per
+    // site (a bumper's two elements share their site), and its largest force.
+    let totals = |owns: &dyn Fn(Site) -> bool, seat: Option<f64>| {
+        let mine = impacts.iter().filter(|i| owns(i.site));
+        let ks: Vec<usize> = (0..model.contacts.len())
+            .filter(|&k| owns(model.contacts[k].site))
+            .collect();
+        let first: Vec<usize> = ks
+            .iter()
+            .copied()
+            .filter(|&k| model.contacts[k].layer != Layer::Consumed)
+            .collect();
+        let per = |v: &[f64]| first.iter().map(|&k| v[k]).collect::<Vec<f64>>();
+        let max_opening = per(&rec.impacts.max_opening);
+        let pair_peak = ks
+            .iter()
+            .map(|&k| rec.impacts.pair_peak[rec.impacts.pair[k]])
+            .fold(0.0, f64::max);
+        LinkResponse {
+            impacts: mine.clone().filter(|i| i.layer != Layer::Consumed).count(),
+            consumed: mine.clone().filter(|i| i.layer == Layer::Consumed).count(),
+            peak_force: mine.clone().map(|i| i.peak_force).fold(pair_peak, f64::max),
+            dissipated_energy: ks
+                .iter()
+                .map(|&k| y[l.block(model.contacts[k].element).start])
+                .sum(),
+            max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
+            max_closing: per(&rec.impacts.max_closing),
+            unseated: seat.map(|s| max_opening.iter().any(|&o| o > s)),
+            max_opening,
+        }
+    };
     let links = (0..s.links().len())
         .map(|li| {
-            let mine = impacts.iter().filter(|i| i.link == li);
-            LinkResponse {
-                impacts: mine.clone().count(),
-                peak_force: mine.clone().map(|i| i.peak_force).fold(0.0, f64::max),
-                dissipated_energy: model
-                    .contacts
-                    .iter()
-                    .filter(|c| c.link == li)
-                    .map(|c| y[l.block(c.element).start])
-                    .sum(),
-                max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
-                max_closing: model
-                    .contacts
-                    .iter()
-                    .zip(&rec.impacts.max_closing)
-                    .filter(|(c, _)| c.link == li)
-                    .map(|(_, m)| *m)
-                    .collect(),
+            totals(
+                &|site| matches!(site, Site::Link { link, .. } if link == li),
+                s.links()[li].seat,
+            )
+        })
+        .collect();
+    let walls = (0..s.walls().len())
+        .map(|wi| {
+            totals(
+                &|site| matches!(site, Site::Wall { wall, .. } if wall == wi),
+                s.walls()[wi].seat,
+            )
+        })
+        .collect();
+    let devices = (0..s.devices().len())
+        .map(|di| {
+            let ks: Vec<usize> = (0..model.devices.len())
+                .filter(|&k| model.devices[k].device == di)
+                .collect();
+            let per = |v: &[f64]| ks.iter().map(|&k| v[k]).collect::<Vec<f64>>();
+            DeviceResponse {
+                peak_force: per(&rec.devices.force),
+                max_closing: per(&rec.devices.closing),
+                max_opening: per(&rec.devices.opening),
             }
         })
         .collect();
@@ -205,6 +248,8 @@ pub(super) fn run(
     let results = Results {
         buildings,
         links,
+        walls,
+        devices,
         impacts,
         energy: EnergyBalance {
             end: sys.energies(y),

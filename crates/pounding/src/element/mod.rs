@@ -7,16 +7,19 @@
 //!
 //! - a storey joins floor `j` (end `a`) to floor `j - 1` or the ground (end `b`): `x` is the drift;
 //! - a contact joins a floor of the left building (`a`) to a floor of its right neighbour (`b`), so its
-//!   penetration is `x - gap`; against a wall on the right of a floor, `b` is the ground; on its left, `a` is.
+//!   penetration is `x - gap`; against a wall on the right of a floor, `b` is the ground; on its left, `a` is;
+//! - a device (spring, dashpot, Kelvin, Maxwell, restrainer) joins its ends as a contact does, for good.
 //!
 //! Each element kind says what force it adds, which extra ODE states it carries (Bouc–Wen's `z`, a contact's
 //! work), which event functions it watches in its current phase, and how its phase changes when one fires
 //! ([`Element::apply`]). The phase is plain data; the engine ([`crate::engine`]) drives all of it.
 
 pub mod contact;
+pub mod device;
 pub mod storey;
 
 pub use contact::{Contact, ContactPiece, Engagement, LawSource};
+pub use device::{Device, DeviceLaw};
 pub use storey::{Storey, StoreyLaw, StoreyState};
 
 use crate::Error;
@@ -66,6 +69,10 @@ pub enum Event {
     YieldDown,
     /// Storey: the drift rate changes sign while yielding (bilinear) or at any time (Bouc–Wen).
     Reversal,
+    /// Restrainer: the opening reaches the slack.
+    Taut,
+    /// Restrainer: the opening returns below the slack.
+    Slack,
 }
 
 /// What an element holds at one instant, J, split by where the energy went.
@@ -77,6 +84,8 @@ pub struct ElementEnergy {
     pub hysteretic: f64,
     /// Work of a contact force on the relative motion, J.
     pub contact: f64,
+    /// Energy dissipated by a viscous part that is an ODE state (a Maxwell unit's dashpot), J.
+    pub damping: f64,
 }
 
 /// What the engine should do after an element changed phase.
@@ -148,6 +157,8 @@ pub enum Kind {
     Storey(Storey),
     /// A contact (impact) element.
     Contact(Contact),
+    /// A device between two ends.
+    Device(Device),
 }
 
 /// An element: two ends and a kind.
@@ -171,6 +182,15 @@ impl Element {
         }
     }
 
+    /// A device whose deformation is `u_a - u_b`.
+    pub fn device(a: End, b: End, device: Device) -> Self {
+        Self {
+            a,
+            b,
+            kind: Kind::Device(device),
+        }
+    }
+
     /// A contact whose penetration is `u_a - u_b - gap`.
     pub fn contact(a: End, b: End, contact: Contact) -> Self {
         Self {
@@ -185,6 +205,7 @@ impl Element {
         match &self.kind {
             Kind::Storey(s) => s.states(),
             Kind::Contact(_) => 1,
+            Kind::Device(d) => d.states(),
         }
     }
 
@@ -200,6 +221,7 @@ impl Element {
                 ds[0] = f * v;
                 (f, 0.0)
             }
+            Kind::Device(d) => d.evaluate(x, v, s, ds),
         }
     }
 
@@ -209,6 +231,7 @@ impl Element {
         match &self.kind {
             Kind::Storey(st) => st.force(x, s),
             Kind::Contact(c) => c.force(x, v),
+            Kind::Device(d) => d.force(x, s),
         }
     }
 
@@ -220,13 +243,21 @@ impl Element {
                 ElementEnergy {
                     strain,
                     hysteretic,
-                    contact: 0.0,
+                    ..ElementEnergy::default()
                 }
             }
             Kind::Contact(_) => ElementEnergy {
                 contact: s[0],
                 ..ElementEnergy::default()
             },
+            Kind::Device(d) => {
+                let (strain, damping) = d.energy(x, s);
+                ElementEnergy {
+                    strain,
+                    damping,
+                    ..ElementEnergy::default()
+                }
+            }
         }
     }
 
@@ -235,6 +266,7 @@ impl Element {
         match &self.kind {
             Kind::Storey(s) => s.watched(),
             Kind::Contact(c) => c.watched(),
+            Kind::Device(d) => d.watched(),
         }
     }
 
@@ -244,6 +276,7 @@ impl Element {
         match &self.kind {
             Kind::Storey(s) => s.event_value(ev, x, v),
             Kind::Contact(c) => c.event_value(ev, x, v),
+            Kind::Device(d) => d.event_value(ev, x),
         }
     }
 
@@ -255,13 +288,17 @@ impl Element {
 
     /// Sets the resolution of the deformation rate, m/s ([`RateGate`]).
     pub fn set_rate_resolution(&mut self, v_res: f64) {
-        self.gate_mut().set_resolution(v_res);
+        if let Some(g) = self.gate_mut() {
+            g.set_resolution(v_res);
+        }
     }
 
-    fn gate_mut(&mut self) -> &mut RateGate {
+    /// The rate gate of a storey or contact (devices change phase on positions only).
+    fn gate_mut(&mut self) -> Option<&mut RateGate> {
         match &mut self.kind {
-            Kind::Storey(s) => &mut s.gate,
-            Kind::Contact(c) => &mut c.gate,
+            Kind::Storey(s) => Some(&mut s.gate),
+            Kind::Contact(c) => Some(&mut c.gate),
+            Kind::Device(_) => None,
         }
     }
 
@@ -272,10 +309,15 @@ impl Element {
         let g = match &self.kind {
             Kind::Storey(s) => s.rate_event(v),
             Kind::Contact(c) => c.rate_event(v),
+            Kind::Device(_) => None,
         };
-        let gate = self.gate_mut();
-        gate.rearm(g);
-        !gate.armed()
+        match self.gate_mut() {
+            Some(gate) => {
+                gate.rearm(g);
+                !gate.armed()
+            }
+            None => false,
+        }
     }
 
     /// Whether the next change of direction is located at a rate of exactly 0 ([`RateGate`]).
@@ -283,6 +325,7 @@ impl Element {
         match &self.kind {
             Kind::Storey(s) => s.gate.armed(),
             Kind::Contact(c) => c.gate.armed(),
+            Kind::Device(_) => true,
         }
     }
 
@@ -294,6 +337,10 @@ impl Element {
                 Ok(Transition::default())
             }
             Kind::Contact(c) => c.apply(ev, x, v, h),
+            Kind::Device(d) => {
+                d.apply(ev);
+                Ok(Transition::default())
+            }
         }
     }
 }

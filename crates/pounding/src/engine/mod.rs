@@ -198,6 +198,7 @@ impl<'a> System<'a> {
             out.strain += en.strain;
             out.hysteretic += en.hysteretic;
             out.contact += en.contact;
+            out.damping += en.damping;
         }
         out
     }

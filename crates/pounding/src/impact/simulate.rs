@@ -108,7 +108,7 @@ pub fn simulate(
 
     let f0 = match &sys.elements()[0].kind {
         Kind::Contact(c) => c.reported_force(0.0, v_i),
-        Kind::Storey(_) => 0.0,
+        _ => 0.0,
     };
     let mut rec = Recorder {
         history: opts.history.then(History::default),

@@ -1,11 +1,15 @@
 //! Validation of a [`ScenarioDoc`] into the library's types, once, with one-line messages that name the key.
 
-use super::{AlphaDoc, BuildingDoc, ContactDoc, GroundMotionDoc, ScenarioDoc, SchemaError};
-use crate::analysis::{Building, Scenario};
-use crate::contact::{AlphaRule, ContactOptions, Damping, Model, Reading, Tension};
-use crate::element::StoreyLaw;
+use super::{
+    AlphaDoc, BuildingDoc, ContactDoc, DeviceDoc, GroundMotionDoc, IsolatorDoc, LawDoc, LawKeys,
+    ScenarioDoc, SchemaError, WallDoc,
+};
+use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, Side, WallSpec};
+use crate::contact::{AlphaRule, ContactModel, ContactOptions, Damping, Model, Reading, Tension};
+use crate::element::{DeviceLaw, StoreyLaw};
 use crate::ground_motion::{Format, Record, Units};
 use crate::structure::ShearBuilding;
+use crate::structure::{isolation, Isolator, IsolatorModel};
 use crate::Error;
 
 /// The record a scenario needs, checked: a built-in (`file == None`) or a file, how to read it, and the scale.
@@ -163,12 +167,33 @@ impl ScenarioDoc {
             }
             let what = format!("building {:?}", b.name);
             let laws = storey_laws(&at, &what, b)?;
-            let structure = ShearBuilding::new(
-                b.masses.clone(),
-                b.stiffnesses.clone(),
-                b.heights.clone(),
-                b.damping_ratio,
-            )
+            let structure = match &b.isolator {
+                None => ShearBuilding::new(
+                    b.masses.clone(),
+                    b.stiffnesses.clone(),
+                    b.heights.clone(),
+                    b.damping_ratio,
+                ),
+                Some(iso) => {
+                    let above = b.masses.len().saturating_sub(1);
+                    for (key, len) in [("stiffnesses", b.stiffnesses.len()), ("heights", b.heights.len())] {
+                        if b.masses.is_empty() || len != above {
+                            return Err(SchemaError::new(
+                                format!("{at}.{key}"),
+                                format!("{what}: with an isolator, {key} lists the storeys above the base slab: {len} values for {} masses (the slab, floor 1, and {above} floors above it)", b.masses.len()),
+                            ));
+                        }
+                    }
+                    ShearBuilding::isolated(
+                        b.masses[0],
+                        isolator(&format!("{at}.isolator"), &what, iso)?,
+                        b.masses[1..].to_vec(),
+                        b.stiffnesses.clone(),
+                        b.heights.clone(),
+                        b.damping_ratio,
+                    )
+                }
+            }
             .and_then(|s| s.with_storey_laws(laws))
             .map_err(|e| lib(&at, &what, e))?;
             buildings.push(Building {
@@ -207,6 +232,12 @@ impl ScenarioDoc {
         for (i, c) in self.contact.iter().enumerate() {
             scenario = contact(scenario, &format!("contact.{i}"), c)?;
         }
+        for (i, w) in self.wall.iter().enumerate() {
+            scenario = wall(scenario, &format!("wall.{i}"), w)?;
+        }
+        for (i, d) in self.device.iter().enumerate() {
+            scenario = device(scenario, &format!("device.{i}"), d)?;
+        }
         Ok(scenario)
     }
 }
@@ -214,7 +245,8 @@ impl ScenarioDoc {
 /// The storey laws of a building entry: `storey_model` (default linear), `yield_forces`, `post_yield_ratio`
 /// (default 0, elastic–perfectly-plastic) and `bouc_wen` (default n = 1, beta = gamma = 0.5).
 fn storey_laws(at: &str, what: &str, b: &BuildingDoc) -> Result<Vec<StoreyLaw>, SchemaError> {
-    let storeys = b.masses.len();
+    // With an isolator, the storeys above the base slab.
+    let storeys = b.masses.len() - usize::from(b.isolator.is_some() && !b.masses.is_empty());
     let err =
         |key: &str, msg: String| SchemaError::new(format!("{at}.{key}"), format!("{what}: {msg}"));
     let list = |key: &str, len: usize| {
@@ -313,8 +345,8 @@ fn unit_for(n: f64) -> String {
 }
 
 /// The contact options of an entry, its words checked.
-fn options(at: &str, c: &ContactDoc) -> Result<ContactOptions, SchemaError> {
-    let model = Model::from_name(&c.model).ok_or_else(|| {
+fn options(at: &str, c: &LawDoc) -> Result<ContactOptions, SchemaError> {
+    let model = Model::from_name(c.model).ok_or_else(|| {
         let names: Vec<_> = Model::all().map(Model::name).collect();
         SchemaError::new(
             format!("{at}.model"),
@@ -340,14 +372,14 @@ fn options(at: &str, c: &ContactDoc) -> Result<ContactOptions, SchemaError> {
             }
         }),
     };
-    let damping = match c.damping.as_deref() {
+    let damping = match c.damping {
         None => Damping::Formula,
         Some(d) => match word("damping", &key("damping"), d, &["formula", "exact"])? {
             "formula" => Damping::Formula,
             _ => Damping::Exact,
         },
     };
-    let reading = match c.reading.as_deref() {
+    let reading = match c.reading {
         None => Reading::EnergySplit,
         Some(r) => match word(
             "reading",
@@ -359,7 +391,7 @@ fn options(at: &str, c: &ContactDoc) -> Result<ContactOptions, SchemaError> {
             _ => Reading::SameDamping,
         },
     };
-    let tension = match c.tension.as_deref() {
+    let tension = match c.tension {
         None => None,
         Some(t) => Some(
             match word("tension", &key("tension"), t, &["allow", "clamp"])? {
@@ -381,23 +413,14 @@ fn options(at: &str, c: &ContactDoc) -> Result<ContactOptions, SchemaError> {
     })
 }
 
-/// Adds the contact entry `c` (at `at`) to `scenario`.
-fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, SchemaError> {
+/// The contact law of an entry at `at` (`pair` names it in messages): its options, and a stiffness that
+/// states its unit.
+fn contact_law(at: &str, pair: &str, c: &LawDoc) -> Result<ContactModel, SchemaError> {
     let key = |k: &str| format!("{at}.{k}");
-    let [a, b] = <[String; 2]>::try_from(c.between.clone()).map_err(|_| {
-        SchemaError::new(
-            key("between"),
-            format!(
-                "between = {:?} is not allowed: two building names, [\"left\", \"right\"]",
-                c.between
-            ),
-        )
-    })?;
     let opts = options(at, c)?;
-    let pair = format!("contact {a:?}-{b:?}");
     // The stiffness states its unit, so that changing the model cannot silently change what it means.
     let n = opts.exponent();
-    match c.stiffness_unit.as_deref() {
+    match c.stiffness_unit {
         None => {
             return Err(SchemaError::new(
                 key("stiffness"),
@@ -427,28 +450,258 @@ fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, Sch
             }
         }
     }
-    let spec = opts.build(c.stiffness).map_err(|e| {
+    opts.build(c.stiffness).map_err(|e| {
         // Messages start with the key (`e = 1.5 is not allowed ...`): name it.
         let m = e.message(|k| k.replace('-', "_"));
         let k = m.split([' ', '=']).next().unwrap_or("");
         let path = if k.is_empty() { at.to_string() } else { key(k) };
         SchemaError::new(path, format!("{pair}: {m}"))
-    })?;
-    let floors = match &c.floors {
-        None => None,
-        Some(f) => Some(
+    })
+}
+
+/// The bumper of an entry at `at`, if it has one.
+fn bumper(
+    at: &str,
+    pair: &str,
+    b: &Option<super::BumperDoc>,
+) -> Result<Option<Bumper>, SchemaError> {
+    let Some(b) = b else { return Ok(None) };
+    let at = format!("{at}.bumper");
+    let what = format!("{pair} bumper");
+    let law = contact_law(&at, &what, &b.law())?;
+    Bumper::new(b.thickness, b.max_strain, &law)
+        .map(Some)
+        .map_err(|e| lib(&at, &what, e))
+}
+
+/// Floor pairs `[[i, j], ...]` at `at.floors`.
+fn pairs(
+    at: &str,
+    floors: &Option<Vec<Vec<usize>>>,
+) -> Result<Option<Vec<(usize, usize)>>, SchemaError> {
+    floors
+        .as_ref()
+        .map(|f| {
             f.iter()
                 .map(|p| match p.as_slice() {
                     [i, j] => Ok((*i, *j)),
                     _ => Err(SchemaError::new(
-                        key("floors"),
+                        format!("{at}.floors"),
                         format!("floors entry {p:?} is not allowed: pairs [floor of left, floor of right], from 1"),
                     )),
                 })
-                .collect::<Result<Vec<_>, _>>()?,
-        ),
-    };
-    scenario
+                .collect()
+        })
+        .transpose()
+}
+
+/// Two names in `between`.
+fn two(at: &str, between: &[String], what: &str) -> Result<[String; 2], SchemaError> {
+    <[String; 2]>::try_from(between.to_vec()).map_err(|_| {
+        SchemaError::new(
+            format!("{at}.between"),
+            format!("between = {between:?} is not allowed: two names, {what}"),
+        )
+    })
+}
+
+/// Adds the contact entry `c` (at `at`) to `scenario`.
+fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, SchemaError> {
+    let [a, b] = two(at, &c.between, "[\"left\", \"right\"]")?;
+    let pair = format!("contact {a:?}-{b:?}");
+    let spec = contact_law(at, &pair, &c.law())?;
+    let floors = pairs(at, &c.floors)?;
+    let bumper = bumper(at, &pair, &c.bumper)?;
+    let mut s = scenario
         .with_link(&a, &b, c.gap, &spec, floors)
-        .map_err(|e| lib(at, "", e))
+        .map_err(|e| lib(at, "", e))?;
+    if let Some(bm) = bumper {
+        s = s
+            .with_link_bumper(&a, &b, bm)
+            .map_err(|e| lib(at, &pair, e))?;
+    }
+    if let Some(seat) = c.seat {
+        s = s
+            .with_link_seat(&a, &b, seat)
+            .map_err(|e| lib(at, &pair, e))?;
+    }
+    Ok(s)
+}
+
+/// Adds the wall entry `w` (at `at`) to `scenario`.
+fn wall(scenario: Scenario, at: &str, w: &WallDoc) -> Result<Scenario, SchemaError> {
+    let what = format!("wall {:?}", w.name);
+    let side = match word("side", &format!("{at}.side"), &w.side, &["left", "right"])? {
+        "left" => Side::Left,
+        _ => Side::Right,
+    };
+    let spec = WallSpec {
+        name: w.name.clone(),
+        facing: w.facing.clone(),
+        side,
+        gap: w.gap,
+        floors: w.floors.clone(),
+        contact: contact_law(at, &what, &w.law())?,
+        bumper: bumper(at, &what, &w.bumper)?,
+        seat: w.seat,
+    };
+    scenario.with_wall(spec).map_err(|e| lib(at, &what, e))
+}
+
+/// Adds the device entry `d` (at `at`) to `scenario`.
+fn device(scenario: Scenario, at: &str, d: &DeviceDoc) -> Result<Scenario, SchemaError> {
+    let between = two(
+        at,
+        &d.between,
+        "two neighbouring buildings, or a building and a wall",
+    )?;
+    let what = format!(
+        "device {:?}",
+        d.name.clone().unwrap_or_else(|| d.model.clone())
+    );
+    let model = word(
+        "model",
+        &format!("{at}.model"),
+        &d.model,
+        &["spring", "dashpot", "kelvin", "maxwell", "restrainer"],
+    )?;
+    let needs = |key: &str, v: Option<f64>, unit: &str| {
+        v.ok_or_else(|| {
+            SchemaError::new(
+                format!("{at}.{key}"),
+                format!("{what}: {model} needs {key} ({unit})"),
+            )
+        })
+    };
+    let uses = |key: &str, given: bool, applies: bool| {
+        if given && !applies {
+            Err(SchemaError::new(
+                format!("{at}.{key}"),
+                format!("{what}: {key} does not apply to a {model}"),
+            ))
+        } else {
+            Ok(())
+        }
+    };
+    uses("stiffness", d.stiffness.is_some(), model != "dashpot")?;
+    uses(
+        "damping_coefficient",
+        d.damping_coefficient.is_some(),
+        ["dashpot", "kelvin", "maxwell"].contains(&model),
+    )?;
+    uses("slack", d.slack.is_some(), model == "restrainer")?;
+    let k = || needs("stiffness", d.stiffness, "N/m");
+    let c = || needs("damping_coefficient", d.damping_coefficient, "N s/m");
+    let law = match model {
+        "spring" => DeviceLaw::Spring { stiffness: k()? },
+        "dashpot" => DeviceLaw::Dashpot { damping: c()? },
+        "kelvin" => DeviceLaw::Kelvin {
+            stiffness: k()?,
+            damping: c()?,
+        },
+        "maxwell" => DeviceLaw::Maxwell {
+            stiffness: k()?,
+            damping: c()?,
+        },
+        _ => DeviceLaw::Restrainer {
+            stiffness: k()?,
+            slack: d.slack.unwrap_or(0.0),
+        },
+    };
+    let spec = DeviceSpec {
+        name: d.name.clone(),
+        between,
+        floors: pairs(at, &d.floors)?,
+        law,
+    };
+    scenario.with_device(spec).map_err(|e| {
+        let e = match e {
+            // The law's own keys are named as in the file.
+            crate::Error::Parameter {
+                name: "damping",
+                value,
+                ..
+            } => crate::Error::Parameter {
+                name: "damping_coefficient",
+                value,
+                allowed: "damping_coefficient > 0 (N s/m)",
+            },
+            e => e,
+        };
+        lib(at, &what, e)
+    })
+}
+
+/// The isolator of a building entry at `at`.
+fn isolator(at: &str, what: &str, d: &IsolatorDoc) -> Result<Isolator, SchemaError> {
+    let model = word(
+        "model",
+        &format!("{at}.model"),
+        &d.model,
+        &["linear", "bilinear", "bouc-wen", "friction-pendulum"],
+    )?;
+    let err =
+        |key: &str, msg: String| SchemaError::new(format!("{at}.{key}"), format!("{what}: {msg}"));
+    let fp = model == "friction-pendulum";
+    let hysteretic = ["bilinear", "bouc-wen"].contains(&model);
+    for (key, given, applies) in [
+        ("stiffness", d.stiffness.is_some(), !fp),
+        ("yield_force", d.yield_force.is_some(), hysteretic),
+        ("post_yield_ratio", d.post_yield_ratio.is_some(), hysteretic),
+        ("bouc_wen", d.bouc_wen.is_some(), model == "bouc-wen"),
+        ("radius", d.radius.is_some(), fp),
+        ("mu", d.mu.is_some(), fp),
+        ("yield_displacement", d.yield_displacement.is_some(), fp),
+    ] {
+        if given && !applies {
+            return Err(err(
+                key,
+                format!("{key} does not apply to a {model} isolator"),
+            ));
+        }
+    }
+    let needs = |key: &str, v: Option<f64>, unit: &str| {
+        v.ok_or_else(|| err(key, format!("a {model} isolator needs {key} ({unit})")))
+    };
+    let k = || needs("stiffness", d.stiffness, "N/m");
+    let fy = || needs("yield_force", d.yield_force, "N");
+    let a = d.post_yield_ratio.unwrap_or(0.0);
+    let m = match model {
+        "linear" => IsolatorModel::Linear { stiffness: k()? },
+        "bilinear" => IsolatorModel::Bilinear {
+            stiffness: k()?,
+            yield_force: fy()?,
+            post_yield_ratio: a,
+        },
+        "bouc-wen" => {
+            let bw = d
+                .bouc_wen
+                .as_ref()
+                .map_or((1.0, 0.5, 0.5), |p| (p.n, p.beta, p.gamma));
+            IsolatorModel::BoucWen {
+                stiffness: k()?,
+                yield_force: fy()?,
+                post_yield_ratio: a,
+                n: bw.0,
+                beta: bw.1,
+                gamma: bw.2,
+            }
+        }
+        _ => IsolatorModel::FrictionPendulum {
+            radius: needs("radius", d.radius, "m")?,
+            mu: needs("mu", d.mu, "dimensionless")?,
+            yield_displacement: d
+                .yield_displacement
+                .unwrap_or(isolation::FRICTION_YIELD_DISPLACEMENT),
+        },
+    };
+    let mut iso = Isolator::new(m);
+    if let Some(h) = d.height {
+        iso.height = h;
+    }
+    if let Some(c) = d.damping_coefficient {
+        iso.damping = c;
+    }
+    iso.clearance = d.clearance;
+    Ok(iso)
 }

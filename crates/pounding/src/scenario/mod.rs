@@ -42,6 +42,12 @@ pub struct ScenarioDoc {
     /// Contacts between neighbouring buildings.
     #[serde(default)]
     pub contact: Vec<ContactDoc>,
+    /// Walls beside buildings.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub wall: Vec<WallDoc>,
+    /// Devices between neighbours.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub device: Vec<DeviceDoc>,
 }
 
 /// `[ground_motion]`: a built-in record or a record file.
@@ -86,7 +92,8 @@ pub struct AnalysisDoc {
     pub min_impact_velocity: Option<f64>,
 }
 
-/// `[[building]]`: a shear building, floor 1 (the lowest) first.
+/// `[[building]]`: a shear building, floor 1 (the lowest) first. With an `isolator`, floor 1 is the base
+/// slab on it, and `stiffnesses`, `heights` and the storey keys list the storeys above the slab.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct BuildingDoc {
@@ -113,6 +120,9 @@ pub struct BuildingDoc {
     /// Bouc–Wen shape parameters.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bouc_wen: Option<BoucWenDoc>,
+    /// The isolator under the base slab, for a building isolated at its base.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub isolator: Option<IsolatorDoc>,
 }
 
 /// One value for every storey, or a list with one per storey.
@@ -161,49 +171,217 @@ pub enum AlphaDoc {
     Word(String),
 }
 
-/// `[[contact]]`: contact elements between two neighbouring buildings.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ContactDoc {
-    /// The two buildings' names.
-    pub between: Vec<String>,
-    /// Gap at rest, m.
-    pub gap: f64,
-    /// Contact model (default `papi`).
-    #[serde(default = "papi")]
-    pub model: String,
-    /// Requested coefficient of restitution (dimensionless, default 0.65).
-    #[serde(default = "concrete_e")]
+/// Declares a schema entry that carries a contact law: its own fields, then the law's keys (the same on a
+/// `[[contact]]`, a `[[wall]]` and a bumper), and [`LawKeys`] to read them.
+macro_rules! with_contact_law {
+    ($(#[$meta:meta])* pub struct $name:ident { $($(#[$fm:meta])* pub $field:ident : $ty:ty,)* }) => {
+        $(#[$meta])*
+        #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+        #[serde(deny_unknown_fields)]
+        pub struct $name {
+            $($(#[$fm])* pub $field: $ty,)*
+            /// Contact model (default `papi`).
+            #[serde(default = "papi")]
+            pub model: String,
+            /// Requested coefficient of restitution (dimensionless, default 0.65).
+            #[serde(default = "concrete_e")]
+            pub e: f64,
+            /// Stiffness, in `stiffness_unit`.
+            pub stiffness: f64,
+            /// `N/m` or `N/m^n`, matching the model's exponent (required).
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub stiffness_unit: Option<String>,
+            /// Exponent of the force law (dimensionless; default the model's).
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub exponent: Option<f64>,
+            /// `formula` (default) or `exact`.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub damping: Option<String>,
+            /// `alpha` of `papi`.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub alpha: Option<AlphaDoc>,
+            /// `energy-split` (default) or `same-damping`.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub reading: Option<String>,
+            /// `allow` or `clamp` (default: the model's).
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub tension: Option<String>,
+            /// `impact-material`: expected maximum penetration, m.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub max_penetration: Option<f64>,
+            /// `impact-material`: yield ratio (dimensionless, default 0.1).
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub yield_ratio: Option<f64>,
+        }
+
+        impl LawKeys for $name {
+            fn law(&self) -> LawDoc<'_> {
+                LawDoc {
+                    model: &self.model,
+                    e: self.e,
+                    stiffness: self.stiffness,
+                    stiffness_unit: self.stiffness_unit.as_deref(),
+                    exponent: self.exponent,
+                    damping: self.damping.as_deref(),
+                    alpha: self.alpha.as_ref(),
+                    reading: self.reading.as_deref(),
+                    tension: self.tension.as_deref(),
+                    max_penetration: self.max_penetration,
+                    yield_ratio: self.yield_ratio,
+                }
+            }
+        }
+    };
+}
+
+/// The contact-law keys of an entry, borrowed.
+#[derive(Clone, Copy, Debug)]
+pub struct LawDoc<'a> {
+    /// Model name.
+    pub model: &'a str,
+    /// Requested coefficient of restitution.
     pub e: f64,
     /// Stiffness, in `stiffness_unit`.
     pub stiffness: f64,
-    /// `N/m` or `N/m^n`, matching the model's exponent (required).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub stiffness_unit: Option<String>,
-    /// Exponent of the force law (dimensionless; default the model's).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// Its unit.
+    pub stiffness_unit: Option<&'a str>,
+    /// Exponent.
     pub exponent: Option<f64>,
-    /// `formula` (default) or `exact`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub damping: Option<String>,
+    /// `formula` or `exact`.
+    pub damping: Option<&'a str>,
     /// `alpha` of `papi`.
+    pub alpha: Option<&'a AlphaDoc>,
+    /// Reading of `papi`.
+    pub reading: Option<&'a str>,
+    /// Tension rule.
+    pub tension: Option<&'a str>,
+    /// `impact-material`: expected maximum penetration, m.
+    pub max_penetration: Option<f64>,
+    /// `impact-material`: yield ratio.
+    pub yield_ratio: Option<f64>,
+}
+
+/// An entry that carries a contact law.
+pub trait LawKeys {
+    /// Its law's keys.
+    fn law(&self) -> LawDoc<'_>;
+}
+
+with_contact_law! {
+    /// `[[contact]]`: contact elements between two neighbouring buildings.
+    pub struct ContactDoc {
+        /// The two buildings' names.
+        pub between: Vec<String>,
+        /// Gap at rest, m.
+        pub gap: f64,
+        /// Floor pairs `[floor of left, floor of right]`, from 1 (default: floors at the same height).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub floors: Option<Vec<Vec<usize>>>,
+        /// A bumper on the joint's face.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub bumper: Option<BumperDoc>,
+        /// Seat length of the joint for the unseating check, m.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub seat: Option<f64>,
+    }
+}
+
+with_contact_law! {
+    /// `[[wall]]`: a wall fixed to the ground beside a building.
+    pub struct WallDoc {
+        /// Name, unique among buildings and walls.
+        pub name: String,
+        /// The building it stands beside.
+        pub facing: String,
+        /// `left` or `right` of that building.
+        pub side: String,
+        /// Clear distance at rest, m.
+        pub gap: f64,
+        /// Floors that can strike it, from 1 (default `[1]`).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub floors: Option<Vec<usize>>,
+        /// A bumper on its face.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub bumper: Option<BumperDoc>,
+        /// Seat length for the unseating check (an abutment's seat), m.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub seat: Option<f64>,
+    }
+}
+
+with_contact_law! {
+    /// `bumper`: a soft layer of finite thickness on a contact's or a wall's face, with its own law.
+    pub struct BumperDoc {
+        /// Thickness, m (at most the gap).
+        pub thickness: f64,
+        /// Largest compressive strain of the layer, in (0, 1).
+        pub max_strain: f64,
+    }
+}
+
+/// `[building.isolator]`: the isolator under the base slab (floor 1); the building's `stiffnesses`,
+/// `heights` and storey keys then describe the storeys above it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct IsolatorDoc {
+    /// `linear`, `bilinear`, `bouc-wen` or `friction-pendulum`.
+    pub model: String,
+    /// Initial stiffness, N/m (linear, bilinear, bouc-wen).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub alpha: Option<AlphaDoc>,
-    /// `energy-split` (default) or `same-damping`.
+    pub stiffness: Option<f64>,
+    /// Yield force, N (bilinear, bouc-wen).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub reading: Option<String>,
-    /// `allow` or `clamp` (default: the model's).
+    pub yield_force: Option<f64>,
+    /// Post-yield stiffness ratio (bilinear, bouc-wen; default 0).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub tension: Option<String>,
-    /// Floor pairs `[floor of left, floor of right]`, from 1 (default: floors at the same height).
+    pub post_yield_ratio: Option<f64>,
+    /// Bouc–Wen shape parameters (bouc-wen).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bouc_wen: Option<BoucWenDoc>,
+    /// Radius of curvature, m (friction-pendulum).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    /// Coefficient of friction (friction-pendulum).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mu: Option<f64>,
+    /// Yield displacement of the friction variable, m (friction-pendulum; default 2.5e-4).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_displacement: Option<f64>,
+    /// Height of the isolation storey, m (default 0.5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height: Option<f64>,
+    /// Viscous coefficient of the isolator, N s/m (default 0: hysteresis only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_coefficient: Option<f64>,
+    /// Displacement capacity, m, reported against the demand.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub clearance: Option<f64>,
+}
+
+/// `[[device]]`: a permanent device between floors of two neighbours, or of a building and a wall.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DeviceDoc {
+    /// Name, unique among devices (default: the model and its number, `restrainer1`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    /// Two neighbouring buildings, or a building and a wall beside it.
+    pub between: Vec<String>,
+    /// `spring`, `dashpot`, `kelvin`, `maxwell` or `restrainer`.
+    pub model: String,
+    /// Stiffness, N/m (spring, kelvin, maxwell, restrainer).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness: Option<f64>,
+    /// Damping coefficient, N s/m (dashpot, kelvin, maxwell).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_coefficient: Option<f64>,
+    /// Slack of a restrainer, m (default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub slack: Option<f64>,
+    /// Floor pairs (to a wall: `[floor, floor]`), from 1 (default: floors at the same height; floor 1 to a
+    /// wall).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub floors: Option<Vec<Vec<usize>>>,
-    /// `impact-material`: expected maximum penetration, m.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub max_penetration: Option<f64>,
-    /// `impact-material`: yield ratio (dimensionless, default 0.1).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub yield_ratio: Option<f64>,
 }
 
 fn default_units() -> String {

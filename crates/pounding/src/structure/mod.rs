@@ -9,6 +9,9 @@
 //! `c = 2 zeta sqrt(k m)`, which is the same formula with `w2 = w1`.
 
 mod eigen;
+pub mod isolation;
+
+pub use isolation::{Isolator, IsolatorModel};
 
 use crate::element::StoreyLaw;
 use crate::error::check;
@@ -26,6 +29,8 @@ pub struct ShearBuilding {
     rayleigh: (f64, f64),
     /// The law of each storey (linear unless set by [`ShearBuilding::with_storey_laws`]).
     storey_laws: Vec<StoreyLaw>,
+    /// The isolator under floor 1 (the base slab), if the building is isolated at its base.
+    isolator: Option<Isolator>,
     /// Natural modes, computed once at construction (derived data: not serialised).
     #[cfg_attr(feature = "serde", serde(skip))]
     modes: Modes,
@@ -153,22 +158,115 @@ impl ShearBuilding {
             damping_ratio,
             rayleigh,
             storey_laws: vec![StoreyLaw::Linear; n_storeys],
+            isolator: None,
             modes,
         })
     }
 
-    /// Sets the law of each storey (one per storey). The stiffnesses stay the initial stiffnesses: modes and
-    /// Rayleigh damping (`C = a0 M + a1 K_0`, OpenSees' `betaKinit`) are those of the initial, elastic
-    /// building.
+    /// A building isolated at its base: the base slab (floor 1, `base_mass` kg) on `isolator` (storey 1),
+    /// with the superstructure's floors above it (`masses` kg, `stiffnesses` N/m of the storeys from the
+    /// slab up, `heights` m; all three may be empty, for a deck on its bearings). The superstructure is
+    /// damped with the ratio `damping_ratio` on modes 1 and 2 of its fixed-base modes (the slab held still);
+    /// see [`isolation`]. A friction pendulum carries the weight of every mass, slab included.
+    pub fn isolated(
+        base_mass: f64,
+        isolator: Isolator,
+        masses: Vec<f64>,
+        stiffnesses: Vec<f64>,
+        heights: Vec<f64>,
+        damping_ratio: f64,
+    ) -> Result<Self, Error> {
+        isolator.check()?;
+        for (name, list) in [("stiffnesses", &stiffnesses), ("heights", &heights)] {
+            if list.len() != masses.len() {
+                return Err(Error::Length {
+                    name,
+                    len: list.len(),
+                    expected: masses.len(),
+                });
+            }
+        }
+        check("mass", base_mass, base_mass > 0.0, "floor masses > 0 (kg)")?;
+        let weight = isolation::G * (base_mass + masses.iter().sum::<f64>());
+        let (k0, law) = isolator.model.storey(weight)?;
+        let above = (masses.clone(), stiffnesses.clone());
+        let all = |first: f64, rest: Vec<f64>| std::iter::once(first).chain(rest).collect();
+        let mut b = Self::new(
+            all(base_mass, masses),
+            all(k0, stiffnesses),
+            all(isolator.height, heights),
+            damping_ratio,
+        )?;
+        b.storey_laws[0] = law;
+        b.rayleigh = if above.0.is_empty() {
+            (0.0, 0.0)
+        } else {
+            let (modes, _) = solve_modes(&above.0, &above.1);
+            let w = &modes.omega;
+            let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
+            (
+                2.0 * damping_ratio * w1 * w2 / (w1 + w2),
+                2.0 * damping_ratio / (w1 + w2),
+            )
+        };
+        b.isolator = Some(isolator);
+        Ok(b)
+    }
+
+    /// The isolator under the base slab, if the building is isolated ([`ShearBuilding::isolated`]).
+    pub fn isolator(&self) -> Option<&Isolator> {
+        self.isolator.as_ref()
+    }
+
+    /// The viscous coefficient of each storey's dashpot, N s/m (storey 1 upwards), and the
+    /// mass-proportional coefficient `a0` (1/s) with the floor it is relative to: the ground (`None`) for a
+    /// fixed-base building, the base slab (floor 1, index 0) for an isolated one.
+    pub fn damping_layout(&self) -> (Vec<f64>, f64, Option<usize>) {
+        let (a0, a1) = self.rayleigh;
+        let mut c: Vec<f64> = self.stiffnesses.iter().map(|k| a1 * k).collect();
+        match &self.isolator {
+            Some(iso) => {
+                c[0] = iso.damping;
+                (c, a0, Some(0))
+            }
+            None => (c, a0, None),
+        }
+    }
+
+    /// Damping ratio of mode `r` (from 0): `phi^T C phi / (2 w)` with the building's damping matrix (the
+    /// diagonal term; for a fixed-base building with Rayleigh damping this is exactly the modal ratio, for an
+    /// isolated one the modes are not classically damped and the isolator's hysteresis is not counted).
+    pub fn damping_of_mode(&self, r: usize) -> f64 {
+        let (w, phi) = (self.modes.omega[r], &self.modes.shapes[r]);
+        let (c, a0, base) = self.damping_layout();
+        let mut sum = 0.0;
+        for (j, cj) in c.iter().enumerate() {
+            let d = phi[j] - if j == 0 { 0.0 } else { phi[j - 1] };
+            sum += cj * d * d;
+        }
+        let p0 = base.map_or(0.0, |b| phi[b]);
+        for (i, m) in self.masses.iter().enumerate() {
+            if base != Some(i) {
+                sum += a0 * m * (phi[i] - p0) * (phi[i] - p0);
+            }
+        }
+        sum / (2.0 * w)
+    }
+
+    /// Sets the law of each storey (one per storey; for an isolated building, one per storey above the
+    /// isolator, whose law stays its own). The stiffnesses stay the initial stiffnesses: modes and Rayleigh
+    /// damping (`C = a0 M + a1 K_0`, OpenSees' `betaKinit`) are those of the initial, elastic building.
     pub fn with_storey_laws(mut self, laws: Vec<StoreyLaw>) -> Result<Self, Error> {
-        if laws.len() != self.storeys() {
+        let first = usize::from(self.isolator.is_some());
+        if laws.len() != self.storeys() - first {
             return Err(Error::Length {
                 name: "storey_model",
                 len: laws.len(),
-                expected: self.storeys(),
+                expected: self.storeys() - first,
             });
         }
-        self.storey_laws = laws;
+        self.storey_laws.truncate(first);
+        self.storey_laws.extend(laws);
         Ok(self)
     }
 
@@ -221,13 +319,15 @@ impl ShearBuilding {
     }
 
     /// Rayleigh coefficients `(a0, a1)` of `C = a0 M + a1 K` (a0 in 1/s, a1 in s) giving the damping ratio
-    /// on modes 1 and 2 (mode 1 alone for a single storey).
+    /// on modes 1 and 2 (mode 1 alone for a single storey); for an isolated building, those of its
+    /// superstructure on a fixed base ((0, 0) without one), see [`ShearBuilding::damping_layout`].
     pub fn rayleigh(&self) -> (f64, f64) {
         self.rayleigh
     }
 
-    /// Damping ratio of a mode of circular frequency `w` (rad/s) under this building's Rayleigh damping:
-    /// `a0 / (2 w) + a1 w / 2`.
+    /// Damping ratio of a mode of circular frequency `w` (rad/s) under Rayleigh damping with this building's
+    /// coefficients: `a0 / (2 w) + a1 w / 2` (for an isolated building, of a fixed-base superstructure mode;
+    /// use [`ShearBuilding::damping_of_mode`] for the building's own modes).
     pub fn modal_damping(&self, w: f64) -> f64 {
         let (a0, a1) = self.rayleigh();
         a0 / (2.0 * w) + a1 * w / 2.0
