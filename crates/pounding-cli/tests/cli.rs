@@ -1481,3 +1481,109 @@ fn mutated_studies_end_in_their_tables_or_one_line_exit_2() {
         }
     }
 }
+
+#[test]
+fn walls_isolators_devices_and_seats_run_and_report() {
+    for (name, walls, devices) in [
+        ("isolated-moat.toml", 2, 0),
+        ("bridge-three-span.toml", 2, 2),
+    ] {
+        let dir = tmp(&format!("extras-{name}"));
+        let out = dir.join("out");
+        let o = pounding(&["run", &example(name), "--out", out.to_str().unwrap()]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let summary: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+                .unwrap();
+        assert_eq!(summary["walls"].as_array().unwrap().len(), walls);
+        assert_eq!(summary["devices"].as_array().unwrap().len(), devices);
+        assert!(summary["energy_balance_error"].as_f64().unwrap() < 1e-6);
+        let iso = &summary["buildings"][0]["isolator"];
+        assert!(iso["peak_displacement"].as_f64().unwrap() > 0.05, "{iso}");
+        // Every wall was struck, and its impacts are in impacts.csv with the wall's name.
+        let impacts = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+        for w in summary["walls"].as_array().unwrap() {
+            let n = w["impacts"].as_u64().unwrap() + w["consumed"].as_u64().unwrap_or(0);
+            assert!(n > 0, "{w}");
+            let name = w["name"].as_str().unwrap();
+            let rows = impacts
+                .lines()
+                .filter(|l| l.split(',').nth(1) == Some(name))
+                .count();
+            assert_eq!(rows as u64, n, "{name}");
+        }
+        let header = std::fs::read_to_string(out.join("response.csv")).unwrap();
+        let header = header.lines().next().unwrap();
+        for w in summary["walls"].as_array().unwrap() {
+            assert!(header.contains(&format!("{}_floor1_force_N", w["name"].as_str().unwrap())));
+        }
+        for d in summary["devices"].as_array().unwrap() {
+            assert!(header.contains(&format!(
+                "{}_floors1-1_force_N",
+                d["name"].as_str().unwrap()
+            )));
+            assert!(d["peak_force"][0].as_f64().unwrap() > 0.0, "{d}");
+        }
+        if name.starts_with("bridge") {
+            for c in summary["contacts"].as_array().unwrap() {
+                assert_eq!(c["unseated"], serde_json::Value::Bool(false));
+                assert!(c["max_opening"][0].as_f64().unwrap() < 0.3);
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_walls_isolators_and_devices_get_one_line_exit_2_and_no_output() {
+    let moat = std::fs::read_to_string(example("isolated-moat.toml")).unwrap();
+    let bridge = std::fs::read_to_string(example("bridge-three-span.toml")).unwrap();
+    let dir = tmp("bad-extras");
+    let cases: Vec<(String, &str)> = vec![
+        (
+            moat.replacen("facing = \"isolated\"", "facing = \"isolatd\"", 1),
+            "wall \"moat-east\": facing = \"isolatd\" is not allowed: one of the buildings: \"isolated\"",
+        ),
+        (
+            bridge.replacen("facing = \"span1\"", "facing = \"span2\"", 1),
+            "side = \"left\" is not allowed: a side of \"span2\" without a neighbour: \"span1\" stands on its left",
+        ),
+        (
+            moat.replacen("gap = 0.12", "gap = -0.12", 1),
+            "wall \"moat-east\": gap = -0.12 is not allowed: gap >= 0 (m)",
+        ),
+        (
+            moat.replacen("thickness = 0.05", "thickness = 0.15", 1),
+            "bumper.thickness = 0.15 is not allowed: a bumper no thicker than the gap",
+        ),
+        (
+            moat.replacen(
+                "masses = [8.0e5, 6.0e5, 6.0e5, 6.0e5, 6.0e5, 5.0e5]",
+                "masses = []",
+                1,
+            ),
+            "masses = [] is not allowed: with an isolator, the base slab (floor 1) first",
+        ),
+        (
+            moat.replacen("model = \"bouc-wen\"", "model = \"friction-pendulum\"", 1),
+            "stiffness does not apply to a friction-pendulum isolator",
+        ),
+        (
+            bridge.replacen("slack = 0.02", "slack = -0.02", 1),
+            "device \"restrainer-1\": slack = -0.02 is not allowed: slack >= 0 (m)",
+        ),
+        (
+            bridge.replacen("between = [\"span1\", \"span2\"]\nmodel = \"restrainer\"", "between = [\"span1\", \"span3\"]\nmodel = \"restrainer\"", 1),
+            "between = [\"span1\", \"span3\"] is not allowed: two buildings next to each other",
+        ),
+        (
+            bridge.replacen("seat = 0.30", "seat = 0.0", 1),
+            "seat = 0 is not allowed: seat > 0 (m)",
+        ),
+    ];
+    for (i, (text, says)) in cases.iter().enumerate() {
+        assert_ne!(text, &moat);
+        assert_ne!(text, &bridge);
+        let err = refused(&dir, i, text);
+        assert!(err.contains(says), "case {i}: {err} lacks {says}");
+    }
+}

@@ -175,7 +175,13 @@ impl ScenarioDoc {
                     b.damping_ratio,
                 ),
                 Some(iso) => {
-                    let above = b.masses.len().saturating_sub(1);
+                    if b.masses.is_empty() {
+                        return Err(SchemaError::new(
+                            format!("{at}.masses"),
+                            format!("{what}: masses = [] is not allowed: with an isolator, the base slab (floor 1) first, then the floors above it; an isolator carries the weight of the masses above it (a friction pendulum's force is proportional to it)"),
+                        ));
+                    }
+                    let above = b.masses.len() - 1;
                     for (key, len) in [("stiffnesses", b.stiffnesses.len()), ("heights", b.heights.len())] {
                         if b.masses.is_empty() || len != above {
                             return Err(SchemaError::new(

@@ -147,7 +147,7 @@ fn multi_storey_without_contact_is_modal_superposition() {
 }
 
 /// A record of constant acceleration `a` (m/s^2) for `t_a` s (after the ramp of its first 0.01 s).
-fn pulse(a: f64, t_a: f64) -> Record {
+pub fn pulse(a: f64, t_a: f64) -> Record {
     let n = (t_a / 0.01) as usize;
     let mut text = String::new();
     for i in 0..n + 2000 {

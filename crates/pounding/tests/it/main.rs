@@ -9,6 +9,7 @@ mod exact_relations;
 mod ground_motion;
 mod inelastic;
 mod integrated;
+mod isolation;
 mod paper;
 mod reliability;
 mod separation;
