@@ -131,11 +131,18 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
                 fmt_num(100.0 * st.damping_ratio())
             ),
             Some(iso) => format!(
-                "isolated: {} isolator (storey 1) under the base slab (floor 1){}; superstructure damped {} % on its fixed-base modes 1 and 2, isolator by its hysteresis{}",
+                "isolated: {} isolator (storey 1) under the base slab (floor 1){}; {}isolator damped by its hysteresis{}",
                 iso.model.name(),
                 iso.clearance
                     .map_or(String::new(), |c| format!(", clearance {} m", fmt_num(c))),
-                fmt_num(100.0 * st.damping_ratio()),
+                if st.storeys() > 1 {
+                    format!(
+                        "superstructure damped {} % on its fixed-base modes 1 and 2, ",
+                        fmt_num(100.0 * st.damping_ratio())
+                    )
+                } else {
+                    String::new()
+                },
                 if iso.damping > 0.0 {
                     format!(" and {} N s/m", fmt_sig(iso.damping, 4))
                 } else {

@@ -30,19 +30,41 @@ pub struct ElementData {
     pub force: Vec<f64>,
 }
 
-/// One contact between neighbouring buildings.
+/// One contact between neighbouring buildings, or a wall beside a building.
 pub struct ContactData {
-    /// `left|right`.
+    /// `left|right`, or the wall's name.
     pub name: String,
-    /// Index of the left building.
-    pub left: usize,
-    /// Index of the right building.
-    pub right: usize,
+    /// Index of the left building (`None`: a wall on the left of the right one).
+    pub left: Option<usize>,
+    /// Index of the right building (`None`: a wall on the right of the left one).
+    pub right: Option<usize>,
+    /// Whether it is a wall.
+    pub wall: bool,
     /// Gap at rest, m.
     pub gap: f64,
     /// Coefficient of restitution the contact model was given.
     pub e: f64,
-    /// Its elements.
+    /// Its elements (for a wall, floor pairs `(f, 0)` or `(0, f)`, the wall's side being 0).
+    pub elements: Vec<ElementData>,
+}
+
+/// A contact or wall as summary.json gives it: name, left and right building, gap (m), e, floor pairs.
+type ContactSpec = (
+    String,
+    Option<usize>,
+    Option<usize>,
+    f64,
+    f64,
+    Vec<(usize, usize)>,
+);
+
+/// One device, with the force of each floor pair.
+pub struct DeviceData {
+    /// Its name.
+    pub name: String,
+    /// `spring`, `dashpot`, `kelvin`, `maxwell` or `restrainer`.
+    pub model: String,
+    /// The force of each floor pair (N, positive pushing apart), at [`RunData::t`].
     pub elements: Vec<ElementData>,
 }
 
@@ -68,6 +90,8 @@ pub struct ImpactRow {
     pub dissipated_energy: f64,
     /// Largest penetration, m.
     pub max_penetration: f64,
+    /// An impact of the hard law behind a consumed bumper (layer `consumed`).
+    pub consumed: bool,
 }
 
 /// Everything a run wrote, parsed.
@@ -84,8 +108,10 @@ pub struct RunData {
     pub ground_acceleration: Vec<f64>,
     /// Buildings, left to right.
     pub buildings: Vec<BuildingData>,
-    /// Contacts, left to right.
+    /// Contacts, left to right, then walls.
     pub contacts: Vec<ContactData>,
+    /// Devices.
+    pub devices: Vec<DeviceData>,
     /// Every impact, in time order.
     pub impacts: Vec<ImpactRow>,
     /// Input, kinetic, strain, structural damping, hysteretic, contact energy, J, at `t`.
@@ -236,6 +262,7 @@ impl RunData {
                 ));
             };
             let name = format!("{}|{}", names[left], names[right]);
+            let (left, right) = (Some(left), Some(right));
             let mut elements = Vec::new();
             for pair in c["floors"].as_array().cloned().unwrap_or_default() {
                 let f = |i: usize| pair[i].as_u64().unwrap_or(0) as usize;
@@ -251,6 +278,49 @@ impl RunData {
                 c["e"].as_f64().unwrap_or(1.0),
             );
             contacts.push((name, left, right, gap, e, elements));
+        }
+        for w in list("walls") {
+            let name = w["name"].as_str().unwrap_or_default().to_string();
+            let Some(b) = w["facing"]
+                .as_str()
+                .and_then(|n| names.iter().position(|x| x == n))
+            else {
+                return Err(bad(dir, "summary.json: a wall faces an unknown building"));
+            };
+            let right_side = w["side"].as_str() == Some("right");
+            let (left, right) = if right_side {
+                (Some(b), None)
+            } else {
+                (None, Some(b))
+            };
+            let mut elements = Vec::new();
+            for f in w["floors"].as_array().cloned().unwrap_or_default() {
+                let f = f.as_u64().unwrap_or(0) as usize;
+                contact_columns.push(expect(&format!("{name}_floor{f}_force_N"))?);
+                elements.push(if right_side { (f, 0) } else { (0, f) });
+            }
+            let (gap, e) = (
+                w["gap"].as_f64().unwrap_or(0.0),
+                w["e"].as_f64().unwrap_or(1.0),
+            );
+            contacts.push((name, left, right, gap, e, elements));
+        }
+        let mut device_specs = Vec::new();
+        let mut device_columns = Vec::new();
+        for d in list("devices") {
+            let name = d["name"].as_str().unwrap_or_default().to_string();
+            let model = d["law"]
+                .as_object()
+                .and_then(|o| o.keys().next().cloned())
+                .unwrap_or_default()
+                .to_lowercase();
+            let mut pairs = Vec::new();
+            for pair in d["floors"].as_array().cloned().unwrap_or_default() {
+                let f = |i: usize| pair[i].as_u64().unwrap_or(0) as usize;
+                device_columns.push(expect(&format!("{name}_floors{}-{}_force_N", f(0), f(1)))?);
+                pairs.push((f(0), f(1)));
+            }
+            device_specs.push((name, model, pairs));
         }
         // Then every building's floor accelerations, then every building's storey shears.
         let mut acceleration_columns = Vec::new();
@@ -299,7 +369,7 @@ impl RunData {
         let mut cc = contact_columns.into_iter();
         let contacts = contacts
             .into_iter()
-            .map(|(name, left, right, gap, e, els)| {
+            .map(|(name, left, right, gap, e, els): ContactSpec| {
                 let elements = els
                     .into_iter()
                     .map(|floors| {
@@ -311,11 +381,33 @@ impl RunData {
                     })
                     .collect::<Result<_, CliError>>()?;
                 Ok(ContactData {
+                    wall: left.is_none() || right.is_none(),
                     name,
                     left,
                     right,
                     gap,
                     e,
+                    elements,
+                })
+            })
+            .collect::<Result<Vec<_>, CliError>>()?;
+        let mut dc = device_columns.into_iter();
+        let devices = device_specs
+            .into_iter()
+            .map(|(name, model, pairs)| {
+                let elements = pairs
+                    .into_iter()
+                    .map(|floors| {
+                        let k = dc.next().expect("one column per pair");
+                        Ok(ElementData {
+                            floors,
+                            force: column(dir, "response.csv", &rows, k)?,
+                        })
+                    })
+                    .collect::<Result<_, CliError>>()?;
+                Ok(DeviceData {
+                    name,
+                    model,
                     elements,
                 })
             })
@@ -341,9 +433,18 @@ impl RunData {
             col("contact")?,
             col("e_post")?,
         ];
+        let layer = header.iter().position(|h| h == "layer");
         let mut impacts = Vec::new();
         for r in &rows {
             let x = |k: usize| number(dir, "impacts.csv", &r[k]);
+            // A wall's side has no floor: blank in impacts.csv, 0 here.
+            let floor = |k: usize| {
+                if r[k].is_empty() {
+                    Ok(0)
+                } else {
+                    x(k).map(|v| v as usize)
+                }
+            };
             let contact = contacts
                 .iter()
                 .position(|c| c.name == r[contact_col])
@@ -355,7 +456,7 @@ impl RunData {
                 })?;
             impacts.push(ImpactRow {
                 contact,
-                floors: (x(fl)? as usize, x(fr)? as usize),
+                floors: (floor(fl)?, floor(fr)?),
                 time: x(time)?,
                 v_i: x(v_i)?,
                 e_post: if r[e_col].is_empty() {
@@ -368,6 +469,7 @@ impl RunData {
                 duration: x(dur)?,
                 dissipated_energy: x(diss)?,
                 max_penetration: x(pen)?,
+                consumed: layer.is_some_and(|k| r[k] == "consumed"),
             });
         }
 
@@ -386,7 +488,7 @@ impl RunData {
             rec["source"].as_str().unwrap_or("record"),
             crate::output::fmt_num(rec["scale"].as_f64().unwrap_or(1.0)),
             crate::output::fmt_num(summary["duration"].as_f64().unwrap_or(0.0)),
-            impacts.len()
+            impacts.iter().filter(|i| !i.consumed).count()
         );
         Ok(Self {
             summary,
@@ -396,6 +498,7 @@ impl RunData {
             ground_acceleration,
             buildings,
             contacts,
+            devices,
             impacts,
             energy,
         })

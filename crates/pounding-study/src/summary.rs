@@ -72,7 +72,8 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
             });
             if let Some(iso) = st.isolator() {
                 out["isolator"] = json!({
-                    "model": serde_json::to_value(iso.model).unwrap_or(Value::Null),
+                    "model": iso.model.name(),
+                    "law": serde_json::to_value(iso.model).unwrap_or(Value::Null),
                     "height": num(iso.height),
                     "damping_coefficient": num(iso.damping),
                     "clearance": iso.clearance.map_or(Value::Null, num),

@@ -220,7 +220,9 @@ pub fn run(d: &RunData) -> Vec<Figure> {
         let instants: Vec<f64> = d
             .impacts
             .iter()
-            .filter(|i| d.contacts[i.contact].left == b || d.contacts[i.contact].right == b)
+            .filter(|i| {
+                d.contacts[i.contact].left == Some(b) || d.contacts[i.contact].right == Some(b)
+            })
             .map(|i| i.time)
             .collect();
         if !instants.is_empty() {
@@ -238,21 +240,31 @@ pub fn run(d: &RunData) -> Vec<Figure> {
     let mut closing = Vec::new();
     for (c, cd) in d.contacts.iter().enumerate() {
         let mine: Vec<_> = d.impacts.iter().filter(|i| i.contact == c).collect();
-        let mut p = Panel::new(
-            format!("contact {}: {} impacts", cd.name, mine.len()),
-            time(),
-            force(),
-        );
+        let what = if cd.wall { "wall" } else { "contact" };
+        let consumed = mine.iter().filter(|i| i.consumed).count();
+        let title = if consumed > 0 {
+            format!(
+                "{what} {}: {} impacts, bumper consumed in {consumed} (its layer and the hard law behind it together)",
+                cd.name,
+                mine.len() - consumed
+            )
+        } else {
+            format!("{what} {}: {} impacts", cd.name, mine.len())
+        };
+        let mut p = Panel::new(title, time(), force());
         p.x_tight = true;
         p.y_zero = true;
         let mut q = Panel::new(
-            format!("contact {}: closing of the gap", cd.name),
+            format!("{what} {}: closing of the gap", cd.name),
             time(),
             Quantity::new("relative displacement u_left \u{2212} u_right", "m"),
         );
         q.x_tight = true;
         for (k, el) in cd.elements.iter().enumerate() {
-            let label = format!("floors {}-{}", el.floors.0, el.floors.1);
+            let label = match (cd.left, cd.right) {
+                (Some(_), Some(_)) => format!("floors {}-{}", el.floors.0, el.floors.1),
+                _ => format!("floor {}", el.floors.0.max(el.floors.1)),
+            };
             // The samples, with each impact's located peak inserted, so the curve reaches its true peak.
             let peaks: Vec<(f64, f64)> = mine
                 .iter()
@@ -261,9 +273,13 @@ pub fn run(d: &RunData) -> Vec<Figure> {
                 .collect();
             let (t, f) = merge(&d.t, &el.force, &peaks);
             p.series.push(Series::line(&label, t, f, Style::nth(k)));
-            let ul = &d.buildings[cd.left].floors[el.floors.0 - 1];
-            let ur = &d.buildings[cd.right].floors[el.floors.1 - 1];
-            let rel = ul.iter().zip(ur).map(|(a, b)| a - b).collect();
+            // A wall's side does not move relative to the ground.
+            let u = |b: Option<usize>, f: usize, k: usize| {
+                b.map_or(0.0, |b| d.buildings[b].floors[f - 1][k])
+            };
+            let rel = (0..d.t.len())
+                .map(|k| u(cd.left, el.floors.0, k) - u(cd.right, el.floors.1, k))
+                .collect();
             q.series
                 .push(Series::line(&label, d.t.clone(), rel, Style::nth(k)));
         }
@@ -301,7 +317,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             .filter(|i| i.contact == c && i.e_post.is_some())
             .collect();
         restitution.series.push(Series::points(
-            format!("contact {}", cd.name),
+            format!("{} {}", if cd.wall { "wall" } else { "contact" }, cd.name),
             ended.iter().map(|i| i.v_i).collect(),
             ended.iter().filter_map(|i| i.e_post).collect(),
             Style {
@@ -368,6 +384,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
     if !d.buildings.is_empty() {
         figs.push(envelopes(d));
         figs.extend(hysteresis(d));
+        figs.extend(isolators(d));
     }
     if !d.contacts.is_empty() {
         figs.push(Figure {
@@ -393,6 +410,37 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             title: "Relative displacement of the contact floors against the gap".into(),
             subtitle: d.subtitle.clone(),
             panels: closing,
+            columns: 1,
+            plot: PLOT,
+        });
+    }
+    if !d.devices.is_empty() {
+        let panels = d
+            .devices
+            .iter()
+            .map(|dd| {
+                let mut p = Panel::new(
+                    format!("device {} ({})", dd.name, dd.model),
+                    time(),
+                    Quantity::new("force, positive pushing apart", "N"),
+                );
+                p.x_tight = true;
+                for (k, el) in dd.elements.iter().enumerate() {
+                    p.series.push(Series::line(
+                        format!("floors {}-{}", el.floors.0, el.floors.1),
+                        d.t.clone(),
+                        el.force.clone(),
+                        Style::nth(k),
+                    ));
+                }
+                p
+            })
+            .collect();
+        figs.push(Figure {
+            id: "device-force".into(),
+            title: "Forces of the devices between neighbours".into(),
+            subtitle: d.subtitle.clone(),
+            panels,
             columns: 1,
             plot: PLOT,
         });
@@ -563,10 +611,13 @@ fn storey_info(d: &RunData, b: usize) -> Vec<StoreyInfo> {
             StoreyInfo {
                 building: b,
                 storey: j,
-                model: s["storey_models"][j]
-                    .as_str()
-                    .unwrap_or("linear")
-                    .to_string(),
+                model: match (j, s["isolator"]["model"].as_str()) {
+                    (0, Some(m)) => format!("isolator, {m}"),
+                    _ => s["storey_models"][j]
+                        .as_str()
+                        .unwrap_or("linear")
+                        .to_string(),
+                },
                 yield_force: pick(&fy),
                 ductility: pick(&mu),
                 hysteretic_energy: pick(&eh),
@@ -618,6 +669,66 @@ fn storey_title(i: &StoreyInfo) -> String {
         ),
         None => format!("storey {} ({})", i.storey + 1, i.model),
     }
+}
+
+/// The loop of every isolator: its force against its displacement (storey 1), with its clearance.
+fn isolators(d: &RunData) -> Option<Figure> {
+    let panels: Vec<Panel> = (0..d.buildings.len())
+        .filter_map(|b| {
+            let iso = &d.summary["buildings"][b]["isolator"];
+            let model = iso["model"].as_str()?;
+            let u = drift(d, b, 0);
+            let f = d.buildings[b].storey_shear[0].clone();
+            let mut p = Panel::new(
+                format!(
+                    "{}: {model} isolator, peak displacement {}",
+                    d.buildings[b].name,
+                    si(iso["peak_displacement"].as_f64().unwrap_or(0.0), "m")
+                ),
+                Quantity::new("isolator displacement", "m"),
+                Quantity::new("isolator force", "N"),
+            );
+            p.x_zero = true;
+            p.y_zero = true;
+            let top = f.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+            p.series.push(Series::line(
+                "",
+                u,
+                f,
+                Style {
+                    width: 1.2,
+                    ..Style::nth(0)
+                },
+            ));
+            if let Some(c) = iso["clearance"].as_f64() {
+                for (k, x) in [c, -c].into_iter().enumerate() {
+                    let label = if k == 0 {
+                        format!("clearance \u{b1}{}", si(c, "m"))
+                    } else {
+                        String::new()
+                    };
+                    p.series.push(Series::line(
+                        label,
+                        vec![x, x],
+                        vec![-top, top],
+                        Style::reference(),
+                    ));
+                }
+            }
+            Some(p)
+        })
+        .collect();
+    (!panels.is_empty()).then(|| Figure {
+        id: "isolators".into(),
+        title: "Isolator force against displacement".into(),
+        subtitle: format!(
+            "{}; displacement of the base slab relative to the ground; force: the isolator's restoring force",
+            d.subtitle
+        ),
+        panels,
+        columns: 1,
+        plot: (620.0, 380.0),
+    })
 }
 
 /// The force-drift loop of the most strained storey: the largest ductility over every building, or, with
