@@ -76,6 +76,33 @@ def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
     assert h.contact_floors == {"left|right": [(1, 1)]}
 
 
+def test_walls_devices_and_isolators_match_the_command_line(tmp_path):
+    # The bridge: two abutments (walls), two joints, two restrainers, three decks on bearings.
+    o = cli("run", "examples/bridge-three-span.toml", "--out", str(tmp_path / "out"), "-q", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = json.loads(o.stdout)
+    os.chdir(ROOT)
+    r = pounding.run("examples/bridge-three-span.toml")
+    assert r.summary == expected
+    assert [d["name"] for d in r.summary["devices"]] == ["restrainer-1", "restrainer-2"]
+    assert r.summary["buildings"][0]["isolator"]["model"] == "bilinear"
+    header = (tmp_path / "out" / "response.csv").read_text().splitlines()[0].split(",")
+    resp = np.loadtxt(tmp_path / "out" / "response.csv", delimiter=",", skiprows=1)
+    h = r.histories
+    k = header.index("abutment-west_floor1_force_N")
+    assert np.array_equal(h.wall_force["abutment-west"][:, 0], resp[:, k])
+    k = header.index("restrainer-2_floors1-1_force_N")
+    assert np.array_equal(h.device_force["restrainer-2"][:, 0], resp[:, k])
+    # A restrainer only pulls (negative: it resists the opening).
+    assert h.device_force["restrainer-2"].max() <= 0.0 < -h.device_force["restrainer-2"].min()
+    assert h.wall_floors == {"abutment-west": [1], "abutment-east": [1]}
+    # Impacts on a wall: its name, 0 for the wall's side (blank in impacts.csv), and the layer.
+    walls = r.impacts["contact"] == "abutment-west"
+    assert walls.sum() == r.summary["walls"][0]["impacts"] > 0
+    assert (r.impacts["floor_left"][walls] == 0).all() and (r.impacts["floor_right"][walls] == 1).all()
+    assert set(r.impacts["layer"]) == {"direct"}
+
+
 def test_histories_close_the_energy_balance(base):
     h = pounding.run(base).histories
     e = h.energy
