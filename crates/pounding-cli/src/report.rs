@@ -195,6 +195,39 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             ),
         );
     }
+    for b in s["buildings"].as_array().into_iter().flatten() {
+        let iso = &b["isolator"];
+        if let Some(model) = iso["model"].as_str() {
+            let clearance = match (&iso["clearance"], &iso["exceeds_clearance"]) {
+                (Value::Number(c), Value::Bool(true)) => {
+                    format!(" against a clearance of {c} m: EXCEEDED")
+                }
+                (Value::Number(c), _) => format!(" against a clearance of {c} m"),
+                _ => String::new(),
+            };
+            dl(
+                &mut h,
+                &format!("isolator of {}", b["name"].as_str().unwrap_or("")),
+                format!(
+                    "{}, peak displacement {} m{clearance}",
+                    e(model),
+                    n(&iso["peak_displacement"])
+                ),
+            );
+        }
+    }
+    for w in s["walls"].as_array().into_iter().flatten() {
+        dl(
+            &mut h,
+            &format!("wall {}", w["name"].as_str().unwrap_or("")),
+            format!(
+                "{} impacts, peak force {} N, dissipated {} J",
+                w["impacts"],
+                n(&w["peak_force"]),
+                n(&w["dissipated_energy"])
+            ),
+        );
+    }
     for c in s["contacts"].as_array().into_iter().flatten() {
         dl(
             &mut h,
@@ -370,16 +403,32 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
 
     // Contacts and energy.
     h.push_str("\n<h2 id=\"contacts\">Contacts and energy</h2>");
-    let rows: Vec<Vec<String>> = s["contacts"]
-        .as_array()
+    let list = |key: &str| s[key].as_array().cloned().unwrap_or_default();
+    let rows: Vec<Vec<String>> = list("contacts")
+        .iter()
+        .map(|c| (between(c), c))
+        .chain(list("walls").iter().map(|w| {
+            (
+                format!(
+                    "wall {} ({} of {})",
+                    w["name"].as_str().unwrap_or(""),
+                    w["side"].as_str().unwrap_or(""),
+                    w["facing"].as_str().unwrap_or("")
+                ),
+                w,
+            )
+        }))
+        .collect::<Vec<_>>()
         .into_iter()
-        .flatten()
-        .map(|c| {
+        .map(|(label, c)| {
             let floors: Vec<String> = c["floors"]
                 .as_array()
                 .into_iter()
                 .flatten()
-                .map(|p| format!("{}-{}", p[0], p[1]))
+                .map(|p| match p.as_array() {
+                    Some(p) => format!("{}-{}", p[0], p[1]),
+                    None => p.to_string(),
+                })
                 .collect();
             let param = match &c["damping_parameter"] {
                 Value::Object(p) if p.contains_key("value") => format!(
@@ -392,18 +441,35 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 }
                 _ => "set per impact".into(),
             };
+            let opening = c["max_opening"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter_map(Value::as_f64)
+                .fold(0.0, f64::max);
+            let seat = match (&c["seat"], &c["unseated"]) {
+                (Value::Number(x), Value::Bool(true)) => format!("{x}: UNSEATED"),
+                (Value::Number(x), _) => format!("{x}: seated"),
+                _ => "–".into(),
+            };
+            let impacts = match c["consumed"].as_u64() {
+                Some(k) => format!("{} (bumper consumed {k})", c["impacts"]),
+                None => c["impacts"].to_string(),
+            };
             vec![
-                e(&between(c)),
+                e(&label),
                 n(&c["gap"]),
                 floors.join(", "),
                 e(c["model"].as_str().unwrap_or("")),
                 n(&c["e"]),
                 format!("{} (n = {})", n(&c["stiffness"]), n(&c["exponent"])),
                 param,
-                c["impacts"].to_string(),
+                impacts,
                 n(&c["peak_force"]),
                 n(&c["max_penetration"]),
                 n(&c["dissipated_energy"]),
+                crate::output::fmt_sig(opening, 6),
+                seat,
             ]
         })
         .collect();
@@ -423,9 +489,66 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             "peak force (N)",
             "max penetration (m)",
             "dissipated (J)",
+            "largest opening (m)",
+            "seat (m)",
         ],
         &rows,
     );
+    let devices: Vec<Vec<String>> = list("devices")
+        .iter()
+        .map(|d| {
+            let pairs: Vec<String> = d["floors"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .map(|p| format!("{}-{}", p[0], p[1]))
+                .collect();
+            let peaks = |key: &str| {
+                d[key]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                    .map(n)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            vec![
+                e(d["name"].as_str().unwrap_or("")),
+                e(&between(d)),
+                pairs.join(", "),
+                e(&d["law"]
+                    .as_object()
+                    .into_iter()
+                    .flatten()
+                    .map(|(k, v)| match v {
+                        Value::String(x) => x.clone(),
+                        _ => format!("{k} {}", n(v)),
+                    })
+                    .collect::<Vec<_>>()
+                    .join(", ")),
+                peaks("peak_force"),
+                peaks("max_closing"),
+                peaks("max_opening"),
+            ]
+        })
+        .collect();
+    if !devices.is_empty() {
+        table(
+            &mut h,
+            "devices",
+            "Devices (law: stiffness N/m, damping N s/m, slack m)",
+            &[
+                "device",
+                "between",
+                "floors",
+                "law",
+                "peak force (N)",
+                "largest closing (m)",
+                "largest opening (m)",
+            ],
+            &devices,
+        );
+    }
     let en = &s["energy"];
     table(
         &mut h,
@@ -515,9 +638,66 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             "duration (s)",
             "max penetration (m)",
             "dissipated (J)",
+            "largest opening (m)",
+            "seat (m)",
         ],
         &rows,
     );
+    let devices: Vec<Vec<String>> = list("devices")
+        .iter()
+        .map(|d| {
+            let pairs: Vec<String> = d["floors"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .map(|p| format!("{}-{}", p[0], p[1]))
+                .collect();
+            let peaks = |key: &str| {
+                d[key]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                    .map(n)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            vec![
+                e(d["name"].as_str().unwrap_or("")),
+                e(&between(d)),
+                pairs.join(", "),
+                e(&d["law"]
+                    .as_object()
+                    .into_iter()
+                    .flatten()
+                    .map(|(k, v)| match v {
+                        Value::String(x) => x.clone(),
+                        _ => format!("{k} {}", n(v)),
+                    })
+                    .collect::<Vec<_>>()
+                    .join(", ")),
+                peaks("peak_force"),
+                peaks("max_closing"),
+                peaks("max_opening"),
+            ]
+        })
+        .collect();
+    if !devices.is_empty() {
+        table(
+            &mut h,
+            "devices",
+            "Devices (law: stiffness N/m, damping N s/m, slack m)",
+            &[
+                "device",
+                "between",
+                "floors",
+                "law",
+                "peak force (N)",
+                "largest closing (m)",
+                "largest opening (m)",
+            ],
+            &devices,
+        );
+    }
     h.push_str("\n<footer><p class=\"meta\">Files: summary.json, response.csv, impacts.csv, energy.csv, scenario.toml (units in every column header).</p></footer>");
     h.push_str("\n</body>\n</html>\n");
     h

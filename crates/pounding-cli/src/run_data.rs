@@ -309,11 +309,7 @@ impl RunData {
         let mut device_columns = Vec::new();
         for d in list("devices") {
             let name = d["name"].as_str().unwrap_or_default().to_string();
-            let model = d["law"]
-                .as_object()
-                .and_then(|o| o.keys().next().cloned())
-                .unwrap_or_default()
-                .to_lowercase();
+            let model = d["law"]["model"].as_str().unwrap_or_default().to_string();
             let mut pairs = Vec::new();
             for pair in d["floors"].as_array().cloned().unwrap_or_default() {
                 let f = |i: usize| pair[i].as_u64().unwrap_or(0) as usize;

@@ -73,7 +73,7 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
             if let Some(iso) = st.isolator() {
                 out["isolator"] = json!({
                     "model": iso.model.name(),
-                    "law": serde_json::to_value(iso.model).unwrap_or(Value::Null),
+                    "law": flat_law(iso.model.name(), serde_json::to_value(iso.model).unwrap_or(Value::Null)),
                     "height": num(iso.height),
                     "damping_coefficient": num(iso.damping),
                     "clearance": iso.clearance.map_or(Value::Null, num),
@@ -146,7 +146,7 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "name": d.name,
                 "between": between,
                 "floors": d.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
-                "law": serde_json::to_value(d.law).unwrap_or(Value::Null),
+                "law": flat_law(d.law.name(), serde_json::to_value(d.law).unwrap_or(Value::Null)),
                 "peak_force": nums(&dr.peak_force),
                 "max_closing": nums(&dr.max_closing),
                 "max_opening": nums(&dr.max_opening),
@@ -231,6 +231,20 @@ fn first_null(v: &Value, path: &str) -> Option<String> {
             .find_map(|(k, x)| first_null(x, &format!("{path}.{k}"))),
         _ => None,
     }
+}
+
+/// A law serialised as `{"Variant": {fields}}`, flattened into `{"model": name, fields}`.
+fn flat_law(name: &str, v: Value) -> Value {
+    let mut out = serde_json::Map::new();
+    out.insert("model".into(), json!(name));
+    if let Value::Object(o) = v {
+        for (_, inner) in o {
+            if let Value::Object(fields) = inner {
+                out.extend(fields);
+            }
+        }
+    }
+    Value::Object(out)
 }
 
 /// The contact law, bumper, seat and totals of a link or a wall, into `v`.
