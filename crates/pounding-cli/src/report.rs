@@ -610,7 +610,11 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             vec![
                 (k + 1).to_string(),
                 e(&d.contacts[i.contact].name),
-                format!("{}-{}", i.floors.0, i.floors.1),
+                match i.floors {
+                    // A wall's side has no floor.
+                    (f, 0) | (0, f) => f.to_string(),
+                    (l, r) => format!("{l}-{r}"),
+                },
                 fmt_sig(i.time, 6),
                 fmt_sig(i.v_i, 4),
                 i.e_post.map_or("(not ended)".into(), |x| fmt_sig(x, 4)),
@@ -638,66 +642,9 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             "duration (s)",
             "max penetration (m)",
             "dissipated (J)",
-            "largest opening (m)",
-            "seat (m)",
         ],
         &rows,
     );
-    let devices: Vec<Vec<String>> = list("devices")
-        .iter()
-        .map(|d| {
-            let pairs: Vec<String> = d["floors"]
-                .as_array()
-                .into_iter()
-                .flatten()
-                .map(|p| format!("{}-{}", p[0], p[1]))
-                .collect();
-            let peaks = |key: &str| {
-                d[key]
-                    .as_array()
-                    .into_iter()
-                    .flatten()
-                    .map(n)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
-            vec![
-                e(d["name"].as_str().unwrap_or("")),
-                e(&between(d)),
-                pairs.join(", "),
-                e(&d["law"]
-                    .as_object()
-                    .into_iter()
-                    .flatten()
-                    .map(|(k, v)| match v {
-                        Value::String(x) => x.clone(),
-                        _ => format!("{k} {}", n(v)),
-                    })
-                    .collect::<Vec<_>>()
-                    .join(", ")),
-                peaks("peak_force"),
-                peaks("max_closing"),
-                peaks("max_opening"),
-            ]
-        })
-        .collect();
-    if !devices.is_empty() {
-        table(
-            &mut h,
-            "devices",
-            "Devices (law: stiffness N/m, damping N s/m, slack m)",
-            &[
-                "device",
-                "between",
-                "floors",
-                "law",
-                "peak force (N)",
-                "largest closing (m)",
-                "largest opening (m)",
-            ],
-            &devices,
-        );
-    }
     h.push_str("\n<footer><p class=\"meta\">Files: summary.json, response.csv, impacts.csv, energy.csv, scenario.toml (units in every column header).</p></footer>");
     h.push_str("\n</body>\n</html>\n");
     h

@@ -136,14 +136,7 @@ impl Scenario {
             .ok_or_else(|| Error::Choice {
                 name: "between",
                 value: format!("{name:?}"),
-                allowed: format!(
-                    "one of the buildings: {}",
-                    self.buildings
-                        .iter()
-                        .map(|b| format!("{:?}", b.name))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ),
+                allowed: self.names(),
             })
     }
 

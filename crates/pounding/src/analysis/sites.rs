@@ -449,7 +449,8 @@ impl Scenario {
             })
     }
 
-    fn names(&self) -> String {
+    /// "one of the buildings: ..." for messages.
+    pub(super) fn names(&self) -> String {
         format!(
             "one of the buildings: {}",
             self.buildings

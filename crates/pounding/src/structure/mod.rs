@@ -132,11 +132,7 @@ impl ShearBuilding {
         let (modes, _sweeps) = solve_modes(&masses, &stiffnesses);
         let n_storeys = masses.len();
         let w = &modes.omega;
-        let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
-        let rayleigh = (
-            2.0 * damping_ratio * w1 * w2 / (w1 + w2),
-            2.0 * damping_ratio / (w1 + w2),
-        );
+        let rayleigh = rayleigh_of(w, damping_ratio);
         // Masses and stiffnesses whose ratios leave the range of f64 give modes that are not numbers.
         let finite = |x: &f64| x.is_finite();
         if !(w.iter().all(|w| w.is_finite() && *w > 0.0)
@@ -201,13 +197,7 @@ impl ShearBuilding {
         b.rayleigh = if above.0.is_empty() {
             (0.0, 0.0)
         } else {
-            let (modes, _) = solve_modes(&above.0, &above.1);
-            let w = &modes.omega;
-            let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
-            (
-                2.0 * damping_ratio * w1 * w2 / (w1 + w2),
-                2.0 * damping_ratio / (w1 + w2),
-            )
+            rayleigh_of(&solve_modes(&above.0, &above.1).0.omega, damping_ratio)
         };
         b.isolator = Some(isolator);
         Ok(b)
@@ -332,6 +322,13 @@ impl ShearBuilding {
         let (a0, a1) = self.rayleigh();
         a0 / (2.0 * w) + a1 * w / 2.0
     }
+}
+
+/// Rayleigh coefficients `(a0, a1)` giving `zeta` on the first two of the circular frequencies `w` (rad/s,
+/// lowest first; the first alone if there is one): Chopra, eq 11.4.9.
+fn rayleigh_of(w: &[f64], zeta: f64) -> (f64, f64) {
+    let (w1, w2) = (w[0], *w.get(1).unwrap_or(&w[0]));
+    (2.0 * zeta * w1 * w2 / (w1 + w2), 2.0 * zeta / (w1 + w2))
 }
 
 /// Natural modes of the shear building with these floor masses and storey stiffnesses (same length, at
