@@ -4,8 +4,9 @@
 use serde_json::Value;
 
 /// `(column, value)` pairs of one run's summary, with units in the column names: the record's PGA, each
-/// building's largest floor displacement and storey drift ratio, each contact's impacts, peak force and largest
-/// penetration, the energy balance error and the integration steps.
+/// building's largest floor displacement and storey drift ratio (and its isolator's displacement), each
+/// contact's and wall's impacts, peak force and largest penetration, the energy balance error and the
+/// integration steps.
 pub fn headline(summary: &Value) -> Vec<(String, Value)> {
     let mut row = vec![("pga_m_per_s2".to_string(), summary["record"]["pga"].clone())];
     let max = |v: &Value| {
@@ -26,15 +27,24 @@ pub fn headline(summary: &Value) -> Vec<(String, Value)> {
             format!("{name}_peak_drift_ratio"),
             max(&b["peak_drift_ratio"]),
         ));
+        if b["isolator"].is_object() {
+            row.push((
+                format!("{name}_isolator_displacement_m"),
+                b["isolator"]["peak_displacement"].clone(),
+            ));
+        }
     }
-    for c in summary["contacts"].as_array().into_iter().flatten() {
+    let contacts = summary["contacts"].as_array().into_iter().flatten();
+    let walls = summary["walls"].as_array().into_iter().flatten();
+    for c in contacts.chain(walls) {
         let pair: Vec<&str> = c["between"]
             .as_array()
             .into_iter()
             .flatten()
             .filter_map(Value::as_str)
             .collect();
-        let name = pair.join("|");
+        // A wall by its name.
+        let name = c["name"].as_str().map_or(pair.join("|"), String::from);
         row.push((format!("{name}_impacts"), c["impacts"].clone()));
         row.push((format!("{name}_peak_force_N"), c["peak_force"].clone()));
         row.push((
