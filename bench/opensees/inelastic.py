@@ -472,16 +472,10 @@ def summarise(scn: dict, res: dict, contact: bool) -> dict:
 # --------------------------------------------------------------------------
 # Exact linear solution (no contact)
 # --------------------------------------------------------------------------
-def exact_linear(b: dict, gm, t_ends: list[float], h: float = 1e-5) -> dict:
-    """Linear MDOF M u'' + C u' + K u = -M 1 a_g, C = a0 M + a1 K, at rest at
-    t = 0, a_g piecewise linear through the samples and 0 after the record:
-    exact propagation of [u, u', a_g, a_g'] on a grid h. Returns per window end
-    the peaks of |u| and |drift| (on the grid) and u at the end."""
-    gm_dt, values, factor, rec_T = gm
-    ag = [factor * v for v in values]
-    M, K = matrices(b)
-    ray = rayleigh(b)
-    C = ray["a0"] * M + ray["a1"] * K
+def propagator(M, C, K, gm_dt: float, h: float) -> np.ndarray:
+    """The exact propagators over h, 2h, ..., gm_dt of the state [u, u', a_g, a_g'] of
+    M u'' + C u' + K u = -M 1 a_g with a_g linear in time (a_g' constant): shape
+    (gm_dt / h, 2n + 2, 2n + 2), the last one over a whole sample interval."""
     n = len(M)
     Minv = np.linalg.inv(M)
     A = np.zeros((2 * n + 2, 2 * n + 2))
@@ -497,6 +491,21 @@ def exact_linear(b: dict, gm, t_ends: list[float], h: float = 1e-5) -> dict:
     for i in range(nsub):
         p = phi @ p
         powers[i] = p
+    return powers
+
+
+def exact_linear(b: dict, gm, t_ends: list[float], h: float = 1e-5) -> dict:
+    """Linear MDOF M u'' + C u' + K u = -M 1 a_g, C = a0 M + a1 K, at rest at
+    t = 0, a_g piecewise linear through the samples and 0 after the record:
+    exact propagation of [u, u', a_g, a_g'] on a grid h. Returns per window end
+    the peaks of |u| and |drift| (on the grid) and u at the end."""
+    gm_dt, values, factor, rec_T = gm
+    ag = [factor * v for v in values]
+    M, K = matrices(b)
+    ray = rayleigh(b)
+    C = ray["a0"] * M + ray["a1"] * K
+    n = len(M)
+    powers = propagator(M, C, K, gm_dt, h)
     rows = powers[:, :n, :]
     D = np.eye(n) - np.eye(n, k=-1)  # drift_j = u_j - u_{j-1}
     z = np.zeros(2 * n + 2)

@@ -7,7 +7,7 @@ use crate::output::{fmt_num, fmt_sig, write_figures};
 use crate::run_data::RunData;
 use crate::scenario::load;
 use crate::CliError;
-use pounding::analysis::{Bumper, Device, DeviceEnds, Results, Scenario, Side, Site};
+use pounding::analysis::{Bumper, Device, DeviceEnds, Results, Scenario};
 use pounding::element::{DeviceLaw, StoreyLaw};
 use std::fmt::Write as _;
 use std::io::IsTerminal;
@@ -517,7 +517,10 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
         "time_s,contact,floor_left,floor_right,layer,v_i_m_per_s,e_post,peak_force_N,time_of_peak_force_s,duration_s,dissipated_energy_J,max_penetration_m,ended,resting\n",
     );
     for i in &r.impacts {
-        let (fl, fr) = impact_floors(s, i.site);
+        // Blank on a wall's side.
+        let floor = |f: Option<usize>| f.map_or(String::new(), |f| f.to_string());
+        let (fl, fr) = s.site_sides(i.site);
+        let (fl, fr) = (floor(fl), floor(fr));
         let _ = writeln!(
             out,
             "{:e},{},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{}",
@@ -538,17 +541,6 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
         );
     }
     out
-}
-
-/// The floors of an impact's two sides, as impacts.csv shows them: blank on a wall's side.
-pub(crate) fn impact_floors(s: &Scenario, site: Site) -> (String, String) {
-    match site {
-        Site::Link { floors, .. } => (floors.0.to_string(), floors.1.to_string()),
-        Site::Wall { wall, floor } => match s.walls()[wall].side {
-            Side::Right => (floor.to_string(), String::new()),
-            Side::Left => (String::new(), floor.to_string()),
-        },
-    }
 }
 
 fn energy_csv(r: &Results) -> String {

@@ -2,7 +2,7 @@
 //! the store). The Python package `pounding` (python/pounding) wraps it in numpy arrays and dicts; scenarios
 //! cross as JSON text, so that a dict is validated by exactly the schema a TOML file is.
 
-use pounding::analysis::{Results, RunOptions, Scenario, Side, Site};
+use pounding::analysis::{Results, RunOptions, Scenario};
 use pounding_study::input::{dict_message, from_value, Loaded, ScenarioFile};
 use pounding_study::store::{Finished, Store, StoreError};
 use pounding_study::sweep::{self, Prepared, Progress};
@@ -96,12 +96,9 @@ fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'p
     let floors: Vec<(usize, usize)> = r
         .impacts
         .iter()
-        .map(|i| match i.site {
-            Site::Link { floors, .. } => floors,
-            Site::Wall { wall, floor } => match s.walls()[wall].side {
-                Side::Right => (floor, 0),
-                Side::Left => (0, floor),
-            },
+        .map(|i| {
+            let (l, r) = s.site_sides(i.site);
+            (l.unwrap_or(0), r.unwrap_or(0))
         })
         .collect();
     d.set_item("floor_left", floors.iter().map(|f| f.0).collect::<Vec<_>>())?;

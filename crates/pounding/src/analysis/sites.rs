@@ -426,11 +426,15 @@ impl Scenario {
         }
     }
 
-    /// The floors of a site: `i-j` for a link's pair, `i` for a wall.
-    pub fn site_floors(site: Site) -> String {
+    /// The floor on each side of a site, left then right, from 1: a link's pair, or a wall's floor with
+    /// `None` on the wall's side.
+    pub fn site_sides(&self, site: Site) -> (Option<usize>, Option<usize>) {
         match site {
-            Site::Link { floors, .. } => format!("{}-{}", floors.0, floors.1),
-            Site::Wall { floor, .. } => floor.to_string(),
+            Site::Link { floors, .. } => (Some(floors.0), Some(floors.1)),
+            Site::Wall { wall, floor } => match self.walls[wall].side {
+                Side::Right => (Some(floor), None),
+                Side::Left => (None, Some(floor)),
+            },
         }
     }
 
