@@ -45,7 +45,7 @@ pub enum Command {
         #[command(subcommand)]
         cmd: RecordCmd,
     },
-    /// Reproductions of the seed paper's tables.
+    /// Reproductions of the tables of Papi & Toopchi-Nezhad (2022).
     Paper {
         #[command(subcommand)]
         table: PaperTable,
@@ -53,6 +53,9 @@ pub enum Command {
 }
 
 #[derive(Args, Debug)]
+#[command(
+    after_help = "Files in --out: separation.json (what --json prints); with --plots: separation.svg (each rule's estimate against the required gap)."
+)]
 pub struct SeparationArgs {
     /// Scenario file (TOML); its contacts say which floors face each other (see docs/separation.md).
     pub scenario: std::path::PathBuf,
@@ -68,16 +71,18 @@ pub struct SeparationArgs {
     pub json: bool,
     /// Figure: each rule's estimate against the required gap.
     #[command(flatten)]
-    pub plots: PlotArgs,
+    pub out: OutArgs,
 }
 
 #[derive(Args, Debug)]
+#[command(
+    after_help = "Files in --out: study.sqlite, runs.csv, fragility.csv; with --plots: ida-curves.svg (demand against intensity per record and limit state), fragility.svg (the fitted curves with the observed fractions)."
+)]
 pub struct IdaArgs {
     #[command(flatten)]
     pub sweep: SweepArgs,
-    /// Figures: the IDA curves and the fragility functions with the observed fractions.
     #[command(flatten)]
-    pub plots: PlotArgs,
+    pub figures: FigureArgs,
 }
 
 #[derive(Args, Debug)]
@@ -97,6 +102,7 @@ pub struct SweepArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(after_help = "FILES_OF_RUN")]
 pub struct RunArgs {
     /// Scenario file (TOML): ground motion, buildings left to right, contacts. See examples/.
     pub scenario: std::path::PathBuf,
@@ -112,14 +118,8 @@ pub struct RunArgs {
     /// Print the summary as JSON on stdout.
     #[arg(long)]
     pub json: bool,
-    /// Also write the figures (SVG) into the output folder: displacement, envelopes (peaks over height),
-    /// hysteresis (storey shear against drift; hysteresis-storeys with 2+ inelastic storeys), and with
-    /// contacts contact-force, impact-restitution (once an impact ended), relative-displacement; energy.
-    #[arg(long)]
-    pub plots: bool,
-    /// Also write each figure as PNG (with --plots).
-    #[arg(long, requires = "plots")]
-    pub png: bool,
+    #[command(flatten)]
+    pub figures: FigureArgs,
     /// Also write report.html into the output folder (see `pounding report`).
     #[arg(long)]
     pub report: bool,
@@ -134,13 +134,24 @@ pub struct ReportArgs {
     pub out: Option<std::path::PathBuf>,
 }
 
-/// Figures of a command: a folder for SVG files, and PNG copies on request.
+/// Where a command writes its files: a folder, and figures in it on request.
 #[derive(Args, Debug, Clone)]
-pub struct PlotArgs {
-    /// Write the figures as SVG into this folder (created if missing).
+pub struct OutArgs {
+    /// Folder for the command's files, created if missing: its result as JSON (what --json prints), the
+    /// time history of impact and drop as history.csv, and with --plots the figures.
     #[arg(long, value_name = "DIR")]
-    pub plots: Option<std::path::PathBuf>,
-    /// Also write each figure as PNG (with --plots).
+    pub out: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub figures: FigureArgs,
+}
+
+/// Figures on request, into the command's `--out` folder.
+#[derive(Args, Debug, Clone, Copy)]
+pub struct FigureArgs {
+    /// Also write the figures (SVG) into the --out folder (see docs/figures.md).
+    #[arg(long, requires = "out")]
+    pub plots: bool,
+    /// Also write each figure as PNG (with --plots; in a build with `--features png`).
     #[arg(long, requires = "plots")]
     pub png: bool,
 }
@@ -210,6 +221,9 @@ pub struct SynthArgs {
 
 /// A record and the oscillators of its spectrum.
 #[derive(Args, Debug)]
+#[command(
+    after_help = "Files in --out: spectrum.json (what --json prints); with --plots: record.svg (acceleration, velocity, displacement), spectrum.svg (SD, PSV, PSA)."
+)]
 #[command(allow_negative_numbers = true)]
 pub struct SpectrumArgs {
     #[command(flatten)]
@@ -220,9 +234,8 @@ pub struct SpectrumArgs {
     /// Natural periods, s, comma-separated [default: 100 periods from 0.02 to 10 s, evenly spaced in log].
     #[arg(long, value_delimiter = ',')]
     pub periods: Option<Vec<f64>>,
-    /// Figures: the record (acceleration, velocity, displacement) and its spectra.
     #[command(flatten)]
-    pub plots: PlotArgs,
+    pub out: OutArgs,
 }
 
 /// Where a ground motion comes from and how to read it.
@@ -268,15 +281,17 @@ pub enum UnitsArg {
 #[derive(Subcommand, Debug)]
 pub enum PaperTable {
     /// Table 1: mean |e_pre - e_post| / e_pre * 100 of every model, with the published figures beside.
+    #[command(
+        after_help = "Files in --out: table1.json (what --json prints); with --plots: table1-e-post.svg (delivered against requested e, with the ideal line), table1-error.svg (the error against e)."
+    )]
     Table1 {
         /// Print one JSON object on stdout.
         #[arg(long)]
         json: bool,
-        /// Figures: delivered against requested e (with the ideal line), and the error against e.
         #[command(flatten)]
-        plots: PlotArgs,
+        out: OutArgs,
     },
-    /// Peak force of every model for the documented concrete ball-drop example (the seed's Table 2 needs
+    /// Peak force of every model for the documented concrete ball-drop example (the paper's Table 2 needs
     /// experimental inputs it does not give).
     Table2 {
         /// Print one JSON object on stdout.
@@ -300,7 +315,7 @@ pub struct ModelArgs {
     /// Damping: the published formula, or the exact value that delivers e.
     #[arg(long, value_enum, default_value_t = DampingArg::Formula)]
     pub damping: DampingArg,
-    /// alpha of papi: a number >= 0, eq8 (the seed's eq (8), as printed) or calibrate [default: calibrate].
+    /// alpha of papi: a number >= 0, eq8 (eq (8) of Papi & Toopchi-Nezhad (2022), as printed) or calibrate [default: calibrate].
     #[arg(long, value_parser = parse_alpha)]
     pub alpha: Option<AlphaRule>,
     /// Reading of papi's force law.
@@ -349,6 +364,9 @@ pub struct BodiesArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(
+    after_help = "Files in --out: impact.json (what --json prints), history.csv (t, penetration, rate, force at every step); with --plots: impact-force-time.svg, impact-force-penetration.svg."
+)]
 #[command(allow_negative_numbers = true)]
 pub struct ImpactArgs {
     #[command(flatten)]
@@ -358,18 +376,17 @@ pub struct ImpactArgs {
     pub k: f64,
     #[command(flatten)]
     pub bodies: BodiesArgs,
-    /// Write the time history (t, penetration, rate, force) to this CSV file.
-    #[arg(long, value_name = "FILE.csv")]
-    pub history: Option<std::path::PathBuf>,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
-    /// Figures: force against time and force against penetration.
     #[command(flatten)]
-    pub plots: PlotArgs,
+    pub out: OutArgs,
 }
 
 #[derive(Args, Debug)]
+#[command(
+    after_help = "Files in --out: compare.json (what --json prints); with --plots: compare-force-time.svg, compare-force-penetration.svg (one curve per model)."
+)]
 #[command(allow_negative_numbers = true)]
 pub struct CompareArgs {
     /// Contact models, comma-separated (see `pounding models`).
@@ -391,9 +408,8 @@ pub struct CompareArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
-    /// Figures: the models' force against time and force against penetration, overlaid.
     #[command(flatten)]
-    pub plots: PlotArgs,
+    pub out: OutArgs,
 }
 
 #[derive(Args, Debug)]
@@ -420,6 +436,9 @@ pub struct CalibrateArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(
+    after_help = "Files in --out: drop.json (what --json prints), history.csv (t, penetration, rate, force at every step); with --plots: drop-force-time.svg, drop-force-penetration.svg."
+)]
 #[command(allow_negative_numbers = true)]
 pub struct DropArgs {
     #[command(flatten)]
@@ -439,15 +458,11 @@ pub struct DropArgs {
     /// Density of the ball, kg/m^3 (concrete).
     #[arg(long, default_value_t = 2400.0)]
     pub density: f64,
-    /// Write the time history (t, penetration, rate, force) to this CSV file.
-    #[arg(long, value_name = "FILE.csv")]
-    pub history: Option<std::path::PathBuf>,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
-    /// Figures: force against time and force against penetration.
     #[command(flatten)]
-    pub plots: PlotArgs,
+    pub out: OutArgs,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -498,7 +513,11 @@ impl From<TensionArg> for Tension {
 pub fn parse_model(s: &str) -> Result<Model, String> {
     Model::from_name(s).ok_or_else(|| {
         let names: Vec<_> = Model::all().map(Model::name).collect();
-        format!("unknown model; allowed: {}", names.join(", "))
+        format!(
+            "unknown model{}; allowed: {}",
+            pounding::words::did_you_mean(s, names.iter().copied()),
+            names.join(", ")
+        )
     })
 }
 

@@ -1,10 +1,12 @@
 //! The commands: validated inputs in, library calls, reports out.
 
 use crate::args::{
-    CalibrateArgs, Command, CompareArgs, DropArgs, FormatArg, ImpactArgs, ModelArgs, PaperTable,
-    PlotArgs, RecordArgs, RecordCmd, UnitsArg,
+    CalibrateArgs, Command, CompareArgs, DropArgs, FormatArg, ImpactArgs, ModelArgs, OutArgs,
+    PaperTable, RecordArgs, RecordCmd, UnitsArg,
 };
-use crate::output::{fmt_num, fmt_sig, history_csv, num, write_atomic, write_figures, Report};
+use crate::output::{
+    fmt_num, fmt_sig, history_csv, num, render_figures, write_atomic, write_files, Report,
+};
 use crate::plot::figures::{self, Curve, ForceHistory};
 use crate::CliError;
 use pounding::contact::{
@@ -40,7 +42,7 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
             cmd: RecordCmd::Synth(a),
         } => record_synth(&a),
         Command::Paper { table } => match table {
-            PaperTable::Table1 { json, plots } => table1(json, &plots),
+            PaperTable::Table1 { json, out } => table1(json, &out),
             PaperTable::Table2 { json } => table2(json),
         },
     }
@@ -64,12 +66,21 @@ pub fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
 }
 
 /// One line describing a contact model and its damping: `papi, k = 2e9 N/m^1, e = 0.65, ...`.
+/// The unit of a contact stiffness of exponent `n`: `N/m`, `N/m^1.5`.
+pub fn stiffness_unit(n: f64) -> String {
+    if n == 1.0 {
+        "N/m".into()
+    } else {
+        format!("N/m^{}", fmt_num(n))
+    }
+}
+
 pub fn contact_label(s: &ContactModel, p: Option<DampingParameter>) -> String {
     let mut text = format!(
-        "{}, k = {} N/m^{}, e = {}",
+        "{}, k = {} {}, e = {}",
         s.model().name(),
         fmt_num(s.stiffness()),
-        fmt_num(s.exponent()),
+        stiffness_unit(s.exponent()),
         fmt_num(s.restitution())
     );
     if s.model().is_damped() {
@@ -166,41 +177,65 @@ fn results(rep: &mut Report, s: &ContactModel, r: &ImpactResult, exact_e: Option
         .add("steps", r.steps, "");
 }
 
-/// Fails early (before any work or output) if `--plots` names a file.
-pub fn check_plots(p: &PlotArgs) -> Result<(), CliError> {
-    match &p.plots {
+/// Fails early (before any work or output) if `--out` names a file or `--png` cannot be honoured.
+pub fn check_out(o: &OutArgs) -> Result<(), CliError> {
+    match &o.out {
         Some(dir) if dir.is_file() => Err(input(format!(
-            "--plots {} is a file; give a folder (it is created if missing)",
+            "--out {} is a file; give a folder (it is created if missing)",
             dir.display()
         ))),
-        _ => Ok(()),
+        _ => check_figures(&o.figures),
     }
 }
 
-/// Writes `figs` if `--plots` was given; prints the files unless `quiet`.
-pub fn save_figures(
-    p: &PlotArgs,
+/// Fails early if `--png` is asked of a build without PNG support.
+pub fn check_figures(f: &crate::args::FigureArgs) -> Result<(), CliError> {
+    if f.png && !cfg!(feature = "png") {
+        return Err(input(
+            "--png needs PNG support, which this build leaves out: build with `--features png` \
+             (cargo run --release --features png -- ...); the SVG figures need nothing",
+        ));
+    }
+    Ok(())
+}
+
+/// Writes a command's files into `--out`, if given: `name.json` holding `json`, the `extra` files, and the
+/// figures with --plots, each file atomically, all rendered before the first is written. Prints the folder
+/// and the files unless `quiet`.
+pub fn save_out(
+    o: &OutArgs,
+    (name, json): (&str, &Value),
+    extra: Vec<(String, Vec<u8>)>,
     figs: &[crate::plot::Figure],
     quiet: bool,
 ) -> Result<(), CliError> {
-    if let Some(dir) = &p.plots {
-        let names = write_figures(dir, figs, p.png)?;
-        if !quiet {
-            println!("\nwrote {}: {}", dir.display(), names.join(", "));
-        }
+    let Some(dir) = &o.out else {
+        return Ok(());
+    };
+    let mut files = vec![(
+        format!("{name}.json"),
+        (serde_json::to_string_pretty(json).expect("JSON") + "\n").into_bytes(),
+    )];
+    files.extend(extra);
+    if o.figures.plots {
+        files.extend(render_figures(figs, o.figures.png)?);
+    }
+    let names = write_files(dir, files)?;
+    if !quiet {
+        println!("\nwrote {}: {}", dir.display(), names.join(", "));
     }
     Ok(())
 }
 
 /// The figures of one integrated impact, if `--plots` asks for them.
 fn impact_figures(
-    plots: &PlotArgs,
+    plots: bool,
     (prefix, title): (&str, &str),
     s: &ContactModel,
     r: &ImpactResult,
     inputs: &str,
 ) -> Vec<crate::plot::Figure> {
-    let (Some(_), Some(h)) = (&plots.plots, r.history.as_ref()) else {
+    let (true, Some(h)) = (plots, r.history.as_ref()) else {
         return Vec::new();
     };
     let subtitle = format!(
@@ -222,41 +257,42 @@ fn impact_figures(
     )
 }
 
-fn save_history(path: Option<&Path>, r: &ImpactResult) -> Result<(), CliError> {
-    if let (Some(path), Some(h)) = (path, r.history.as_ref()) {
-        write_atomic(path, history_csv(h).as_bytes())
-            .map_err(|e| CliError::Io(format!("cannot write {}: {e}", path.display())))?;
-    }
-    Ok(())
+/// The impact's time history as the file `history.csv`, if it was kept.
+fn history_file(r: &ImpactResult) -> Vec<(String, Vec<u8>)> {
+    r.history
+        .as_ref()
+        .map(|h| ("history.csv".to_string(), history_csv(h).into_bytes()))
+        .into_iter()
+        .collect()
 }
 
-/// The two bodies in one line: `m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s`.
+/// The two bodies in one line: `m1 = 100000 kg, m2 rigid, v = 1 m/s`.
 fn bodies_text(b: &crate::args::BodiesArgs) -> String {
     format!(
-        "m1 = {} kg, m2 = {} kg, v = {} m/s",
+        "m1 = {} kg, {}, v = {} m/s",
         fmt_num(b.m1),
         m2_text(b.m2),
         fmt_num(b.v)
     )
 }
 
-/// `m2` as text: infinite is a rigid body (JSON: null).
+/// `m2` as text: `m2 = 3e5 kg`, or `m2 rigid` for an infinite mass (JSON: null).
 fn m2_text(m2: f64) -> String {
     if m2.is_infinite() {
-        "inf (rigid)".into()
+        "m2 rigid".into()
     } else {
-        fmt_num(m2)
+        format!("m2 = {} kg", fmt_num(m2))
     }
 }
 
 fn impact(a: &ImpactArgs) -> Result<(), CliError> {
-    check_plots(&a.plots)?;
+    check_out(&a.out)?;
     let bodies = TwoBodies::new(a.bodies.m1, a.bodies.m2, a.bodies.v)?;
     let s = contact(&a.model, a.k)?;
     let setup = bodies.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
-        history: a.history.is_some() || a.plots.plots.is_some(),
+        history: a.out.out.is_some(),
         ..ImpactOptions::default()
     };
     let r = simulate(&law, s.tension(), &setup, &opts)?;
@@ -266,7 +302,16 @@ fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     describe(&mut rep, &s, p);
     let b = a.bodies;
     rep.add("m1", num(b.m1), "kg")
-        .add_shown("m2", num(b.m2), m2_text(b.m2), "kg")
+        .add_shown(
+            "m2",
+            num(b.m2),
+            if b.m2.is_infinite() {
+                "rigid (infinite mass)".into()
+            } else {
+                fmt_num(b.m2)
+            },
+            if b.m2.is_infinite() { "" } else { "kg" },
+        )
         .add("v", num(b.v), "m/s")
         .add("effective_mass", num(setup.mass), "kg");
     results(&mut rep, &s, &r, exact_e);
@@ -274,10 +319,15 @@ fn impact(a: &ImpactArgs) -> Result<(), CliError> {
         .add("velocity_2_after", num(v2), "m/s");
     let inputs = bodies_text(&a.bodies);
     let title = format!("Impact ({})", s.model().name());
-    let figs = impact_figures(&a.plots, ("impact", &title), &s, &r, &inputs);
-    save_history(a.history.as_deref(), &r)?;
+    let figs = impact_figures(a.out.figures.plots, ("impact", &title), &s, &r, &inputs);
     rep.print(a.json);
-    save_figures(&a.plots, &figs, a.json)?;
+    save_out(
+        &a.out,
+        ("impact", &rep.json()),
+        history_file(&r),
+        &figs,
+        a.json,
+    )?;
     Ok(())
 }
 
@@ -318,7 +368,7 @@ fn calibrate(a: &CalibrateArgs) -> Result<(), CliError> {
 }
 
 fn drop(a: &DropArgs) -> Result<(), CliError> {
-    check_plots(&a.plots)?;
+    check_out(&a.out)?;
     let drop = BallDrop::new(a.radius, a.youngs_modulus, a.poisson, a.density, a.height)?;
     let n = a.model.n.unwrap_or(a.model.model.info().default_n);
     let s = contact(
@@ -328,7 +378,7 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
     let setup = drop.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
-        history: a.history.is_some() || a.plots.plots.is_some(),
+        history: a.out.out.is_some(),
         ..ImpactOptions::default()
     };
     let r = simulate(&law, s.tension(), &setup, &opts)?;
@@ -351,15 +401,20 @@ fn drop(a: &DropArgs) -> Result<(), CliError> {
         fmt_sig(setup.v_i, 6)
     );
     let title = format!("Ball drop ({})", s.model().name());
-    let figs = impact_figures(&a.plots, ("drop", &title), &s, &r, &inputs);
-    save_history(a.history.as_deref(), &r)?;
+    let figs = impact_figures(a.out.figures.plots, ("drop", &title), &s, &r, &inputs);
     rep.print(a.json);
-    save_figures(&a.plots, &figs, a.json)?;
+    save_out(
+        &a.out,
+        ("drop", &rep.json()),
+        history_file(&r),
+        &figs,
+        a.json,
+    )?;
     Ok(())
 }
 
 fn compare(a: &CompareArgs) -> Result<(), CliError> {
-    check_plots(&a.plots)?;
+    check_out(&a.out)?;
     let bodies = TwoBodies::new(a.bodies.m1, a.bodies.m2, a.bodies.v)?;
     if !(a.k.is_finite() && a.k > 0.0) {
         return Err(input(format!(
@@ -382,30 +437,28 @@ fn compare(a: &CompareArgs) -> Result<(), CliError> {
         runs.push((s, r));
     }
     let damping = damping_name(a.damping.into());
-    if a.json {
-        let rows: Vec<Value> = runs
-            .iter()
-            .map(|(s, r)| {
-                json!({
-                    "model": s.model().name(), "n": num(s.exponent()), "k": num(s.stiffness()),
-                    "e_post": num(r.e_post), "peak_force": num(r.peak_force),
-                    "time_of_peak_force": num(r.time_of_peak_force), "max_penetration": num(r.max_penetration),
-                    "contact_duration": num(r.contact_duration), "dissipated_energy": num(r.dissipated_energy),
-                })
-            })
-            .collect();
-        println!(
-            "{}",
+    let rows: Vec<Value> = runs
+        .iter()
+        .map(|(s, r)| {
             json!({
-                "e_pre": num(a.e), "damping": damping, "k_hertz": num(a.k), "m1": num(a.bodies.m1),
-                "m2": if a.bodies.m2.is_finite() { num(a.bodies.m2) } else { Value::Null }, "v": num(a.bodies.v),
-                "effective_mass": num(setup.mass),
-                "units": {"k": "N/m^n", "k_hertz": "N/m^1.5", "peak_force": "N", "time_of_peak_force": "s",
-                          "max_penetration": "m", "contact_duration": "s", "dissipated_energy": "J",
-                          "m1": "kg", "m2": "kg (null: rigid)", "v": "m/s", "effective_mass": "kg"},
-                "models": rows,
+                "model": s.model().name(), "n": num(s.exponent()), "k": num(s.stiffness()),
+                "e_post": num(r.e_post), "peak_force": num(r.peak_force),
+                "time_of_peak_force": num(r.time_of_peak_force), "max_penetration": num(r.max_penetration),
+                "contact_duration": num(r.contact_duration), "dissipated_energy": num(r.dissipated_energy),
             })
-        );
+        })
+        .collect();
+    let result = json!({
+        "e_pre": num(a.e), "damping": damping, "k_hertz": num(a.k), "m1": num(a.bodies.m1),
+        "m2": if a.bodies.m2.is_finite() { num(a.bodies.m2) } else { Value::Null }, "v": num(a.bodies.v),
+        "effective_mass": num(setup.mass),
+        "units": {"k": "N/m^n", "k_hertz": "N/m^1.5", "peak_force": "N", "time_of_peak_force": "s",
+                  "max_penetration": "m", "contact_duration": "s", "dissipated_energy": "J",
+                  "m1": "kg", "m2": "kg (null: rigid)", "v": "m/s", "effective_mass": "kg"},
+        "models": rows,
+    });
+    if a.json {
+        println!("{result}");
     } else {
         println!(
             "One impact: {}, e_pre = {}, damping {damping}; k_h = {} N/m^1.5",
@@ -441,7 +494,8 @@ fn compare(a: &CompareArgs) -> Result<(), CliError> {
             );
         }
     }
-    if a.plots.plots.is_some() {
+    let mut figs = Vec::new();
+    if a.out.figures.plots {
         let histories: Vec<ForceHistory> = runs
             .iter()
             .filter_map(|(s, r)| {
@@ -459,15 +513,14 @@ fn compare(a: &CompareArgs) -> Result<(), CliError> {
             fmt_num(a.e),
             fmt_num(a.k)
         );
-        let figs = figures::impact(
+        figs = figures::impact(
             "compare",
             "Contact models on one impact",
             &subtitle,
             &histories,
         );
-        save_figures(&a.plots, &figs, a.json)?;
     }
-    Ok(())
+    save_out(&a.out, ("compare", &result), Vec::new(), &figs, a.json)
 }
 
 fn models(json: bool) -> Result<(), CliError> {
@@ -503,7 +556,7 @@ fn models(json: bool) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Delivered e of every Table 1 variant on the grid e = 0.10, 0.11, ..., 1.00, in two groups: the seed's
+/// Delivered e of every Table 1 variant on the grid e = 0.10, 0.11, ..., 1.00, in two groups: the paper's
 /// models (those with published figures) and the other damped models.
 fn table1_curves() -> Result<Vec<(&'static str, Vec<Curve>)>, CliError> {
     let mut seed = Vec::new();
@@ -526,37 +579,35 @@ fn table1_curves() -> Result<Vec<(&'static str, Vec<Curve>)>, CliError> {
         }
     }
     Ok(vec![
-        ("The seed's models", seed),
+        ("Models of Papi & Toopchi-Nezhad (2022)", seed),
         ("Other damped models of the library", others),
     ])
 }
 
-fn table1(json: bool, plots: &PlotArgs) -> Result<(), CliError> {
-    check_plots(plots)?;
+fn table1(json: bool, out: &OutArgs) -> Result<(), CliError> {
+    check_out(out)?;
     let rows = pounding::paper::table1()?;
-    let figs = if plots.plots.is_some() {
+    let figs = if out.figures.plots {
         figures::table1(&table1_curves()?)
     } else {
         Vec::new()
     };
+    let result = json!({
+        "quantity": "mean |e_pre - e_post| / e_pre * 100, percent",
+        "protocol": "ideal single impacts, formula damping from e_pre; e_post by the exact relations \
+                     (event-located integration for jankowski); grids e = 0.1..1.0 step 0.1 and 0.10..1.00 step 0.01",
+        "rows": rows.iter().map(|r| json!({
+            "label": r.label, "model": r.model,
+            "grid_0.1": {"all": num(r.coarse_all), "mid": num(r.coarse_mid)},
+            "grid_0.01": {"all": num(r.fine_all), "mid": num(r.fine_mid)},
+            "published": r.published.map(|(a, m)| json!({"all": a, "mid": m})),
+        })).collect::<Vec<_>>(),
+    });
     if json {
-        println!(
-            "{}",
-            json!({
-                "quantity": "mean |e_pre - e_post| / e_pre * 100, percent",
-                "protocol": "ideal single impacts, formula damping from e_pre; e_post by the exact relations \
-                             (event-located integration for jankowski); grids e = 0.1..1.0 step 0.1 and 0.10..1.00 step 0.01",
-                "rows": rows.iter().map(|r| json!({
-                    "label": r.label, "model": r.model,
-                    "grid_0.1": {"all": num(r.coarse_all), "mid": num(r.coarse_mid)},
-                    "grid_0.01": {"all": num(r.fine_all), "mid": num(r.fine_mid)},
-                    "published": r.published.map(|(a, m)| json!({"all": a, "mid": m})),
-                })).collect::<Vec<_>>(),
-            })
-        );
-        return save_figures(plots, &figs, true);
+        println!("{result}");
+        return save_out(out, ("table1", &result), Vec::new(), &figs, true);
     }
-    println!("Seed Table 1: mean |e_pre - e_post| / e_pre * 100 (%) over 0.1 <= e <= 1 (all) and 0.5 <= e <= 0.8 (mid)");
+    println!("Papi & Toopchi-Nezhad (2022), Table 1: mean |e_pre - e_post| / e_pre * 100 (%) over 0.1 <= e <= 1 (all) and 0.5 <= e <= 0.8 (mid)");
     println!("Ideal single impacts with each model's published damping; e_post exact (integrated for Jankowski).\n");
     println!(
         "{:<48} {:>16} {:>16} {:>16}",
@@ -582,9 +633,9 @@ fn table1(json: bool, plots: &PlotArgs) -> Result<(), CliError> {
             pm
         );
     }
-    println!("\nThe seed's figures for Papi (3.68 / 0.68) are shown beside each of its variants.");
+    println!("\nThe paper's figures for Papi (3.68 / 0.68) are shown beside each of its variants.");
     println!("See docs/paper-reproduction.md for the protocol and the differences.");
-    save_figures(plots, &figs, false)
+    save_out(out, ("table1", &result), Vec::new(), &figs, false)
 }
 
 /// The documented concrete ball-drop example of `docs/paper-reproduction.md`.
@@ -689,7 +740,7 @@ fn table2(json: bool) -> Result<(), CliError> {
             (f.peak_force / hertz_peak - 1.0) * 100.0
         );
     }
-    println!("\nThe seed's Table 2 compares against an experiment whose inputs it does not give; see docs/paper-reproduction.md.");
+    println!("\nThe paper's Table 2 compares against an experiment whose inputs it does not give; see docs/paper-reproduction.md.");
     Ok(())
 }
 
@@ -762,7 +813,7 @@ fn separation(a: &crate::args::SeparationArgs) -> Result<(), CliError> {
         );
     }
     let label = a.scenario.display().to_string();
-    check_plots(&a.plots)?;
+    check_out(&a.out)?;
     let v =
         pounding_study::separation::report_message(&file.value, &label, &records, a.aligned_factor)
             .map_err(|m| input(m.replace("aligned_factor = ", "--aligned-factor ")))?;
@@ -770,10 +821,9 @@ fn separation(a: &crate::args::SeparationArgs) -> Result<(), CliError> {
         &v,
         &format!("{label}; {} record(s)", records.len().max(1)),
     );
-    save_figures(&a.plots, &[fig], true)?;
     if a.json {
         println!("{}", serde_json::to_string_pretty(&v).expect("JSON"));
-        return Ok(());
+        return save_out(&a.out, ("separation", &v), Vec::new(), &[fig], true);
     }
     let table = |pairs: &Value, pick: &dyn Fn(&Value) -> String| {
         for p in pairs.as_array().into_iter().flatten() {
@@ -836,7 +886,7 @@ fn separation(a: &crate::args::SeparationArgs) -> Result<(), CliError> {
             }
         }
     }
-    Ok(())
+    save_out(&a.out, ("separation", &v), Vec::new(), &[fig], false)
 }
 
 fn record_synth(a: &crate::args::SynthArgs) -> Result<(), CliError> {
@@ -900,7 +950,7 @@ fn default_periods() -> Vec<f64> {
 }
 
 fn record_spectrum(a: &crate::args::SpectrumArgs) -> Result<(), CliError> {
-    check_plots(&a.plots)?;
+    check_out(&a.out)?;
     let r = load_record(&a.record)?;
     let periods = a.periods.clone().unwrap_or_else(default_periods);
     let s = pounding::ground_motion::spectrum::spectrum(&r, a.damping, &periods)?;
@@ -916,19 +966,18 @@ fn record_spectrum(a: &crate::args::SpectrumArgs) -> Result<(), CliError> {
         ),
         crate::plot::analyses::spectrum(&s, &format!("Record {}", r.name())),
     ];
-    save_figures(&a.plots, &figs, true)?;
+    let result = json!({
+        "record": r.name(),
+        "damping": num(s.damping),
+        "periods": s.periods.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+        "sd": s.sd.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+        "psv": s.psv.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+        "psa": s.psa.iter().map(|x| num(*x)).collect::<Vec<_>>(),
+        "units": {"periods": "s", "sd": "m", "psv": "m/s", "psa": "m/s^2", "damping": "ratio"},
+    });
     if a.record.json {
-        let out = json!({
-            "record": r.name(),
-            "damping": num(s.damping),
-            "periods": s.periods.iter().map(|x| num(*x)).collect::<Vec<_>>(),
-            "sd": s.sd.iter().map(|x| num(*x)).collect::<Vec<_>>(),
-            "psv": s.psv.iter().map(|x| num(*x)).collect::<Vec<_>>(),
-            "psa": s.psa.iter().map(|x| num(*x)).collect::<Vec<_>>(),
-            "units": {"periods": "s", "sd": "m", "psv": "m/s", "psa": "m/s^2", "damping": "ratio"},
-        });
-        println!("{}", serde_json::to_string_pretty(&out).expect("JSON"));
-        return Ok(());
+        println!("{}", serde_json::to_string_pretty(&result).expect("JSON"));
+        return save_out(&a.out, ("spectrum", &result), Vec::new(), &figs, true);
     }
     println!(
         "elastic spectrum of {} ({} samples at {} s), damping {} %, exact piecewise-linear solution",
@@ -949,7 +998,7 @@ fn record_spectrum(a: &crate::args::SpectrumArgs) -> Result<(), CliError> {
             s.psa[i] / g
         );
     }
-    Ok(())
+    save_out(&a.out, ("spectrum", &result), Vec::new(), &figs, false)
 }
 
 fn record_info(a: &RecordArgs) -> Result<(), CliError> {

@@ -39,6 +39,22 @@ impl From<pounding::Error> for CliError {
     }
 }
 
+/// The command the arguments name, as far as they name one: `pounding`, `pounding run`,
+/// `pounding record spectrum`.
+fn command_path() -> Vec<String> {
+    use clap::CommandFactory;
+    let mut cmd = args::Cli::command();
+    let mut path = vec!["pounding".to_string()];
+    for word in std::env::args().skip(1) {
+        let Some(sub) = cmd.find_subcommand(&word).cloned() else {
+            break;
+        };
+        path.push(word);
+        cmd = sub;
+    }
+    path
+}
+
 fn main() -> ExitCode {
     // A reader that stops early (`pounding ... | head`) closes stdout; `println!` then panics. End quietly
     // with the status a shell expects from SIGPIPE instead.
@@ -79,7 +95,7 @@ fn main() -> ExitCode {
                 line.push(' ');
                 line.push_str(more.trim());
             }
-            eprintln!("{line} (see pounding --help)");
+            eprintln!("{line} (see {} --help)", command_path().join(" "));
             return ExitCode::from(2);
         }
     };

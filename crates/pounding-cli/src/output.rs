@@ -104,29 +104,46 @@ pub use pounding_study::summary::num;
 
 pub use pounding_study::input::write_atomic;
 
-/// Renders `figures` (SVG, and PNG if `png`) and writes them into `dir`, each atomically. Everything is
-/// rendered before the first file is written. Returns the file names written.
-pub fn write_figures(
-    dir: &Path,
+/// Renders `figures` as files: SVG, and PNG too if `png` (in a build with the `png` feature).
+pub fn render_figures(
     figures: &[crate::plot::Figure],
     png: bool,
+) -> Result<Vec<(String, Vec<u8>)>, crate::CliError> {
+    let mut files = Vec::new();
+    for f in figures {
+        let svg = crate::plot::svg::render(f);
+        if png {
+            files.push((format!("{}.png", f.id), png_bytes(&svg, &f.id)?));
+        }
+        files.push((format!("{}.svg", f.id), svg.into_bytes()));
+    }
+    Ok(files)
+}
+
+#[cfg(feature = "png")]
+fn png_bytes(svg: &str, id: &str) -> Result<Vec<u8>, crate::CliError> {
+    crate::plot::png::render(svg).map_err(|e| crate::CliError::Io(format!("figure {id}: {e}")))
+}
+
+#[cfg(not(feature = "png"))]
+fn png_bytes(_: &str, _: &str) -> Result<Vec<u8>, crate::CliError> {
+    Err(crate::CliError::Input(
+        "--png needs PNG support, which this build leaves out: build with `--features png`".into(),
+    ))
+}
+
+/// Writes `files` (name, bytes) into `dir`, created if missing, each atomically, in name order. Returns the
+/// names written.
+pub fn write_files(
+    dir: &Path,
+    mut files: Vec<(String, Vec<u8>)>,
 ) -> Result<Vec<String>, crate::CliError> {
     use crate::CliError;
     if dir.is_file() {
         return Err(CliError::Input(format!(
-            "--plots {} is a file; give a folder (it is created if missing)",
+            "--out {} is a file; give a folder (it is created if missing)",
             dir.display()
         )));
-    }
-    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
-    for f in figures {
-        let svg = crate::plot::svg::render(f);
-        if png {
-            let bytes = crate::plot::png::render(&svg)
-                .map_err(|e| CliError::Io(format!("figure {}: {e}", f.id)))?;
-            files.push((format!("{}.png", f.id), bytes));
-        }
-        files.push((format!("{}.svg", f.id), svg.into_bytes()));
     }
     files.sort_by(|a, b| a.0.cmp(&b.0));
     std::fs::create_dir_all(dir)

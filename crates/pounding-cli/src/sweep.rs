@@ -158,8 +158,8 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
         );
     }
     println!(
-        "{} runs: {} ok, {} failed ({} distinct runs were in the store already); wrote {}: study.sqlite, runs.csv",
-        prepared.len(),
+        "{}: {} ok, {} failed ({} already in the store); wrote {}: study.sqlite, runs.csv",
+        pounding::words::count(prepared.len(), "run", None),
         prepared.len() - failed.len(),
         failed.len(),
         skipped,
@@ -173,7 +173,7 @@ pub fn command(a: &SweepArgs) -> Result<(), CliError> {
 pub fn ida(args: &crate::args::IdaArgs) -> Result<(), CliError> {
     use pounding_study::ida::{run, Edp, Ida, IdaError};
     let a = &args.sweep;
-    crate::commands::check_plots(&args.plots)?;
+    crate::commands::check_figures(&args.figures)?;
     let workers = workers(a)?;
     let study = Ida::read(&a.study).map_err(|e| input(e.0))?;
     let (bar, mut report) = progress(a.quiet);
@@ -253,6 +253,12 @@ pub fn ida(args: &crate::args::IdaArgs) -> Result<(), CliError> {
         &v["fragility"],
         (short, &study.measure_name()),
     );
-    crate::commands::save_figures(&args.plots, &figs, false)?;
+    if args.figures.plots {
+        let names = crate::output::write_files(
+            &a.out,
+            crate::output::render_figures(&figs, args.figures.png)?,
+        )?;
+        println!("wrote {}: {}", a.out.display(), names.join(", "));
+    }
     Ok(())
 }

@@ -1,5 +1,5 @@
 //! The command-line contract of issue 2, run as a user would: exit codes, one-line errors, JSON keys,
-//! atomic history files; numbers checked against the library's exact relations or the design page.
+//! atomic history files; numbers checked against the library's exact relations or docs/contact-models.md.
 
 use serde_json::Value;
 use std::path::PathBuf;
@@ -51,7 +51,7 @@ fn default_papi_impact_works_and_delivers_e() {
     ] {
         assert!(!v[key].is_null(), "{key}");
     }
-    // Calibrated alpha delivers e (design page: alpha = 0.45989 for e = 0.65, energy-split).
+    // Calibrated alpha delivers e (docs/contact-models.md: alpha = 0.45989 for e = 0.65, energy-split).
     assert!((f(&v, "e_post") - 0.65).abs() < 1e-9);
     assert!((f(&v, "alpha") - 0.45989).abs() < 0.5e-5);
     // Energy: m v^2 (1 - e^2) / 2 with the default m1 = 1e5 kg, rigid m2, v = 1 m/s.
@@ -105,15 +105,15 @@ fn calibrate_reports_parameter_by_name() {
 #[test]
 fn history_is_written_atomically_and_tension_free_forces_are_not_negative() {
     let dir = tmp("history");
-    let path = dir.join("h.csv");
+    let path = dir.join("history.csv");
     let out = pounding(&[
         "impact",
         "--model",
         "papi",
         "--e",
         "0.4",
-        "--history",
-        path.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
     ]);
     assert!(out.status.success());
     let text = std::fs::read_to_string(&path).unwrap();
@@ -123,22 +123,22 @@ fn history_is_written_atomically_and_tension_free_forces_are_not_negative() {
         .map(|l| l.split(',').nth(3).unwrap().parse().unwrap())
         .collect();
     assert!(forces.len() > 20 && forces.iter().all(|&x| x >= 0.0));
-    // No temporary file left beside it.
-    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+    // No temporary file left beside it and the result.
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 2);
 }
 
 #[test]
 fn bad_input_gets_one_line_exit_2_and_no_file() {
     let dir = tmp("bad");
-    let path = dir.join("h.csv");
-    let p = path.to_str().unwrap();
+    let out = dir.join("out");
+    let p = out.to_str().unwrap();
     let cases: &[(&[&str], &str)] = &[
         (
-            &["impact", "--model", "papi", "--e", "1.5", "--history", p],
+            &["impact", "--model", "papi", "--e", "1.5", "--out", p],
             "--e",
         ),
         (
-            &["impact", "--model", "papi", "--e", "0", "--history", p],
+            &["impact", "--model", "papi", "--e", "0", "--out", p],
             "--e",
         ),
         (&["impact", "--model", "papi", "--e", "NaN"], "--e"),
@@ -226,7 +226,7 @@ fn bad_input_gets_one_line_exit_2_and_no_file() {
         );
         assert!(!err.contains("panicked"));
     }
-    assert!(!path.exists());
+    assert!(!out.exists());
 }
 
 #[test]
@@ -1234,8 +1234,9 @@ fn record_spectrum_gives_sd_psv_psa_and_refuses_bad_oscillators() {
         "record",
         "spectrum",
         "el-centro-1940",
-        "--plots",
+        "--out",
         figs.to_str().unwrap(),
+        "--plots",
     ]);
     assert!(o.status.success());
     for f in ["record.svg", "spectrum.svg"] {
@@ -1337,15 +1338,8 @@ fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
         "{}/../../examples/studies/ida.toml",
         env!("CARGO_MANIFEST_DIR")
     );
-    let figs = dir.join("figs");
-    let o = pounding(&[
-        "ida",
-        &study,
-        "--out",
-        out.to_str().unwrap(),
-        "--plots",
-        figs.to_str().unwrap(),
-    ]);
+    let figs = out.clone();
+    let o = pounding(&["ida", &study, "--out", out.to_str().unwrap(), "--plots"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     for f in ["ida-curves.svg", "fragility.svg"] {
         let svg = std::fs::read_to_string(figs.join(f)).unwrap();

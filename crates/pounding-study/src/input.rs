@@ -229,7 +229,7 @@ pub fn build(
 pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)> {
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
-        let inner = e.into_inner().to_string();
+        let inner = suggest_field(&e.into_inner().to_string());
         if path == "." || path.is_empty() {
             (Some(String::new()), inner)
         } else {
@@ -237,6 +237,22 @@ pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)>
             (Some(path.clone()), format!("{path}: {inner}"))
         }
     })
+}
+
+/// serde's `unknown field `scael`, expected one of `record`, ..., `scale`` with `; did you mean "scale"?`
+/// after the name, when one of the expected names is close.
+fn suggest_field(msg: &str) -> String {
+    let Some(rest) = msg.strip_prefix("unknown field `") else {
+        return msg.to_string();
+    };
+    let Some((given, expected)) = rest.split_once('`') else {
+        return msg.to_string();
+    };
+    let names: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+    match pounding::words::closest(given, names) {
+        Some(n) => format!("unknown field `{given}` (did you mean `{n}`?){expected}"),
+        None => msg.to_string(),
+    }
 }
 
 /// `contact[0].gap` (serde_path_to_error's spelling) as `contact.0.gap`.

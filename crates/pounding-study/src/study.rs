@@ -283,17 +283,27 @@ impl Study {
     fn check_keys(&self) -> Result<(), InputError> {
         for v in &self.variants {
             if let Err((Some(k), m)) = crate::input::parse_doc(&v.value) {
-                if m.contains("unknown field") {
-                    if let Some(axis) = self.axes.iter().find(|a| {
-                        a.name == k
-                            || k.starts_with(&format!("{}.", a.name))
-                            || a.name.starts_with(&format!("{k}."))
-                    }) {
+                let axis = self.axes.iter().find(|a| {
+                    a.name == k
+                        || k.starts_with(&format!("{}.", a.name))
+                        || a.name.starts_with(&format!("{k}."))
+                });
+                match axis {
+                    Some(axis) if m.contains("unknown field") => {
                         return Err(err(
                             &self.path,
                             format!("axis {:?} names no scenario key: {m}", axis.name),
                         ));
                     }
+                    // A value of the wrong kind (a string for a number) is the study's mistake, not a
+                    // run's: refused before anything runs.
+                    Some(axis) if m.contains("invalid type") => {
+                        return Err(err(
+                            &self.path,
+                            format!("axis {:?} has a value of the wrong type: {m}", axis.name),
+                        ));
+                    }
+                    _ => {}
                 }
             }
         }

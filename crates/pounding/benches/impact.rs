@@ -1,4 +1,4 @@
-//! Criterion benchmarks of single impacts (exact path and integrated, every model) and of the seed's
+//! Criterion benchmarks of single impacts (exact path and integrated, every model) and of the paper's
 //! Table 1 sweep. Results and the machine are in `docs/performance.md`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};

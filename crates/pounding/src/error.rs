@@ -24,7 +24,7 @@ pub enum Error {
         allowed: String,
     },
     /// A list whose length must match another's.
-    #[error("{name} has {len} values, but there are {expected} floors: give one per floor")]
+    #[error("{name} has {len} values, but there {} {}: give one per floor", if *expected == 1 { "is" } else { "are" }, crate::words::count(*expected, "floor", None))]
     Length {
         /// Name of the list.
         name: &'static str,

@@ -35,5 +35,6 @@ pub mod paper;
 pub mod scenario;
 pub mod separation;
 pub mod structure;
+pub mod words;
 
 pub use error::Error;

@@ -1,7 +1,7 @@
-//! Reproduction of the seed's Table 1 (Papi & Toopchi-Nezhad 2022): the mean relative error
+//! Reproduction of Table 1 of Papi & Toopchi-Nezhad (2022): the mean relative error
 //! `|e_pre - e_post| / e_pre * 100` of each model over `0.1 <= e <= 1` and `0.5 <= e <= 0.8`.
 //!
-//! Protocol (the seed states none): an ideal single impact of each model with its damping from `e_pre`,
+//! Protocol (the paper states none): an ideal single impact of each model with its damping from `e_pre`,
 //! `e_post` by the exact relation of [`crate::impact::exact`] where one exists and by event-located
 //! integration otherwise (Jankowski), on the grids `e = 0.1, 0.2, ..., 1.0` and `e = 0.10, 0.11, ..., 1.00`.
 //! The result does not depend on stiffness, mass or impact velocity.
@@ -23,7 +23,7 @@ pub struct Variant {
     pub alpha: AlphaRule,
     /// Reading (papi only).
     pub reading: Reading,
-    /// The seed's published errors (%) over 0.1..1 and 0.5..0.8, where it gives them.
+    /// The published errors (%) over 0.1..1 and 0.5..0.8, where it gives them.
     pub published: Option<(f64, f64)>,
 }
 
@@ -44,7 +44,7 @@ pub struct Row {
     pub fine_all: f64,
     /// Mean error (%) over 0.5..0.8, grid step 0.01.
     pub fine_mid: f64,
-    /// The seed's figures (%) over 0.1..1 and 0.5..0.8, if published.
+    /// The paper's figures (%) over 0.1..1 and 0.5..0.8, if published.
     pub published: Option<(f64, f64)>,
 }
 
@@ -59,7 +59,7 @@ fn variant(label: &'static str, model: Model) -> Variant {
     }
 }
 
-/// The variants of Table 1: the seed's four models (Anagnostopoulos in both tension rules, the seed's own
+/// The variants of Table 1: the paper's four models (Anagnostopoulos in both tension rules, the paper's own
 /// model with eq (8) and calibrated, in both readings), then every other damped model of the library.
 pub fn variants() -> Vec<Variant> {
     let ana = Some((28.76, 11.65));

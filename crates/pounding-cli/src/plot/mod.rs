@@ -8,6 +8,7 @@ pub mod analyses;
 pub mod axis;
 pub mod figures;
 pub mod font;
+#[cfg(feature = "png")]
 pub mod png;
 pub mod svg;
 

@@ -2,8 +2,7 @@
 //!
 //! - A **wall** is fixed to the ground beside a building, on its left or right, at a clear distance `gap`
 //!   (m); the floors listed strike it through contact elements whose other end is the ground, with the floor's
-//!   own mass as the effective mass of each impact (`shared/design/structures-and-studies.md`, "Walls and
-//!   devices"). A moat wall around an isolated building and a bridge's abutment are walls.
+//!   own mass as the effective mass of each impact (`docs/structures.md`). A moat wall around an isolated building and a bridge's abutment are walls.
 //! - A **bumper** of finite thickness `t` (m) sits on the face of a contact or a wall: its soft law acts on
 //!   the layer's compression from the moment the layer touches (at a closing of `gap - t`); once the
 //!   compression reaches `max_strain t` the layer is consumed and the contact's own (hard) law acts as well,

@@ -108,7 +108,7 @@ pub fn exact_chi(e: f64) -> Result<f64, Error> {
     solve_decreasing("chi", e, 1.0 / e, |c| Ok(exact::hc_e_post(c, c)))
 }
 
-/// The seed's `alpha` calibrated exactly: the root of `e_post(alpha) = e` in [0, 1] (for `e = 1` any
+/// The `alpha` of Papi & Toopchi-Nezhad (2022) calibrated exactly: the root of `e_post(alpha) = e` in [0, 1] (for `e = 1` any
 /// alpha works and 1 is returned).
 pub fn papi_alpha(e: f64, reading: Reading) -> Result<f64, Error> {
     if e == 1.0 {

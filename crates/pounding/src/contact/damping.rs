@@ -1,5 +1,5 @@
 //! Published damping formulas: the damping parameter each model derives from the coefficient of restitution
-//! `e` (dimensionless). Sources are given per function; see also `shared/design/contact-models.md`, section 2.
+//! `e` (dimensionless). Sources are given per function; see also `docs/contact-models.md`.
 
 use std::f64::consts::PI;
 
@@ -67,8 +67,8 @@ pub fn chi_papi(e: f64, alpha: f64) -> f64 {
     1.5 * (1.0 - e * e) / (alpha + e * e)
 }
 
-/// Seed eq (8) as printed: `alpha = e + 1` for `0.1 <= e < 0.8`, `1` for `0.8 <= e <= 1`. It contradicts the
-/// seed's own range `0 <= alpha <= 1` and is probably a misprint; it is kept as printed (for `e < 0.1`, outside
+/// Papi & Toopchi-Nezhad (2022) eq (8) as printed: `alpha = e + 1` for `0.1 <= e < 0.8`, `1` for `0.8 <= e <= 1`. It contradicts the
+/// paper's own range `0 <= alpha <= 1` and is probably a misprint; it is kept as printed (for `e < 0.1`, outside
 /// the printed range, the first branch is extended).
 pub fn alpha_eq8(e: f64) -> f64 {
     if e < 0.8 {

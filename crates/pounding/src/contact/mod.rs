@@ -1,4 +1,4 @@
-//! Contact force models (`shared/design/contact-models.md`, sections 2–3).
+//! Contact force models (`docs/contact-models.md`).
 //!
 //! A [`ContactModel`] is what a user specifies: a [`Model`] from the catalogue with stiffness `k` (N/m^n),
 //! exponent `n`, the requested coefficient of restitution `e_pre`, how the damping is chosen
@@ -44,7 +44,7 @@ pub enum Tension {
     Clamp,
 }
 
-/// The two readings of the seed's force law (design page, section 3).
+/// The two readings of the force law of Papi & Toopchi-Nezhad (2022) (docs/contact-models.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(
     feature = "serde",
@@ -75,11 +75,11 @@ pub enum Damping {
 /// How `alpha` of the `papi` model is chosen.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum AlphaRule {
-    /// A given value (dimensionless, `alpha >= 0`; the seed's range is [0, 1]).
+    /// A given value (dimensionless, `alpha >= 0`; the paper's range is [0, 1]).
     Given(f64),
-    /// Seed eq (8) as printed (flagged as a probable misprint).
+    /// Papi & Toopchi-Nezhad (2022) eq (8) as printed (flagged as a probable misprint).
     Eq8,
-    /// The seed's iterative procedure done exactly: the root of `e_post(alpha) = e_pre` in [0, 1].
+    /// The iterative procedure of Papi & Toopchi-Nezhad (2022) done exactly: the root of `e_post(alpha) = e_pre` in [0, 1].
     Calibrate,
 }
 
@@ -92,7 +92,7 @@ pub enum DampingParameter {
     Zeta(f64),
     /// Hunt–Crossley factor, the same in both phases.
     Chi(f64),
-    /// The seed's model: `alpha`, and the resulting approach and restitution factors.
+    /// The model of Papi & Toopchi-Nezhad (2022): `alpha`, and the resulting approach and restitution factors.
     Papi {
         /// Energy-split coefficient.
         alpha: f64,
@@ -182,14 +182,14 @@ impl ContactModel {
                 "alpha",
                 a,
                 a >= 0.0,
-                "alpha >= 0 (the seed's range is 0..1)",
+                "alpha >= 0 (the paper's range is 0..1)",
             )?;
         }
         self.alpha = alpha;
         Ok(self)
     }
 
-    /// Chooses the reading of the seed's model.
+    /// Chooses the reading of the paper's model.
     pub fn with_reading(mut self, reading: Reading) -> Self {
         self.reading = reading;
         self
@@ -243,7 +243,7 @@ impl ContactModel {
     pub fn tension(&self) -> Tension {
         self.tension
     }
-    /// Reading of the seed's model.
+    /// Reading of the paper's model.
     pub fn reading(&self) -> Reading {
         self.reading
     }

@@ -23,7 +23,7 @@ pub enum Family {
     Bilinear,
 }
 
-/// Every contact model of the library (`shared/design/contact-models.md`, section 2).
+/// Every contact model of the library (`docs/contact-models.md`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[allow(missing_docs)] // each variant is documented by its row of `Model::info`
 pub enum Model {
@@ -54,7 +54,7 @@ pub enum Formula {
     Zeta(fn(f64) -> f64),
     /// A Hunt–Crossley factor `chi(e)`, the same in both phases.
     Chi(fn(f64) -> f64),
-    /// Seed eq (7): `chi(e, alpha)`, with `alpha` chosen by the user, eq (8) or calibration.
+    /// Papi & Toopchi-Nezhad (2022) eq (7): `chi(e, alpha)`, with `alpha` chosen by the user, eq (8) or calibration.
     Papi,
     /// Jankowski's `xi(e)`.
     Xi(fn(f64) -> f64),
@@ -117,7 +117,7 @@ const fn hc(
     }
 }
 
-/// The catalogue, in the order of the design page.
+/// The catalogue, in the order of docs/contact-models.md.
 pub const MODELS: [ModelInfo; 16] = [
     ModelInfo {
         model: Model::Hooke,
@@ -197,8 +197,7 @@ pub const MODELS: [ModelInfo; 16] = [
         damping_formula: "chi = (3/2) (1 - e^2) / (alpha + e^2); alpha given, eq (8) or calibrated",
         formula: Formula::Papi,
         parameter: Some("alpha"),
-        source:
-            "Papi & Toopchi-Nezhad (2022), the seed, eqs (7)-(8); readings are our reconstruction",
+        source: "Papi & Toopchi-Nezhad (2022), eqs (7)-(8); readings are our reconstruction",
     },
     hc(
         Model::HuntCrossley,

@@ -2,8 +2,7 @@
 //! ground beside it): springs, dashpots, Kelvin and Maxwell units, and restrainers.
 //!
 //! The deformation is `x = u_a - u_b` (m, closing positive, as for contacts) and the device's force `f` (N)
-//! resists a growing `x`. A restrainer (a bridge's cable restrainer, after `shared/design/structures-and-
-//! studies.md`, "Walls and devices") acts in tension only, once the opening `-x` exceeds its slack `s`:
+//! resists a growing `x`. A restrainer (a bridge's cable restrainer, after `docs/structures.md`) acts in tension only, once the opening `-x` exceeds its slack `s`:
 //! `f = -k (-x - s)` then, 0 otherwise; the moment it becomes taut and the moment it becomes slack again are
 //! located as events, so the kink of its law never falls inside a step.
 

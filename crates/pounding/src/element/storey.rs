@@ -1,5 +1,5 @@
 //! Storeys: the shear force of one storey as a function of its drift history
-//! (`shared/design/structures-and-studies.md`, "Storey laws").
+//! (`docs/structures.md`).
 //!
 //! The drift `x` (m) of storey `j` is `u_j - u_{j-1}`; its force `F` (N) is the restoring force of the
 //! storey's law. Rayleigh damping on the initial stiffness (`C = a0 M + a1 K_0`, OpenSees' `betaKinit`) adds
@@ -53,7 +53,7 @@ impl StoreyLaw {
     /// A validated Bouc–Wen law: `yield_force > 0` (N), `post_yield_ratio` in [0, 1), `n >= 1`, and
     /// `beta >= 0` with `beta + gamma > 0`, which keeps `|z|` bounded by `(1 / (beta + gamma))^(1/n)` (with
     /// `A = 1`: loading drives `z` towards that bound, and unloading never drives it away from 0 only when
-    /// `beta >= 0`). The design page's range (`beta, gamma >= 0`) is inside this one.
+    /// `beta >= 0`). The range of docs/structures.md (`beta, gamma >= 0`) is inside this one.
     pub fn bouc_wen(
         yield_force: f64,
         post_yield_ratio: f64,

@@ -1,4 +1,4 @@
-//! Exact single-impact relations (`shared/design/contact-models.md`, section 4): the coefficient of
+//! Exact single-impact relations (`docs/contact-models.md`): the coefficient of
 //! restitution an ideal impact delivers, in closed form or by solving one scalar equation. All are
 //! independent of stiffness, mass and impact velocity (and, for Hunt–Crossley laws, of the exponent).
 
@@ -242,7 +242,7 @@ mod tests {
             let (a, b, c) = (f(1.0 - 1e-7), f(1.0), f(1.0 + 1e-7));
             assert!((a - b).abs() < 1e-6 && (c - b).abs() < 1e-6);
         }
-        // At zeta = 1: clamped e = exp(-2), approach-only e = exp(-1) (design page, section 4).
+        // At zeta = 1: clamped e = exp(-2), approach-only e = exp(-1) (docs/contact-models.md).
         assert!((kv_e_post(1.0, Tension::Clamp) - (-2f64).exp()).abs() < 1e-15);
         assert!((mj_e_post(1.0) - (-1f64).exp()).abs() < 1e-15);
     }

@@ -92,7 +92,7 @@ impl TwoBodies {
 }
 
 /// A ball of radius `R` dropped from height `h` onto a rigid slab of the same material; Hertz stiffness
-/// `k_h = (4/3) E* sqrt(R)` with `1/E* = 2 (1 - nu^2) / E` (design page, section 6).
+/// `k_h = (4/3) E* sqrt(R)` with `1/E* = 2 (1 - nu^2) / E` (docs/contact-models.md).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BallDrop {
     /// Ball radius, m.

@@ -35,8 +35,9 @@ fn word<'a>(key: &str, path: &str, v: &'a str, allowed: &[&str]) -> Result<&'a s
         Err(SchemaError::new(
             path,
             format!(
-                "{key} = {v:?} is not allowed: one of {}",
-                allowed.join(", ")
+                "{key} = {v:?} is not allowed: one of {}{}",
+                allowed.join(", "),
+                crate::words::did_you_mean(v, allowed.iter().copied())
             ),
         ))
     }
@@ -258,7 +259,11 @@ fn storey_laws(at: &str, what: &str, b: &BuildingDoc) -> Result<Vec<StoreyLaw>, 
     let list = |key: &str, len: usize| {
         err(
             key,
-            format!("{key} has {len} values, but there are {storeys} storeys: give one per storey, or one for all"),
+            format!(
+                "{key} has {len} values, but there {} {}: give one per storey, or one for all",
+                if storeys == 1 { "is" } else { "are" },
+                crate::words::count(storeys, "storey", None)
+            ),
         )
     };
     let models = match &b.storey_model {
@@ -357,8 +362,9 @@ fn options(at: &str, c: &LawDoc) -> Result<ContactOptions, SchemaError> {
         SchemaError::new(
             format!("{at}.model"),
             format!(
-                "model = {:?}: unknown model; allowed: {}",
+                "model = {:?}: unknown model{}; allowed: {}",
                 c.model,
+                crate::words::did_you_mean(c.model, names.iter().copied()),
                 names.join(", ")
             ),
         )

@@ -1,4 +1,4 @@
-//! The exact relations against the design page's reference values (section 4) and calibrated alpha
+//! The exact relations against the reference values of docs/contact-models.md and calibrated alpha
 //! table (section 3).
 
 use crate::formula;
@@ -99,7 +99,7 @@ fn papi_energy_split_with_alpha_equal_e_is_ye() {
 
 #[test]
 fn kelvin_voigt_with_tension_is_exact_only_there() {
-    // Anagnostopoulos' zeta is exact with tension and separation at d = 0 (design page, section 4).
+    // Anagnostopoulos' zeta is exact with tension and separation at d = 0 (docs/contact-models.md).
     for e in [0.05, 0.3, 0.77, 0.99] {
         assert!((delivered(Model::KelvinVoigt, Tension::Allow, e) - e).abs() < 1e-14);
         assert!(delivered(Model::KelvinVoigt, Tension::Clamp, e) > e);

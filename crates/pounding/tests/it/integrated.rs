@@ -7,7 +7,7 @@ use proptest::prelude::*;
 use std::f64::consts::PI;
 
 /// Hertz (n = 3/2) contact duration factor: `t_c = C d_max / v_i` with
-/// `C = 2 sqrt(pi) Gamma(7/5) / Gamma(9/10)` (from `int_0^1 (1 - x^(5/2))^(-1/2) dx`); the design page
+/// `C = 2 sqrt(pi) Gamma(7/5) / Gamma(9/10)` (from `int_0^1 (1 - x^(5/2))^(-1/2) dx`); docs/contact-models.md
 /// rounds it to 2.9433. Value from Python's `math.gamma`.
 const HERTZ_DURATION: f64 = 2.943275184324706;
 

@@ -1,5 +1,4 @@
-//! Walls, bumpers, devices and isolators: exact checks (`shared/design/structures-and-studies.md`, "Walls
-//! and devices"; issue 13). A block striking a rigid wall is a single impact with the block's own mass; a
+//! Walls, bumpers, devices and isolators: exact checks (`docs/structures.md`; issue 13). A block striking a rigid wall is a single impact with the block's own mass; a
 //! bumper whose layer is never consumed is its soft law alone, and a consumed one stores energy in both laws;
 //! a restrainer that never goes slack is a spring; an isolated building on a rigid isolator is its
 //! superstructure on a fixed base; every element keeps the energy balance.

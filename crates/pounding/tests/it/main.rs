@@ -1,6 +1,6 @@
 //! Integration tests of the `pounding` library: one test binary (less linking), one module per subject.
 //! Expected values come from the exact relations and reference tables of
-//! `shared/design/contact-models.md` (sections 3–5) or from closed forms stated beside each test.
+//! `docs/contact-models.md` or from closed forms stated beside each test.
 
 mod buildings;
 mod calibration;

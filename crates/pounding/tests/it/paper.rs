@@ -1,4 +1,4 @@
-//! The seed's Table 1 reproduction.
+//! The reproduction of Table 1 of Papi & Toopchi-Nezhad (2022).
 
 use pounding::paper::table1;
 
