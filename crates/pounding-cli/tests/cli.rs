@@ -1581,3 +1581,81 @@ fn bad_walls_isolators_and_devices_get_one_line_exit_2_and_no_output() {
         assert!(err.contains(says), "case {i}: {err} lacks {says}");
     }
 }
+
+/// One line on stderr and exit code 2, for the messages a new user meets first.
+fn one_line_error(args: &[&str]) -> String {
+    let o = pounding(args);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+    err
+}
+
+#[test]
+fn misspelt_names_get_a_suggestion_and_errors_point_to_the_subcommand_help() {
+    let err = one_line_error(&["impact", "--model", "huntcrossley", "--e", "0.5"]);
+    assert!(err.contains("did you mean \"hunt-crossley\""), "{err}");
+    assert!(err.contains("see pounding impact --help"), "{err}");
+    let err = one_line_error(&["record", "spectrum", "el-centro-1940", "--plots"]);
+    assert!(err.contains("--out"), "{err}");
+    assert!(err.contains("see pounding record spectrum --help"), "{err}");
+    // --png in a build without it says how to get it.
+    if !cfg!(feature = "png") {
+        let dir = tmp("no-png");
+        let out = dir.join("out");
+        let err = one_line_error(&[
+            "impact",
+            "--model",
+            "papi",
+            "--e",
+            "0.5",
+            "--out",
+            out.to_str().unwrap(),
+            "--plots",
+            "--png",
+        ]);
+        assert!(err.contains("--features png"), "{err}");
+        assert!(!out.exists());
+    }
+
+    let dir = tmp("misspelt");
+    let text = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let cases = [
+        (
+            text.replace("model = \"papi\"", "model = \"Hunt_Crossley\""),
+            "did you mean \"hunt-crossley\"",
+        ),
+        (
+            text.replace("scale = 1.0", "scael = 1.0"),
+            "(did you mean `scale`?)",
+        ),
+        // A string for a number: the line and the key.
+        (
+            text.replace("gap = 0.02 ", "gap = \"0.02\" "),
+            "contact.0.gap: invalid type: string",
+        ),
+    ];
+    for (i, (scenario, expected)) in cases.iter().enumerate() {
+        let err = refused(&dir, i, scenario);
+        assert!(err.contains(expected), "{err}");
+    }
+}
+
+#[test]
+fn counts_agree_with_their_nouns() {
+    let dir = tmp("nouns");
+    let text = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    // One storey, three damping ratios.
+    let err = refused(
+        &dir,
+        0,
+        &text.replacen("damping_ratio = 0.05", "damping_ratio = 0.05\nheights = [3.0, 3.0]", 1)
+            .replacen("heights = [3.0]             # m\n", "", 1),
+    );
+    assert!(err.contains("heights has 2 values, but there is 1 floor:"), "{err}");
+    let out = dir.join("run");
+    let o = pounding(&["run", &example("two-sdof.toml"), "--out", out.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("1 storey,"), "{text}");
+    assert!(!text.contains("1 storeys"), "{text}");
+}

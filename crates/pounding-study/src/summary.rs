@@ -1,7 +1,7 @@
 //! The summary of a run: what `summary.json`, Python's `result.summary` and a sweep's store hold, built once.
 
 use crate::input::Loaded;
-use pounding::analysis::{Bumper, DeviceEnds, LinkResponse, Results, Scenario};
+use pounding::analysis::{Bumper, DeviceEnds, LinkResponse, Results, Scenario, Site};
 use pounding::contact::PreparedContact;
 use pounding::element::DeviceLaw;
 use serde_json::{json, Value};
@@ -101,13 +101,15 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
         .links()
         .iter()
         .zip(&r.links)
-        .map(|(link, lr)| {
+        .enumerate()
+        .map(|(l, (link, lr))| {
             let mut v = json!({
                 "between": [s.buildings()[link.left].name, s.buildings()[link.right].name],
                 "gap": num(link.gap),
                 "floors": link.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
             });
             site_totals(&mut v, &link.contact, &link.bumper, link.seat, lr);
+            v["e_delivered"] = delivered(r, |site| matches!(site, Site::Link { link, .. } if link == l));
             v
         })
         .collect();
@@ -115,7 +117,8 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
         .walls()
         .iter()
         .zip(&r.walls)
-        .map(|(w, wr)| {
+        .enumerate()
+        .map(|(k, (w, wr))| {
             let mut v = json!({
                 "name": w.name,
                 "facing": s.buildings()[w.building].name,
@@ -124,6 +127,7 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "floors": w.floors,
             });
             site_totals(&mut v, &w.contact, &w.bumper, w.seat, wr);
+            v["e_delivered"] = delivered(r, |site| matches!(site, Site::Wall { wall, .. } if wall == k));
             v
         })
         .collect();
@@ -248,6 +252,27 @@ fn flat_law(name: &str, v: Value) -> Value {
 }
 
 /// The contact law, bumper, seat and totals of a link or a wall, into `v`.
+/// The smallest and largest delivered e (`-v_out / v_i`) of the ended impacts at the sites `at` picks, with
+/// a word on why they differ from the e asked of the contact; null without such impacts.
+fn delivered(r: &Results, at: impl Fn(Site) -> bool) -> Value {
+    let e: Vec<f64> = r
+        .impacts
+        .iter()
+        .filter(|i| at(i.site))
+        .filter_map(|i| i.e_post)
+        .collect();
+    if e.is_empty() {
+        return Value::Null;
+    }
+    json!({
+        "min": num(e.iter().copied().fold(f64::INFINITY, f64::min)),
+        "max": num(e.iter().copied().fold(f64::NEG_INFINITY, f64::max)),
+        "note": "separation over approach velocity; the calibration is exact for two free bodies, and the storey, \
+                 damping and other forces on the floors act during each contact (docs/verification.md, \
+                 \"Impacts inside a run\")",
+    })
+}
+
 fn site_totals(
     v: &mut Value,
     contact: &PreparedContact,
