@@ -177,7 +177,7 @@ def contact_material(contact: dict, m_eff: float, gap_override: float | None = N
         if contact.get("tension", "allow") != "allow":
             raise SystemExit("kelvin-voigt: OpenSees ViscoelasticGap has no clamped variant")
         # Anagnostopoulos: c = 2 zeta sqrt(k m_eff), zeta = -ln e / sqrt(pi^2 + ln^2 e)
-        # (shared/design/contact-models.md, section 2, row kelvin-voigt).
+        # (docs/contact-models.md, section 2, row kelvin-voigt).
         ln_e = math.log(e)
         zeta = -ln_e / math.sqrt(math.pi ** 2 + ln_e ** 2)
         c = 2.0 * zeta * math.sqrt(k * m_eff)
@@ -185,14 +185,14 @@ def contact_material(contact: dict, m_eff: float, gap_override: float | None = N
     if model == "jankowski":
         n = float(contact.get("exponent", 1.5))
         # Jankowski (2006): xi = (9 sqrt 5 / 2) (1 - e^2) / (e (e (9 pi - 16) + 16))
-        # (contact-models.md, row jankowski; also the formula the OpenSees manual recommends).
+        # (docs/contact-models.md, row jankowski; also the formula the OpenSees manual recommends).
         xi = 9.0 * math.sqrt(5.0) / 2.0 * (1.0 - e ** 2) / (e * (e * (9.0 * math.pi - 16.0) + 16.0))
         return "JankowskiImpact", [k, xi, m_eff, gap_os, n], {
             "Kh": k, "xi": xi, "mEff": m_eff, "gap": gap_os, "n": n}
     if model == "hertzdamp":
         n = float(contact.get("exponent", 1.5))
         # Ye, Li & Zhu (2009) normalised damping chi = 8 (1 - e) / (5 e)
-        # (contact-models.md, row hertzdamp; the manual's recommended xiNorm).
+        # (docs/contact-models.md, row hertzdamp; the manual's recommended xiNorm).
         chi = 8.0 * (1.0 - e) / (5.0 * e)
         return "Hertzdamp", [k, chi, gap_os, n], {"Kh": k, "xiNorm": chi, "gap": gap_os, "n": n}
     raise SystemExit(f"contact model {model!r} has no OpenSees counterpart in this script")
