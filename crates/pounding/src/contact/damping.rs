@@ -3,20 +3,20 @@
 
 use std::f64::consts::PI;
 
-/// Anagnostopoulos (2004) equivalent damping ratio, seed eq (4): `zeta = -ln e / sqrt(pi^2 + ln^2 e)`.
+/// Anagnostopoulos (2004) equivalent damping ratio, Papi & Toopchi-Nezhad (2022) eq (4): `zeta = -ln e / sqrt(pi^2 + ln^2 e)`.
 /// Exact for a linear Kelvin–Voigt contact that may pull (tension) and separates at `d = 0`.
 pub fn zeta_anagnostopoulos(e: f64) -> f64 {
     let l = e.ln();
     -l / (PI * PI + l * l).sqrt()
 }
 
-/// Mahmoud & Jankowski (2011) damping ratio of the modified linear viscoelastic model, seed eq (5):
+/// Mahmoud & Jankowski (2011) damping ratio of the modified linear viscoelastic model, Papi & Toopchi-Nezhad (2022) eq (5):
 /// `zeta = (1 - e^2) / (e (e (pi - 2) + 2))`.
 pub fn zeta_mahmoud_jankowski(e: f64) -> f64 {
     (1.0 - e * e) / (e * (e * (PI - 2.0) + 2.0))
 }
 
-/// Ye, Li & Li (2009), seed eq (6): `chi = 3 (1 - e) / (2 e)`.
+/// Ye, Li & Zhu (2009), Papi & Toopchi-Nezhad (2022) eq (6): `chi = 3 (1 - e) / (2 e)`.
 pub fn chi_ye(e: f64) -> f64 {
     1.5 * (1.0 - e) / e
 }
@@ -62,7 +62,7 @@ pub fn xi_jankowski(e: f64) -> f64 {
     4.5 * 5f64.sqrt() * (1.0 - e * e) / (e * (e * (9.0 * PI - 16.0) + 16.0))
 }
 
-/// Papi & Toopchi-Nezhad (2022), seed eq (7): `chi = (3/2) (1 - e^2) / (alpha + e^2)`.
+/// Papi & Toopchi-Nezhad (2022) eq (7): `chi = (3/2) (1 - e^2) / (alpha + e^2)`.
 pub fn chi_papi(e: f64, alpha: f64) -> f64 {
     1.5 * (1.0 - e * e) / (alpha + e * e)
 }

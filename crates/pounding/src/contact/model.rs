@@ -145,7 +145,7 @@ pub const MODELS: [ModelInfo; 16] = [
         damping_formula: "none (e = 1)",
         formula: Formula::None,
         parameter: None,
-        source: "Hertz (1882); seed eq (1)",
+        source: "Hertz (1882); Papi & Toopchi-Nezhad (2022) eq (1)",
     },
     ModelInfo {
         model: Model::KelvinVoigt,
@@ -159,7 +159,7 @@ pub const MODELS: [ModelInfo; 16] = [
         damping_formula: "zeta = -ln e / sqrt(pi^2 + ln^2 e)",
         formula: Formula::Zeta(dmp::zeta_anagnostopoulos),
         parameter: Some("zeta"),
-        source: "Anagnostopoulos (1988, 2004); seed eqs (2)-(4)",
+        source: "Anagnostopoulos (1988, 2004); Papi & Toopchi-Nezhad (2022) eqs (2)-(4)",
     },
     ModelInfo {
         model: Model::MahmoudJankowski,
@@ -173,14 +173,14 @@ pub const MODELS: [ModelInfo; 16] = [
         damping_formula: "zeta = (1 - e^2) / (e (e (pi - 2) + 2))",
         formula: Formula::Zeta(dmp::zeta_mahmoud_jankowski),
         parameter: Some("zeta"),
-        source: "Mahmoud & Jankowski (2011); seed eq (5)",
+        source: "Mahmoud & Jankowski (2011); Papi & Toopchi-Nezhad (2022) eq (5)",
     },
     hc(
         Model::Ye,
         "ye",
         dmp::chi_ye,
         "chi = 3 (1 - e) / (2 e)",
-        "Ye, Li & Li (2009); seed eq (6)",
+        "Ye, Li & Zhu (2009); Papi & Toopchi-Nezhad (2022) eq (6)",
         1.0,
     ),
     ModelInfo {

@@ -179,7 +179,7 @@ impl BallDrop {
 /// (N/m^1.5) for an impact of effective mass `mass` (kg) at `v_i` (m/s): `k_h` for `n = 3/2`, otherwise
 /// `k_h d_h^(3/2 - n)`, the same force as Hertz at the elastic Hertz penetration
 /// `d_h = (5 m v_i^2 / (4 k_h))^(2/5)`. Our choice, used to put models of different `n` on one impact (the
-/// seed does not say which linear stiffness it used).
+/// paper does not say which linear stiffness it used).
 ///
 /// ```
 /// // A linear spring equivalent to Hertz reaches the same force at d_h, F = k_h d_h^1.5.
