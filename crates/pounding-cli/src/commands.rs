@@ -147,7 +147,12 @@ fn parameter(rep: &mut Report, p: DampingParameter) {
 /// Adds the model description and its damping parameter to a report.
 fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
     rep.add("model", s.model().name(), "")
-        .add("k", num(s.stiffness()), "N/m^n")
+        .add_shown(
+            "k",
+            num(s.stiffness()),
+            format!("{} {}", fmt_num(s.stiffness()), stiffness_unit(s.exponent())),
+            "",
+        )
         .add("n", num(s.exponent()), "")
         .add("tension", tension_name(s.tension()), "")
         .add("damping", damping_name(s.damping()), "");
