@@ -150,7 +150,11 @@ fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
         .add_shown(
             "k",
             num(s.stiffness()),
-            format!("{} {}", fmt_num(s.stiffness()), stiffness_unit(s.exponent())),
+            format!(
+                "{} {}",
+                fmt_num(s.stiffness()),
+                stiffness_unit(s.exponent())
+            ),
             "",
         )
         .add("n", num(s.exponent()), "")

@@ -344,12 +344,12 @@ fn plain(x: f64, sig: i32) -> String {
     }
 }
 
-/// Metres as millimetres, N as kN, J as kJ: the units of the terminal tables and of the figures.
+/// Metres as millimetres, N as MN, J as kJ: the units of the terminal tables, the figures and the report.
 fn mm(x: f64) -> String {
     plain(1e3 * x, 4)
 }
-fn kn(x: f64) -> String {
-    plain(1e-3 * x, 4)
+fn mn(x: f64) -> String {
+    plain(1e-6 * x, 4)
 }
 fn kj(x: f64) -> String {
     plain(1e-3 * x, 4)
@@ -357,10 +357,10 @@ fn kj(x: f64) -> String {
 
 fn print_results(s: &Scenario, r: &Results) {
     println!(
-        "peak responses (lengths in mm, forces in kN, energies in kJ; the files hold m, N and J)\n"
+        "peak responses (lengths in mm, forces in MN, energies in kJ; the files hold m, N and J)\n"
     );
     println!(
-        "building    floor  displacement_mm    at_s  abs_acceleration_m_per_s2  storey  drift_mm  drift_ratio_%  shear_kN"
+        "building    floor  displacement_mm    at_s  abs_acceleration_m_per_s2  storey  drift_mm  drift_ratio_%  shear_MN"
     );
     for (b, resp) in s.buildings().iter().zip(&r.buildings) {
         let h = b.structure.heights();
@@ -375,7 +375,7 @@ fn print_results(s: &Scenario, r: &Results) {
                 f + 1,
                 mm(resp.peak_drift[f]),
                 100.0 * resp.peak_drift[f] / h_f,
-                kn(resp.peak_storey_shear[f])
+                mn(resp.peak_storey_shear[f])
             );
         }
     }
@@ -430,7 +430,7 @@ fn print_results(s: &Scenario, r: &Results) {
     }
     if !s.links().is_empty() || !s.walls().is_empty() {
         println!(
-            "\ncontact              impacts  e_asked  e_delivered    peak_force_kN  max_penetration_mm  dissipated_kJ  max_opening_mm"
+            "\ncontact              impacts  e_asked  e_delivered    peak_force_MN  max_penetration_mm  dissipated_kJ  max_opening_mm"
         );
         let links = s
             .links()
@@ -508,7 +508,7 @@ fn print_results(s: &Scenario, r: &Results) {
                 lr.impacts,
                 fmt_num(e_asked),
                 range,
-                kn(lr.peak_force),
+                mn(lr.peak_force),
                 mm(lr.max_penetration),
                 kj(lr.dissipated_energy),
                 mm(opening)
@@ -524,14 +524,14 @@ fn print_results(s: &Scenario, r: &Results) {
         }
     }
     if !s.devices().is_empty() {
-        println!("\ndevice               floors  peak_force_kN  max_closing_mm  max_opening_mm");
+        println!("\ndevice               floors  peak_force_MN  max_closing_mm  max_opening_mm");
         for (d, dr) in s.devices().iter().zip(&r.devices) {
             for (k, (i, j)) in d.floors.iter().enumerate() {
                 println!(
                     "{:<20} {:>6}  {:>13}  {:>14}  {:>14}",
                     d.name,
                     format!("{i}-{j}"),
-                    kn(dr.peak_force[k]),
+                    mn(dr.peak_force[k]),
                     mm(dr.max_closing[k]),
                     mm(dr.max_opening[k])
                 );

@@ -1649,12 +1649,25 @@ fn counts_agree_with_their_nouns() {
     let err = refused(
         &dir,
         0,
-        &text.replacen("damping_ratio = 0.05", "damping_ratio = 0.05\nheights = [3.0, 3.0]", 1)
+        &text
+            .replacen(
+                "damping_ratio = 0.05",
+                "damping_ratio = 0.05\nheights = [3.0, 3.0]",
+                1,
+            )
             .replacen("heights = [3.0]             # m\n", "", 1),
     );
-    assert!(err.contains("heights has 2 values, but there is 1 floor:"), "{err}");
+    assert!(
+        err.contains("heights has 2 values, but there is 1 floor:"),
+        "{err}"
+    );
     let out = dir.join("run");
-    let o = pounding(&["run", &example("two-sdof.toml"), "--out", out.to_str().unwrap()]);
+    let o = pounding(&[
+        "run",
+        &example("two-sdof.toml"),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("1 storey,"), "{text}");
     assert!(!text.contains("1 storeys"), "{text}");

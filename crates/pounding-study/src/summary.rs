@@ -109,7 +109,10 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "floors": link.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
             });
             site_totals(&mut v, &link.contact, &link.bumper, link.seat, lr);
-            v["e_delivered"] = delivered(r, |site| matches!(site, Site::Link { link, .. } if link == l));
+            v["e_delivered"] = delivered(
+                r,
+                |site| matches!(site, Site::Link { link, .. } if link == l),
+            );
             v
         })
         .collect();
@@ -127,7 +130,10 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "floors": w.floors,
             });
             site_totals(&mut v, &w.contact, &w.bumper, w.seat, wr);
-            v["e_delivered"] = delivered(r, |site| matches!(site, Site::Wall { wall, .. } if wall == k));
+            v["e_delivered"] = delivered(
+                r,
+                |site| matches!(site, Site::Wall { wall, .. } if wall == k),
+            );
             v
         })
         .collect();

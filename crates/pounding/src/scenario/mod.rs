@@ -127,7 +127,10 @@ pub struct BuildingDoc {
 
 /// One value for every storey, or a list with one per storey.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(untagged, expecting = "expected one value for every storey, or a list with one per storey")]
+#[serde(
+    untagged,
+    expecting = "expected one value for every storey, or a list with one per storey"
+)]
 pub enum OneOrMany<T> {
     /// The same value for every storey.
     One(T),
@@ -163,7 +166,10 @@ pub struct BoucWenDoc {
 
 /// `alpha` of `papi`: a number, or `eq8` / `calibrate`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(untagged, expecting = "expected a number >= 0, \"eq8\" or \"calibrate\"")]
+#[serde(
+    untagged,
+    expecting = "expected a number >= 0, \"eq8\" or \"calibrate\""
+)]
 pub enum AlphaDoc {
     /// A given value (dimensionless).
     Number(f64),

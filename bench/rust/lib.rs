@@ -1,0 +1,1 @@
+//! Nothing: the benchmarks are in `benches/` (a package needs a target of its own to hold them).
