@@ -148,6 +148,20 @@ impl Format {
 
 /// A uniformly sampled ground acceleration: `acc[k]` (m/s^2) at time `t0 + k dt` (s). The ground is at
 /// rest at `t = 0`; before `t0` the acceleration ramps linearly from 0, and after the last sample it is 0.
+///
+/// A built-in record ([`Record::el_centro_1940`], [`Record::builtin`]), a file's text ([`Record::read`]) or
+/// samples ([`Record::new`]):
+///
+/// ```
+/// use pounding::ground_motion::Record;
+/// let r = Record::el_centro_1940().scaled(2.0)?; // twice the 1940 El Centro N-S record
+/// let p = r.peaks();
+/// assert!((p.pga / 9.80665 - 2.0 * 0.3188).abs() < 1e-3); // PGA in g
+/// assert_eq!((r.dt(), r.npts()), (0.02, 1559)); // s, samples
+/// let pulse = Record::new("pulse", 0.01, 0.01, vec![1.0, -1.0])?; // dt s, t0 s, m/s^2
+/// assert!(pulse.at(0.015).abs() < 1e-12); // linear between samples: 0 halfway
+/// # Ok::<(), pounding::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Record {
     name: String,
