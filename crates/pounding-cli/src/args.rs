@@ -2,6 +2,7 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use pounding::contact::{AlphaRule, Damping, Model, Reading, Tension};
+use pounding::ground_motion::Units;
 
 /// Contact models, single impacts and structural pounding. SI units: m, s, kg, N (k in N/m^n).
 #[derive(Parser, Debug)]
@@ -246,15 +247,17 @@ pub struct SpectrumArgs {
 pub struct RecordArgs {
     /// A record file, or a built-in record: el-centro-1940, synthetic-SEED (seed 0, 1, 2, ...).
     pub file: String,
-    /// File format [default: at2 for *.at2 files, time-acc otherwise].
+    /// File format [default: at2 for a file with the PEER AT2 header (NPTS and DT on line 4) or named
+    /// *.at2, time-acc otherwise].
     #[arg(long, value_enum)]
     pub format: Option<FormatArg>,
     /// Time step of a `values` file, s.
     #[arg(long)]
     pub dt: Option<f64>,
-    /// Units of the accelerations in the file.
-    #[arg(long, value_enum, default_value_t = UnitsArg::G)]
-    pub units: UnitsArg,
+    /// Units of the accelerations in the file: g, m/s2 (m/s^2), cm/s2 (cm/s^2, gal), mm/s2 (mm/s^2)
+    /// [default: the units an AT2 header states, else g; units that contradict the header are refused].
+    #[arg(long, value_parser = units_arg)]
+    pub units: Option<Units>,
     /// Scale factor applied to the accelerations.
     #[arg(long, default_value_t = 1.0)]
     pub scale: f64,
@@ -270,14 +273,9 @@ pub enum FormatArg {
     Values,
 }
 
-#[derive(ValueEnum, Clone, Copy, Debug)]
-pub enum UnitsArg {
-    #[value(name = "g")]
-    G,
-    #[value(name = "m/s2")]
-    MPerS2,
-    #[value(name = "cm/s2")]
-    CmPerS2,
+/// `--units`: the library's one reading of a units name.
+fn units_arg(name: &str) -> Result<Units, String> {
+    Units::parse(name).map_err(|e| e.to_string())
 }
 
 #[derive(Subcommand, Debug)]

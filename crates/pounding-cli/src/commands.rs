@@ -2,7 +2,7 @@
 
 use crate::args::{
     CalibrateArgs, Command, CompareArgs, DropArgs, FormatArg, ImpactArgs, ModelArgs, OutArgs,
-    PaperTable, RecordArgs, RecordCmd, UnitsArg,
+    PaperTable, RecordArgs, RecordCmd,
 };
 use crate::output::{
     fmt_num, fmt_sig, history_csv, num, render_figures, write_atomic, write_files, Report,
@@ -758,13 +758,14 @@ pub fn load_record(a: &RecordArgs) -> Result<Record, CliError> {
     load_record_from(&a.file, a.format, a.dt, a.units, a.scale)
 }
 
-/// Loads a built-in record called `source`, or the file at `source` in `format` (default: at2 for
-/// `*.at2`, time-acc otherwise), with values in `units` multiplied by `scale`.
+/// Loads a built-in record called `source`, or the file at `source` in `format` (default: detected, AT2 by
+/// its header or a `*.at2` name, time-acc otherwise), with values in `units` (default: an AT2 header's,
+/// else g) multiplied by `scale`.
 pub fn load_record_from(
     source: &str,
     format: Option<FormatArg>,
     dt: Option<f64>,
-    units: UnitsArg,
+    units: Option<Units>,
     scale: f64,
 ) -> Result<Record, CliError> {
     let name = flag;
@@ -796,11 +797,7 @@ pub fn load_record_from(
         source: source.to_string(),
         is_file,
         format,
-        units: match units {
-            UnitsArg::G => Units::G,
-            UnitsArg::MPerS2 => Units::MPerS2,
-            UnitsArg::CmPerS2 => Units::CmPerS2,
-        },
+        units,
         scale,
     };
     let record = pounding_study::input::read_record(&spec).map_err(|e| match e {

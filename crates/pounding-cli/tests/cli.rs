@@ -293,6 +293,131 @@ fn record_info_of_the_builtin_and_of_bad_files() {
     );
 }
 
+#[test]
+fn record_units_and_format_from_the_command_line_and_a_scenario() {
+    // A PEER AT2 record in g, renamed: read as AT2 by its header, in the header's units.
+    let dir = tmp("record-units");
+    let at2 = dir.join("rsn6.txt");
+    std::fs::write(
+        &at2,
+        "PEER NGA STRONG MOTION DATABASE RECORD\nImperial Valley-02, 5/19/1940, El Centro Array #9\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    4, DT=   .0100 SEC\n  .10   -.20   .05   .0\n",
+    )
+    .unwrap();
+    let path = at2.to_str().unwrap();
+    // PGA 0.2 g = 0.2 * 9.80665 m/s^2, with or without --units g.
+    for extra in [
+        &[][..],
+        &["--units", "g"],
+        &["--units", "G"],
+        &["--format", "at2"],
+    ] {
+        let v = json(&[&["record", "info", path][..], extra].concat());
+        assert!(
+            (f(&v, "pga") - 0.2 * 9.80665).abs() < 1e-12,
+            "{extra:?}: {v}"
+        );
+    }
+    // One line, exit 2: units that contradict the header, units that do not exist, an AT2 read as two columns.
+    let refused = |args: &[&str], needles: &[&str]| {
+        let o = pounding(args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        for n in needles {
+            assert!(err.contains(n), "{args:?}: {err} lacks {n}");
+        }
+    };
+    let contradiction = [
+        "rsn6.txt: line 3: the header states units of G (g), but the units given are cm/s^2",
+        "--units g",
+    ];
+    refused(
+        &["record", "info", path, "--units", "cm/s2"],
+        &contradiction,
+    );
+    refused(&["record", "info", path, "--units", "gal"], &contradiction);
+    refused(
+        &["record", "info", path, "--units", "m/s"],
+        &[
+            "--units",
+            "units = \"m/s\" is not allowed: one of g, m/s2 (or m/s^2), cm/s2 (or cm/s^2, gal)",
+        ],
+    );
+    refused(
+        &["record", "info", path, "--format", "time-acc"],
+        &[
+            "is not a number",
+            "looks like a PEER AT2 record",
+            "--format at2",
+        ],
+    );
+    // Every spelling of the units of a values file: 250 of them is 2.5 m/s^2 in gal, 250 m/s^2 in m/s^2.
+    let values = dir.join("v.txt");
+    std::fs::write(&values, "250\n-100\n").unwrap();
+    let vpath = values.to_str().unwrap();
+    for (units, pga) in [
+        ("gal", 2.5),
+        ("cm/s2", 2.5),
+        ("cm/s^2", 2.5),
+        ("m/s2", 250.0),
+        ("m/s^2", 250.0),
+        ("mm/s2", 0.25),
+        ("g", 250.0 * 9.80665),
+    ] {
+        let v = json(&[
+            "record", "info", vpath, "--format", "values", "--dt", "0.01", "--units", units,
+        ]);
+        assert!((f(&v, "pga") / pga - 1.0).abs() < 1e-12, "{units}: {v}");
+    }
+    // A scenario: the header's units unless told, and told otherwise it is refused with the file and line.
+    let scenario = std::fs::read_to_string(example("two-sdof.toml"))
+        .unwrap()
+        .replace("record = \"el-centro-1940\"", "file = \"rsn6.txt\"")
+        .replace("output_dt = 0.005", "output_dt = 0.01");
+    let unset = scenario.replace("units = \"g\"", "# no units");
+    let file = dir.join("unset.toml");
+    std::fs::write(&file, &unset).unwrap();
+    let out = dir.join("out-unset");
+    let o = pounding(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert!(
+        (f(&summary["record"], "pga") - 0.2 * 9.80665).abs() < 1e-12,
+        "{summary}"
+    );
+    let told = scenario.replace("units = \"g\"", "units = \"cm/s2\"");
+    let err = refused_scenario(&dir, &told);
+    assert!(
+        err.contains("line 3: the header states units of G (g)"),
+        "{err}"
+    );
+    let err = refused_scenario(&dir, &scenario.replace("units = \"g\"", "units = \"m/s\""));
+    assert!(err.contains("units = \"m/s\" is not allowed"), "{err}");
+}
+
+/// `pounding run` on scenario `text` (in `dir`): refused with exit code 2 and one line, which it returns.
+fn refused_scenario(dir: &std::path::Path, text: &str) -> String {
+    let file = dir.join("refused.toml");
+    std::fs::write(&file, text).unwrap();
+    let o = pounding(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        dir.join("out-refused").to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    err
+}
+
 /// The repository's example scenario `name`.
 fn example(name: &str) -> String {
     format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"))

@@ -66,20 +66,9 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
     result
 }
 
-/// How a record file is read when no format is given: AT2 for `*.at2`, two columns otherwise.
-pub fn default_format(path: &Path) -> Format {
-    if path
-        .extension()
-        .is_some_and(|x| x.eq_ignore_ascii_case("at2"))
-    {
-        Format::At2
-    } else {
-        Format::TimeAcc
-    }
-}
-
 /// The unscaled record `spec` names: a built-in, or its file read in its format (default
-/// [`default_format`]). Messages are one line; a library value error comes back as itself.
+/// [`Format::detect`]: AT2 by its header or a `*.at2` name, else two columns) and units (default: an AT2
+/// header's, else g; [`Record::read`]). Messages are one line; a library value error comes back as itself.
 pub fn read_record(spec: &RecordSpec) -> Result<Record, RecordError> {
     if !spec.is_file {
         return Record::builtin(&spec.source).ok_or_else(|| {
@@ -104,8 +93,10 @@ pub fn read_record(spec: &RecordSpec) -> Result<Record, RecordError> {
         .file_stem()
         .and_then(|s| s.to_str())
         .unwrap_or("record");
-    let format = spec.format.unwrap_or_else(|| default_format(path));
-    Record::parse(stem, &text, format, spec.units)
+    // Without a format, the text decides (an AT2 header), then the file's extension.
+    let name = path.file_name().and_then(|s| s.to_str());
+    let format = spec.format.unwrap_or_else(|| Format::detect(&text, name));
+    Record::read(stem, &text, Some(format), spec.units)
 }
 
 /// A record error as one line: a parse error names the file.

@@ -65,7 +65,62 @@ pub struct Link {
     pub seat: Option<f64>,
 }
 
+/// What a contact between two neighbouring buildings is given: named fields, checked by
+/// [`Scenario::with_contact`] (a scenario file's `[[contact]]`).
+#[derive(Clone, Debug)]
+pub struct LinkSpec {
+    /// The two buildings, by name, in either order; they must be neighbours in the row.
+    pub between: [String; 2],
+    /// Gap at rest, m (>= 0).
+    pub gap: f64,
+    /// Floor pairs `(floor of the left building, floor of the right)`, from 1 (`None`: every pair of floors
+    /// at the same height, within 1 mm).
+    pub floors: Option<Vec<(usize, usize)>>,
+    /// The contact law of every element (see `docs/contact-models.md#choosing-the-contact-stiffness` for its
+    /// stiffness).
+    pub contact: ContactModel,
+    /// A bumper on the joint's face (it must fit in the gap).
+    pub bumper: Option<Bumper>,
+    /// Seat length of the joint for the unseating check, m (> 0).
+    pub seat: Option<f64>,
+}
+
 /// A pounding analysis: buildings, links, ground motion and settings.
+///
+/// Buildings are listed left to right; contacts ([`Scenario::with_contact`]), walls and devices are added
+/// by name; [`Scenario::run`] integrates the motion and returns the [`Results`]. A comparison run without
+/// contact ([`Scenario::without_contact`]) gives the gap each floor pair needed.
+///
+/// ```
+/// use pounding::analysis::{Building, LinkSpec, Scenario};
+/// use pounding::contact::{ContactModel, Model};
+/// use pounding::ground_motion::Record;
+/// use pounding::structure::ShearBuilding;
+///
+/// // Two one-storey buildings, T = 0.5 s and 1.0 s (k = 4 pi^2 m / T^2), 10 mm apart.
+/// let storey = |k: f64| ShearBuilding::builder().masses([5.0e5]).stiffnesses([k]).heights([3.0]).build();
+/// let buildings = vec![
+///     Building { name: "stiff".into(), structure: storey(7.8957e7)? },
+///     Building { name: "flexible".into(), structure: storey(1.9739e7)? },
+/// ];
+/// let scenario = Scenario::new(buildings, Record::el_centro_1940())?
+///     .with_duration(4.0)? // s: the strong motion's first seconds
+///     .with_contact(LinkSpec {
+///         between: ["stiff".into(), "flexible".into()],
+///         gap: 0.01, // m
+///         floors: None, // the floors at the same height: (1, 1)
+///         contact: ContactModel::new(Model::Papi, 2.0e9, 0.65)?, // k in N/m, e
+///         bumper: None,
+///         seat: None,
+///     })?;
+/// let results = scenario.run()?;
+/// let link = &results.links[0];
+/// assert!(link.impacts > 0 && link.peak_force > 0.0); // N
+/// // Without contact, the floors close by more than the gap: that is why they pound.
+/// let free = scenario.without_contact().run()?;
+/// assert!(free.links[0].max_closing[0] > 0.01); // m
+/// # Ok::<(), pounding::Error>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct Scenario {
     buildings: Vec<Building>,
@@ -140,9 +195,25 @@ impl Scenario {
             })
     }
 
+    /// Adds a contact between two neighbouring buildings, given by named fields ([`LinkSpec`]): contact
+    /// elements at its floor pairs, with its bumper and seat. The same as [`Scenario::with_link`] followed
+    /// by [`Scenario::with_link_bumper`] and [`Scenario::with_link_seat`], with the same checks.
+    pub fn with_contact(self, spec: LinkSpec) -> Result<Self, Error> {
+        let [a, b] = &spec.between;
+        let mut s = self.with_link(a, b, spec.gap, &spec.contact, spec.floors.clone())?;
+        if let Some(bumper) = spec.bumper {
+            s = s.with_link_bumper(a, b, bumper)?;
+        }
+        if let Some(seat) = spec.seat {
+            s = s.with_link_seat(a, b, seat)?;
+        }
+        Ok(s)
+    }
+
     /// Adds contact elements between the adjacent buildings `a` and `b` (in either order), with gap `gap`
     /// (m, >= 0) at rest and `contact` at every floor pair of `floors` (`(floor of the left building, floor
     /// of the right)`, from 1), or by default at every pair of floors at the same height (within 1 mm).
+    /// This is the positional, low-level form; [`Scenario::with_contact`] takes the same with named fields.
     pub fn with_link(
         mut self,
         a: &str,

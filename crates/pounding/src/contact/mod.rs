@@ -140,6 +140,13 @@ impl ContactModel {
     /// A contact of `model` with stiffness `k` (N/m^n, > 0) and requested restitution `e` (in (0, 1]);
     /// the model's default exponent and tension rule, published damping formula, `alpha` calibrated and
     /// the energy-split reading (for `papi`), yield ratio `a = 0.1` (for `impact-material`).
+    ///
+    /// **Choosing the stiffness.** `k` is a property of what strikes what, not a numerical knob: for a
+    /// linear law, usually the axial stiffness `E A / L` (N/m) of the floor slab that is struck; for a
+    /// 3/2-power law, the Hertz stiffness of the contacting surfaces, `(4/3) E* sqrt(R)` (N/m^1.5). Peak
+    /// displacements and drifts change little with `k`; the peak force of an impact grows as
+    /// `k^(1/(n+1))` (`v sqrt(k m)` for an elastic linear spring) and contacts shorten as `k` grows, so a
+    /// stiffer contact needs more integration steps. See `docs/contact-models.md#choosing-the-contact-stiffness`.
     pub fn new(model: Model, k: f64, e: f64) -> Result<Self, Error> {
         let info = model.info();
         Ok(Self {

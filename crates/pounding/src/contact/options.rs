@@ -49,7 +49,8 @@ impl ContactOptions {
         self.exponent.unwrap_or(self.model.info().default_n)
     }
 
-    /// The contact model with stiffness `k` (N/m^n).
+    /// The contact model with stiffness `k` (N/m^n; how to choose it: [`ContactModel::new`] and
+    /// `docs/contact-models.md#choosing-the-contact-stiffness`).
     pub fn build(&self, k: f64) -> Result<ContactModel, OptionError> {
         if self.alpha.is_some() && self.model != Model::Papi {
             return Err(OptionError::NotFor {

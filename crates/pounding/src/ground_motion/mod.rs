@@ -2,7 +2,10 @@
 //! time/acceleration, one value per line), the built-in 1940 El Centro N-S record, and peak ground
 //! acceleration, velocity and displacement.
 //!
-//! The library reads text, never files: the caller passes the file's contents.
+//! The library reads text, never files: the caller passes the file's contents to [`Record::read`], which
+//! detects the format ([`Format::detect`]: AT2 by its header, whatever the file's name) and takes the units
+//! an AT2 header states (`ACCELERATION TIME SERIES IN UNITS OF G`) unless told otherwise, refusing units
+//! that contradict the header. Units names (`g`, `m/s2`, `cm/s2`, `gal`, ...) are read by [`Units::parse`].
 
 pub mod parse;
 pub mod spectrum;
@@ -18,18 +21,77 @@ pub enum Units {
     G,
     /// m/s^2.
     MPerS2,
-    /// cm/s^2 (gal).
+    /// cm/s^2 (gal): 0.01 m/s^2.
     CmPerS2,
+    /// mm/s^2: 0.001 m/s^2.
+    MmPerS2,
 }
 
 impl Units {
+    /// The spellings [`Units::parse`] accepts, as messages list them.
+    pub const ALLOWED: &'static str =
+        "one of g, m/s2 (or m/s^2), cm/s2 (or cm/s^2, gal), mm/s2 (or mm/s^2)";
+
     /// The factor to m/s^2.
     pub fn to_m_per_s2(self) -> f64 {
         match self {
             Units::G => crate::impact::STANDARD_GRAVITY,
             Units::MPerS2 => 1.0,
             Units::CmPerS2 => 0.01,
+            Units::MmPerS2 => 0.001,
         }
+    }
+
+    /// The units called `name`: `g`; `m/s2` or `m/s^2`; `cm/s2`, `cm/s^2` or `gal`; `mm/s2` or `mm/s^2`
+    /// (any case, surrounding spaces ignored). The one reading of a units name: scenario files
+    /// (`units = "gal"`) and the command line (`--units gal`) both use it. Anything else is
+    /// [`Error::Choice`] naming `units`, the value and the spellings allowed.
+    ///
+    /// ```
+    /// use pounding::ground_motion::Units;
+    /// assert_eq!(Units::parse("gal")?, Units::CmPerS2);
+    /// assert_eq!("m/s^2".parse::<Units>()?, Units::MPerS2);
+    /// let e = Units::parse("m/s").unwrap_err().to_string();
+    /// assert_eq!(e, r#"units = "m/s" is not allowed: one of g, m/s2 (or m/s^2), cm/s2 (or cm/s^2, gal), mm/s2 (or mm/s^2)"#);
+    /// # Ok::<(), pounding::Error>(())
+    /// ```
+    pub fn parse(name: &str) -> Result<Units, Error> {
+        match name.trim().to_ascii_lowercase().as_str() {
+            "g" => Ok(Units::G),
+            "m/s2" | "m/s^2" => Ok(Units::MPerS2),
+            "cm/s2" | "cm/s^2" | "gal" => Ok(Units::CmPerS2),
+            "mm/s2" | "mm/s^2" => Ok(Units::MmPerS2),
+            _ => Err(Error::Choice {
+                name: "units",
+                value: format!("{name:?}"),
+                allowed: Self::ALLOWED.into(),
+            }),
+        }
+    }
+
+    /// The name the tool prints: `g`, `m/s^2`, `cm/s^2` or `mm/s^2`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Units::G => "g",
+            Units::MPerS2 => "m/s^2",
+            Units::CmPerS2 => "cm/s^2",
+            Units::MmPerS2 => "mm/s^2",
+        }
+    }
+}
+
+impl std::str::FromStr for Units {
+    type Err = Error;
+    /// [`Units::parse`].
+    fn from_str(s: &str) -> Result<Self, Error> {
+        Units::parse(s)
+    }
+}
+
+impl std::fmt::Display for Units {
+    /// [`Units::name`].
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 
@@ -57,8 +119,49 @@ pub enum Format {
     },
 }
 
+impl Format {
+    /// The format of a record's `text` when none is given: [`Format::At2`] if the text has the layout of a
+    /// PEER AT2 record ([`parse::looks_like_at2`]: a header line holding NPTS and DT, line 4 of a PEER file,
+    /// before any line of numbers), whatever the file is called; else `At2` if `file_name` ends in `.at2`
+    /// (any case), so that a damaged AT2 file gets the AT2 reader's message; else [`Format::TimeAcc`].
+    /// `Values` needs a time step, so it is never detected.
+    ///
+    /// ```
+    /// use pounding::ground_motion::Format;
+    /// let at2 = "PEER NGA STRONG MOTION DATABASE RECORD\nTitle\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    3, DT=   .0100 SEC\n.1 .2 .3\n";
+    /// assert_eq!(Format::detect(at2, Some("renamed.txt")), Format::At2);
+    /// assert_eq!(Format::detect("0.0, 0.1\n0.01, 0.2\n", Some("record.csv")), Format::TimeAcc);
+    /// ```
+    pub fn detect(text: &str, file_name: Option<&str>) -> Format {
+        let at2_name = file_name.is_some_and(|n| {
+            n.len() >= 4
+                && n.is_char_boundary(n.len() - 4)
+                && n[n.len() - 4..].eq_ignore_ascii_case(".at2")
+        });
+        if at2_name || parse::looks_like_at2(text) {
+            Format::At2
+        } else {
+            Format::TimeAcc
+        }
+    }
+}
+
 /// A uniformly sampled ground acceleration: `acc[k]` (m/s^2) at time `t0 + k dt` (s). The ground is at
 /// rest at `t = 0`; before `t0` the acceleration ramps linearly from 0, and after the last sample it is 0.
+///
+/// A built-in record ([`Record::el_centro_1940`], [`Record::builtin`]), a file's text ([`Record::read`]) or
+/// samples ([`Record::new`]):
+///
+/// ```
+/// use pounding::ground_motion::Record;
+/// let r = Record::el_centro_1940().scaled(2.0)?; // twice the 1940 El Centro N-S record
+/// let p = r.peaks();
+/// assert!((p.pga / 9.80665 - 2.0 * 0.3188).abs() < 1e-3); // PGA in g
+/// assert_eq!((r.dt(), r.npts()), (0.02, 1559)); // s, samples
+/// let pulse = Record::new("pulse", 0.01, 0.01, vec![1.0, -1.0])?; // dt s, t0 s, m/s^2
+/// assert!(pulse.at(0.015).abs() < 1e-12); // linear between samples: 0 halfway
+/// # Ok::<(), pounding::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Record {
     name: String,
@@ -121,26 +224,76 @@ impl Record {
         })
     }
 
-    /// Parses `text` in `format`, with accelerations in `units`.
+    /// Parses `text` in `format`, with accelerations in `units`: both given, as
+    /// [`Record::read`]`(name, text, Some(format), Some(units))`. An AT2 header that states other units
+    /// (`UNITS OF G` read as cm/s^2) is an error.
     pub fn parse(
         name: &str,
         text: &str,
         format: Format,
         units: Units,
     ) -> Result<Self, RecordError> {
-        let f = units.to_m_per_s2();
-        let (t0, dt, values) = match format {
-            Format::At2 => {
-                let (dt, v) = parse::at2(text)?;
-                (dt, dt, v)
-            }
-            Format::TimeAcc => parse::time_acc(text)?,
+        Self::read(name, text, Some(format), Some(units))
+    }
+
+    /// Reads the record in `text` (a file's contents; the library opens no files), called `name`.
+    ///
+    /// - `format`: `None` detects it ([`Format::detect`], with `name` as the file name): AT2 if the text has
+    ///   the PEER header layout, whatever the file's name, else two columns (time, acceleration).
+    /// - `units` of the accelerations: `None` takes the units an AT2 header states (`... IN UNITS OF G`,
+    ///   [`parse::at2_units`]), and g for a text that states none. Given units must agree with the header's:
+    ///   an AT2 header that says `UNITS OF G` read as cm/s^2 is an error (a [`ParseError`] on the header's
+    ///   line naming both), not a record 981 times too weak. A header whose units are not known here needs
+    ///   `units` given.
+    ///
+    /// A text that is not in the format given but looks like an AT2 gets a hint to read it as one.
+    ///
+    /// ```
+    /// use pounding::ground_motion::{Format, Record, Units};
+    /// let text = "PEER NGA STRONG MOTION DATABASE RECORD
+    /// Imperial Valley, 1940, El Centro
+    /// ACCELERATION TIME SERIES IN UNITS OF G
+    /// NPTS=    4, DT=   .0100 SEC
+    ///   .10   -.20   .05   .0
+    /// ";
+    /// // Format and units from the text: an AT2 in g.
+    /// let r = Record::read("elcentro.txt", text, None, None)?;
+    /// assert_eq!((r.npts(), r.dt()), (4, 0.01));
+    /// assert_eq!(r.accelerations()[1], -0.2 * 9.80665); // m/s^2
+    /// // Units that contradict the header are refused, with a hint.
+    /// let e = Record::read("elcentro", text, None, Some(Units::CmPerS2)).unwrap_err();
+    /// assert!(e.to_string().starts_with("line 3: the header states units of G (g), but the units given are cm/s^2"));
+    /// # Ok::<(), pounding::ground_motion::RecordError>(())
+    /// ```
+    pub fn read(
+        name: &str,
+        text: &str,
+        format: Option<Format>,
+        units: Option<Units>,
+    ) -> Result<Self, RecordError> {
+        let format = format.unwrap_or_else(|| Format::detect(text, Some(name)));
+        let parsed = match format {
+            Format::At2 => parse::at2(text).map(|(dt, v)| (dt, dt, v)),
+            Format::TimeAcc => parse::time_acc(text),
             Format::Values { dt } => {
                 check("dt", dt, dt > 0.0, "dt > 0 (s)")?;
-                (dt, dt, parse::values(text)?)
+                parse::values(text).map(|v| (dt, dt, v))
             }
         };
         // AT2 and value files start one step after rest, so t0 = dt; a time column gives its own t0.
+        let (t0, dt, values) = parsed.map_err(|mut e| {
+            if format != Format::At2 && parse::looks_like_at2(text) {
+                e.message.push_str(
+                    "; the text looks like a PEER AT2 record (a header line with NPTS and DT): set format = \"at2\" (--format at2)",
+                );
+            }
+            e
+        })?;
+        let units = match format {
+            Format::At2 => at2_units(text, units)?,
+            _ => units.unwrap_or(Units::G),
+        };
+        let f = units.to_m_per_s2();
         Ok(Self::new(
             name,
             dt,
@@ -310,6 +463,35 @@ impl Record {
             pgv,
             pgd,
         }
+    }
+}
+
+/// The units of an AT2 `text`'s accelerations: those given, which must agree with the header's; else the
+/// header's; else g.
+fn at2_units(text: &str, given: Option<Units>) -> Result<Units, ParseError> {
+    let stated = parse::at2_units(text)?;
+    match (stated, given) {
+        (None, given) => Ok(given.unwrap_or(Units::G)),
+        (Some(s), None) => s.units.ok_or_else(|| ParseError {
+            line: s.line,
+            message: format!(
+                "the header states units of {:?}, which are not units of acceleration known here: give the units ({})",
+                s.stated,
+                Units::ALLOWED
+            ),
+        }),
+        (Some(s), Some(given)) => match s.units {
+            Some(h) if h != given => Err(ParseError {
+                line: s.line,
+                message: format!(
+                    "the header states units of {} ({h}), but the units given are {given}: set units = \"{}\" (--units {}), or leave the units out to use the header's",
+                    s.stated,
+                    h.name().replace('^', ""),
+                    h.name().replace('^', "")
+                ),
+            }),
+            _ => Ok(given),
+        },
     }
 }
 

@@ -1,7 +1,8 @@
 //! Parsers of ground-motion text formats. They return values in the file's units; [`super::Record`]
-//! converts. Errors carry the 1-based line number.
+//! converts. Errors carry the 1-based line number. [`looks_like_at2`] and [`at2_units`] read what an AT2
+//! header says about the text: its layout and its units.
 
-use super::ParseError;
+use super::{ParseError, Units};
 
 fn err(line: usize, message: impl Into<String>) -> ParseError {
     ParseError {
@@ -40,15 +41,9 @@ fn number(tok: &str, line: usize) -> Result<f64, ParseError> {
 /// non-numeric token (a footer such as `*** End Data ***`) and their count must equal NPTS.
 pub fn at2(text: &str) -> Result<(f64, Vec<f64>), ParseError> {
     let lines: Vec<&str> = text.lines().collect();
-    let (hline, header) = lines
-        .iter()
-        .enumerate()
-        .take(40)
-        .find(|(_, l)| {
-            let u = l.to_ascii_uppercase();
-            u.contains("NPTS") && u.contains("DT")
-        })
+    let hline = header_line(&lines)
         .ok_or_else(|| err(1, "no header line with NPTS and DT in the first 40 lines"))?;
+    let header = lines[hline];
     let upper = header.to_ascii_uppercase();
     let nums: Vec<f64> = upper
         .split(|c: char| c.is_whitespace() || c == ',' || c == '=')
@@ -106,6 +101,108 @@ pub fn at2(text: &str) -> Result<(f64, Vec<f64>), ParseError> {
         ));
     }
     Ok((dt, values))
+}
+
+/// The 0-based index of an AT2 header's line holding NPTS and DT: the first of the first 40 lines that holds
+/// both words (any case).
+fn header_line(lines: &[&str]) -> Option<usize> {
+    lines.iter().take(40).position(|l| {
+        let u = l.to_ascii_uppercase();
+        u.contains("NPTS") && u.contains("DT")
+    })
+}
+
+/// A line of data: at least one token, every token a number.
+fn is_data(l: &str) -> bool {
+    let mut toks = fields(l).peekable();
+    toks.peek().is_some() && toks.all(|t| t.parse::<f64>().is_ok())
+}
+
+/// Whether `text` has the layout of a PEER AT2 record: a line holding NPTS and DT (any case; line 4 of a
+/// PEER file, `NPTS=  4000, DT= .01000 SEC` or `4000 0.01000 NPTS, DT`) among its first 40 lines, before any
+/// line of numbers. Comment lines (`#`, `%`) are not looked at, so a two-column file whose comments mention
+/// NPTS and DT is not taken for an AT2.
+pub fn looks_like_at2(text: &str) -> bool {
+    for l in text.lines().take(40) {
+        if is_comment(l) {
+            continue;
+        }
+        if is_data(l) {
+            return false;
+        }
+        let u = l.to_ascii_uppercase();
+        if u.contains("NPTS") && u.contains("DT") {
+            return true;
+        }
+    }
+    false
+}
+
+/// The units an AT2 header states: `ACCELERATION TIME SERIES IN UNITS OF G` (PEER NGA), `... UNITS OF
+/// CM/S/S`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StatedUnits {
+    /// 1-based line of the statement.
+    pub line: usize,
+    /// The word after `UNITS OF`, as written (without trailing punctuation).
+    pub stated: String,
+    /// What it means; `None` for a word that is not a unit of acceleration known here.
+    pub units: Option<Units>,
+}
+
+/// The unit of acceleration an AT2 header's word names: `G`; `CM/S/S`, `CM/S2`, `CM/SEC^2`, `GAL`; `M/S/S`,
+/// `M/S2`; `MM/S/S`, `MM/S2` (any case, `SEC` for `S`, `**2` or `^2` for `2`).
+fn header_units(word: &str) -> Option<Units> {
+    let w = word
+        .to_ascii_uppercase()
+        .replace("SEC", "S")
+        .replace("**", "^")
+        .replace("^2", "2")
+        .replace("/S/S", "/S2");
+    match w.as_str() {
+        "G" => Some(Units::G),
+        "M/S2" => Some(Units::MPerS2),
+        "CM/S2" | "GAL" | "GALS" => Some(Units::CmPerS2),
+        "MM/S2" => Some(Units::MmPerS2),
+        _ => None,
+    }
+}
+
+/// What the header of the AT2 `text` says about its units (the lines before the one holding NPTS and DT):
+/// `None` if it says nothing (no `UNITS OF`), else the first statement. An error if the header says the
+/// record is a velocity or displacement time series (PEER's `.VT2` and `.DT2` files), not accelerations.
+pub fn at2_units(text: &str) -> Result<Option<StatedUnits>, ParseError> {
+    let lines: Vec<&str> = text.lines().collect();
+    let end = header_line(&lines).unwrap_or(0);
+    for (i, l) in lines[..end].iter().enumerate() {
+        let u = l.to_ascii_uppercase();
+        for kind in ["VELOCITY", "DISPLACEMENT"] {
+            if u.contains(kind) && u.contains("TIME") && !u.contains("ACCELERATION") {
+                return Err(err(
+                    i + 1,
+                    format!(
+                        "the header says this is a {} time series ('{}'): give an acceleration record (PEER's *.AT2)",
+                        kind.to_ascii_lowercase(),
+                        l.trim()
+                    ),
+                ));
+            }
+        }
+        if let Some(at) = u.find("UNITS OF") {
+            let word: String = l[at + "UNITS OF".len()..]
+                .split_whitespace()
+                .next()
+                .unwrap_or("")
+                .trim_end_matches(['.', ',', ';', ':', ')'])
+                .to_string();
+            return Ok(Some(StatedUnits {
+                line: i + 1,
+                units: header_units(&word),
+                stated: word,
+            }));
+        }
+    }
+    Ok(None)
 }
 
 /// Splits a data line on whitespace, commas, semicolons or tabs.

@@ -21,8 +21,9 @@ pub struct RecordSpec {
     pub is_file: bool,
     /// The file's format, if given; `Values` carries its `dt` (s).
     pub format: Option<Format>,
-    /// Units of the file's accelerations.
-    pub units: Units,
+    /// Units of the file's accelerations, if given (`None`: the AT2 header's, else g; see
+    /// [`Record::read`]).
+    pub units: Option<Units>,
     /// Scale factor on the accelerations (dimensionless).
     pub scale: f64,
 }
@@ -61,7 +62,7 @@ fn lib(entry: &str, what: &str, e: Error) -> SchemaError {
 
 impl GroundMotionDoc {
     /// The record this ground motion names, checked: exactly one of `record` and `file`; `format` and `dt`
-    /// only with a file; `units` one of `g`, `m/s2`, `cm/s2`.
+    /// only with a file; `units` one of [`Units::parse`]'s names.
     pub fn spec(&self) -> Result<RecordSpec, SchemaError> {
         let at = "ground_motion";
         let (source, is_file) = match (&self.record, &self.file) {
@@ -117,15 +118,10 @@ impl GroundMotionDoc {
                 "[ground_motion] dt applies to format = values only (other formats carry their time step)",
             ));
         }
-        let units = match word(
-            "units",
-            "ground_motion.units",
-            &self.units,
-            &["g", "m/s2", "cm/s2"],
-        )? {
-            "g" => Units::G,
-            "m/s2" => Units::MPerS2,
-            _ => Units::CmPerS2,
+        let units = match self.units.as_deref().map(Units::parse) {
+            None => None,
+            Some(Ok(u)) => Some(u),
+            Some(Err(e)) => return Err(SchemaError::new("ground_motion.units", e.to_string())),
         };
         Ok(RecordSpec {
             source,

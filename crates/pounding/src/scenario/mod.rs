@@ -60,15 +60,20 @@ pub struct GroundMotionDoc {
     /// A record file (relative paths are the caller's to resolve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub file: Option<String>,
-    /// `at2`, `time-acc` or `values` (default: `at2` for `*.at2` files, `time-acc` otherwise).
+    /// `at2`, `time-acc` or `values` (default: detected, [`Format::detect`](crate::ground_motion::Format::detect):
+    /// `at2` for a text with the PEER AT2 header, a line holding NPTS and DT, whatever the file's name, or
+    /// for a `*.at2` file; `time-acc` otherwise).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub format: Option<String>,
     /// Time step of a `values` file, s.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dt: Option<f64>,
-    /// Units of the file's accelerations: `g`, `m/s2` or `cm/s2`.
-    #[serde(default = "default_units")]
-    pub units: String,
+    /// Units of the file's accelerations: `g`, `m/s2` (or `m/s^2`), `cm/s2` (or `cm/s^2`, `gal`), `mm/s2`
+    /// (or `mm/s^2`), read by [`Units::parse`](crate::ground_motion::Units::parse). Default: the units an
+    /// AT2 header states (`... IN UNITS OF G`), else g. Units given that contradict an AT2 header are an
+    /// error.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub units: Option<String>,
     /// Scale factor on the accelerations (dimensionless).
     #[serde(default = "one")]
     pub scale: f64,
@@ -390,9 +395,6 @@ pub struct DeviceDoc {
     pub floors: Option<Vec<Vec<usize>>>,
 }
 
-fn default_units() -> String {
-    "g".into()
-}
 fn one() -> f64 {
     1.0
 }

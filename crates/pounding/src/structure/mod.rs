@@ -18,6 +18,25 @@ use crate::error::check;
 use crate::Error;
 
 /// A lumped-mass shear building.
+///
+/// Built with named values by [`ShearBuilding::builder`] (or positionally by [`ShearBuilding::new`]):
+///
+/// ```
+/// use pounding::structure::ShearBuilding;
+/// let b = ShearBuilding::builder()
+///     .masses([4.0e5, 4.0e5, 3.5e5]) // kg, floor 1 upwards
+///     .stiffnesses([6.0e8, 5.0e8, 4.0e8]) // N/m, storey 1 upwards
+///     .heights([3.0; 3]) // m
+///     .damping_ratio(0.05) // on modes 1 and 2
+///     .build()?;
+/// let t1 = b.modes().periods()[0]; // s
+/// assert!(t1 > 0.2 && t1 < 0.5, "{t1}");
+/// assert_eq!(b.elevations(), [3.0, 6.0, 9.0]); // m
+/// // A missing list is named in the error.
+/// let e = ShearBuilding::builder().masses([4.0e5]).heights([3.0]).build().unwrap_err();
+/// assert_eq!(e.to_string(), "stiffnesses has 0 values, but there are 1 floors: give one per floor");
+/// # Ok::<(), pounding::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ShearBuilding {
@@ -83,10 +102,74 @@ impl Modes {
     }
 }
 
+/// Named values of a [`ShearBuilding`], from [`ShearBuilding::builder`]: the floor masses, storey
+/// stiffnesses and storey heights (required, one per storey) and the damping ratio (0.05 unless set).
+/// [`ShearBuildingBuilder::build`] checks them as [`ShearBuilding::new`] does; a list left out is an
+/// [`Error::Length`] naming it.
+#[derive(Clone, Debug, PartialEq)]
+#[must_use = "a builder does nothing until `build` is called"]
+pub struct ShearBuildingBuilder {
+    masses: Vec<f64>,
+    stiffnesses: Vec<f64>,
+    heights: Vec<f64>,
+    damping_ratio: f64,
+}
+
+impl Default for ShearBuildingBuilder {
+    fn default() -> Self {
+        Self {
+            masses: Vec::new(),
+            stiffnesses: Vec::new(),
+            heights: Vec::new(),
+            damping_ratio: 0.05,
+        }
+    }
+}
+
+impl ShearBuildingBuilder {
+    /// Floor masses, kg (> 0), floor 1 (the lowest) upwards: one per storey.
+    pub fn masses(mut self, masses: impl Into<Vec<f64>>) -> Self {
+        self.masses = masses.into();
+        self
+    }
+    /// Storey stiffnesses, N/m (> 0), storey 1 (ground to floor 1) upwards.
+    pub fn stiffnesses(mut self, stiffnesses: impl Into<Vec<f64>>) -> Self {
+        self.stiffnesses = stiffnesses.into();
+        self
+    }
+    /// Storey heights, m (1e-3 to 1e4), storey 1 upwards.
+    pub fn heights(mut self, heights: impl Into<Vec<f64>>) -> Self {
+        self.heights = heights.into();
+        self
+    }
+    /// Rayleigh damping ratio of modes 1 and 2, in `[0, 1)` (dimensionless; 0.05 unless set).
+    pub fn damping_ratio(mut self, zeta: f64) -> Self {
+        self.damping_ratio = zeta;
+        self
+    }
+    /// The building, checked: [`ShearBuilding::new`] with these values.
+    pub fn build(self) -> Result<ShearBuilding, Error> {
+        ShearBuilding::new(
+            self.masses,
+            self.stiffnesses,
+            self.heights,
+            self.damping_ratio,
+        )
+    }
+}
+
 impl ShearBuilding {
+    /// A builder with named values: `ShearBuilding::builder().masses(..).stiffnesses(..).heights(..)
+    /// .damping_ratio(..).build()` (see [`ShearBuilding`]). Prefer it to [`ShearBuilding::new`], whose three
+    /// lists of numbers are easy to pass in the wrong order.
+    pub fn builder() -> ShearBuildingBuilder {
+        ShearBuildingBuilder::default()
+    }
+
     /// A building with floor masses (kg, floor 1 upwards), storey stiffnesses (N/m, storey 1 upwards), storey
     /// heights (m) and a damping ratio `zeta` in `[0, 1)` on modes 1 and 2. All three lists must have the same
-    /// length, at least 1, with positive finite values.
+    /// length, at least 1, with positive finite values. This is the positional, low-level form; the same
+    /// with named values is [`ShearBuilding::builder`].
     pub fn new(
         masses: Vec<f64>,
         stiffnesses: Vec<f64>,

@@ -130,3 +130,254 @@ fn peaks_between_samples_are_found_exactly() {
     assert!((p.pgd - 23.0 / 96.0).abs() < 1e-14, "{}", p.pgd);
     assert_eq!(p.pga, 1.0);
 }
+
+/// A PEER NGA-style AT2 text: line 3 states `units`, line 4 holds NPTS and DT, then `values`.
+fn at2_text(units_line: &str, values: &str) -> String {
+    let n = values.split_whitespace().count();
+    format!(
+        "PEER NGA STRONG MOTION DATABASE RECORD\nImperial Valley-02, 5/19/1940, El Centro Array #9, 180\n{units_line}\nNPTS=  {n}, DT=   .0100 SEC\n{values}\n"
+    )
+}
+
+#[test]
+fn an_at2_header_sets_the_units_when_none_are_given() {
+    let text = at2_text(
+        "ACCELERATION TIME SERIES IN UNITS OF G",
+        "  .1000  -.2500   .0500",
+    );
+    // 1 g = 9.80665 m/s^2 (standard gravity, by definition).
+    let want = [0.1 * G, -0.25 * G, 0.05 * G];
+    for format in [None, Some(Format::At2)] {
+        for units in [None, Some(Units::G)] {
+            let r = Record::read("rsn", &text, format, units).unwrap();
+            for (a, w) in r.accelerations().iter().zip(want) {
+                assert!((a - w).abs() < 1e-15, "{format:?} {units:?}: {a} vs {w}");
+            }
+        }
+    }
+    // The other statements PEER and others write, and what they mean in m/s^2 (1 gal = 1 cm/s^2).
+    for (statement, factor) in [
+        (
+            "ACCELERATION TIME HISTORY IN UNITS OF G. FILTER POINTS: HP=0.1 Hz",
+            G,
+        ),
+        ("ACCELERATION IN UNITS OF CM/S/S", 0.01),
+        ("Acceleration time series in units of cm/sec^2", 0.01),
+        ("ACCELERATION IN UNITS OF GAL", 0.01),
+        ("ACCELERATION IN UNITS OF M/S2", 1.0),
+        ("ACCELERATION IN UNITS OF MM/SEC/SEC", 0.001),
+    ] {
+        let r = Record::read("rsn", &at2_text(statement, "2.0 -4.0"), None, None)
+            .unwrap_or_else(|e| panic!("{statement}: {e}"));
+        assert_eq!(
+            r.accelerations(),
+            &[2.0 * factor, -4.0 * factor],
+            "{statement}"
+        );
+    }
+    // The PEER fixture says "UNITS OF G." on line 3: the same record with or without units = g.
+    let unset = Record::read("ielc180", AT2, None, None).unwrap();
+    assert_eq!(
+        unset,
+        Record::parse("ielc180", AT2, Format::At2, Units::G).unwrap()
+    );
+    // A header that states no units: g, unless told otherwise.
+    let silent = at2_text("ACCELERATION TIME SERIES", "1.0");
+    assert_eq!(
+        Record::read("r", &silent, None, None)
+            .unwrap()
+            .accelerations(),
+        &[G]
+    );
+    let cm = Record::read("r", &silent, None, Some(Units::CmPerS2)).unwrap();
+    assert_eq!(cm.accelerations(), &[0.01]);
+}
+
+#[test]
+fn units_that_contradict_an_at2_header_are_one_line_naming_both() {
+    let text = at2_text("ACCELERATION TIME SERIES IN UNITS OF G", ".1 .2");
+    for (given, name) in [(Units::CmPerS2, "cm/s^2"), (Units::MPerS2, "m/s^2")] {
+        let e = Record::parse("rsn", &text, Format::At2, given).unwrap_err();
+        let msg = e.to_string();
+        assert_eq!(msg.lines().count(), 1, "{msg}");
+        assert!(
+            msg.starts_with("line 3: the header states units of G (g)"),
+            "{msg}"
+        );
+        assert!(
+            msg.contains(&format!("the units given are {name}")),
+            "{msg}"
+        );
+        assert!(msg.contains("units = \"g\" (--units g)"), "{msg}");
+        assert!(msg.contains("leave the units out"), "{msg}");
+    }
+    // The same with a header in cm/s/s and units g.
+    let cm = at2_text("ACCELERATION IN UNITS OF CM/S/S", ".1 .2");
+    let msg = Record::read("r", &cm, None, Some(Units::G))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        msg.contains("units of CM/S/S (cm/s^2), but the units given are g"),
+        "{msg}"
+    );
+    assert!(msg.contains("units = \"cm/s2\""), "{msg}");
+}
+
+#[test]
+fn at2_headers_the_reader_cannot_use_are_errors() {
+    // Units it does not know: they must be given (and, given, they are used).
+    let inches = at2_text("ACCELERATION IN UNITS OF IN/S/S", "1.0");
+    let msg = Record::read("r", &inches, None, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        msg.starts_with("line 3: the header states units of \"IN/S/S\""),
+        "{msg}"
+    );
+    assert!(msg.contains("give the units (one of g, m/s2"), "{msg}");
+    let given = Record::read("r", &inches, None, Some(Units::MPerS2)).unwrap();
+    assert_eq!(given.accelerations(), &[1.0]);
+    // PEER's velocity and displacement files are not accelerations, whatever the units given.
+    let vt2 = at2_text("VELOCITY TIME SERIES IN UNITS OF CM/S", "1.0");
+    for units in [None, Some(Units::CmPerS2)] {
+        let msg = Record::read("r", &vt2, None, units)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            msg.contains("line 3: the header says this is a velocity time series"),
+            "{msg}"
+        );
+    }
+}
+
+#[test]
+fn an_at2_is_found_by_its_header_whatever_its_name() {
+    let text = at2_text("ACCELERATION TIME SERIES IN UNITS OF G", ".1 .2 .3");
+    for name in [None, Some("RSN6_IMPVALL.I_I-ELC180.txt"), Some("record")] {
+        assert_eq!(Format::detect(&text, name), Format::At2, "{name:?}");
+    }
+    // The old PEER layout (values before the labels on line 4).
+    let old = "PEER STRONG MOTION DATABASE RECORD\nIMPERIAL VALLEY 5/19/40 0439, EL CENTRO ARRAY #9, 180\nACCELERATION TIME HISTORY IN UNITS OF G\n 3    0.01000    NPTS, DT\n.1 .2 .3\n";
+    assert_eq!(Format::detect(old, Some("x.dat")), Format::At2);
+    let r = Record::read("x", old, None, None).unwrap();
+    assert_eq!((r.npts(), r.dt(), r.t0()), (3, 0.01, 0.01));
+    // Two columns are two columns, even with comments that mention NPTS and DT; the name is only a hint.
+    let csv = "# NPTS = 3, DT = 0.01 s\ntime_s,acc\n0.0,0.1\n0.01,0.2\n0.02,0.3\n";
+    assert_eq!(Format::detect(csv, Some("r.csv")), Format::TimeAcc);
+    assert_eq!(Format::detect(csv, None), Format::TimeAcc);
+    assert_eq!(Record::read("r", csv, None, None).unwrap().npts(), 3);
+    // Numbers first, then a line that mentions NPTS and DT: not an AT2 header.
+    assert_eq!(
+        Format::detect("0 0.1\n0.01 0.2\nNPTS DT\n", None),
+        Format::TimeAcc
+    );
+    // A damaged file named *.at2 is read as AT2, to get the AT2 reader's message.
+    assert_eq!(
+        Format::detect("0.1\n0.2\n", Some("broken.AT2")),
+        Format::At2
+    );
+    let msg = Record::read("broken.AT2", "0.1\n0.2\n", None, None)
+        .unwrap_err()
+        .to_string();
+    assert!(msg.contains("no header line with NPTS and DT"), "{msg}");
+}
+
+#[test]
+fn an_at2_read_in_another_format_gets_a_hint() {
+    let text = at2_text("ACCELERATION TIME SERIES IN UNITS OF G", ".1 .2 .3");
+    for format in [Format::TimeAcc, Format::Values { dt: 0.01 }] {
+        let msg = Record::read("r", &text, Some(format), None)
+            .unwrap_err()
+            .to_string();
+        assert_eq!(msg.lines().count(), 1, "{msg}");
+        assert!(msg.contains("is not a number"), "{msg}");
+        assert!(
+            msg.contains("looks like a PEER AT2 record")
+                && msg.contains("set format = \"at2\" (--format at2)"),
+            "{msg}"
+        );
+    }
+    // No hint for a text that is not an AT2.
+    let msg = parse::time_acc("t a\n0 0\nabc 0.3\n")
+        .unwrap_err()
+        .to_string();
+    let via = Record::read("r", "t a\n0 0\nabc 0.3\n", Some(Format::TimeAcc), None)
+        .unwrap_err()
+        .to_string();
+    assert_eq!(via, msg);
+}
+
+#[test]
+fn every_units_spelling_and_its_factor() {
+    // Factors to m/s^2 by definition: g = 9.80665, 1 gal = 1 cm/s^2 = 0.01, 1 mm/s^2 = 0.001.
+    for (name, units, factor) in [
+        ("g", Units::G, G),
+        ("G", Units::G, G),
+        ("m/s2", Units::MPerS2, 1.0),
+        ("m/s^2", Units::MPerS2, 1.0),
+        ("cm/s2", Units::CmPerS2, 0.01),
+        ("cm/s^2", Units::CmPerS2, 0.01),
+        ("gal", Units::CmPerS2, 0.01),
+        (" Gal ", Units::CmPerS2, 0.01),
+        ("mm/s2", Units::MmPerS2, 0.001),
+        ("mm/s^2", Units::MmPerS2, 0.001),
+    ] {
+        let u = Units::parse(name).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(u, units, "{name}");
+        assert_eq!(u.to_m_per_s2(), factor, "{name}");
+        // Read back from the name the tool prints.
+        assert_eq!(Units::parse(u.name()).unwrap(), u);
+        let r = Record::read("v", "100\n", Some(Format::Values { dt: 0.01 }), Some(u)).unwrap();
+        assert!(
+            (r.accelerations()[0] - 100.0 * factor).abs() < 1e-12,
+            "{name}"
+        );
+    }
+    for bad in ["m/s", "cm", "", "g's", "ft/s2"] {
+        match Units::parse(bad) {
+            Err(pounding::Error::Choice {
+                name: "units",
+                value,
+                allowed,
+            }) => {
+                assert_eq!(value, format!("{bad:?}"));
+                assert!(
+                    allowed.contains("gal") && allowed.contains("m/s^2"),
+                    "{allowed}"
+                );
+            }
+            other => panic!("{bad}: {other:?}"),
+        }
+    }
+}
+
+#[cfg(feature = "serde")]
+#[test]
+fn scenario_units_and_format_keys() {
+    use pounding::scenario::GroundMotionDoc;
+    let doc = |extra: &str| -> GroundMotionDoc {
+        serde_json::from_str(&format!(r#"{{"file": "r.txt"{extra}}}"#)).unwrap()
+    };
+    // Not given: None, so that an AT2 header's units are used.
+    let spec = doc("").spec().unwrap();
+    assert_eq!((spec.units, spec.format), (None, None));
+    for (name, units) in [
+        ("gal", Units::CmPerS2),
+        ("m/s^2", Units::MPerS2),
+        ("g", Units::G),
+    ] {
+        let spec = doc(&format!(r#", "units": "{name}""#)).spec().unwrap();
+        assert_eq!(spec.units, Some(units), "{name}");
+    }
+    let e = doc(r#", "units": "m/s""#).spec().unwrap_err();
+    assert_eq!(e.key, "ground_motion.units");
+    assert!(
+        e.message
+            .starts_with("units = \"m/s\" is not allowed: one of g, m/s2"),
+        "{}",
+        e.message
+    );
+    // A scenario that does not say its units serialises without them.
+    let text = serde_json::to_string(&doc("")).unwrap();
+    assert!(!text.contains("units"), "{text}");
+}
