@@ -109,10 +109,12 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "floors": link.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
             });
             site_totals(&mut v, &link.contact, &link.bumper, link.seat, lr);
-            v["e_delivered"] = delivered(
+            if let Some(e) = delivered(
                 r,
                 |site| matches!(site, Site::Link { link, .. } if link == l),
-            );
+            ) {
+                v["e_delivered"] = e;
+            }
             v
         })
         .collect();
@@ -130,10 +132,12 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "floors": w.floors,
             });
             site_totals(&mut v, &w.contact, &w.bumper, w.seat, wr);
-            v["e_delivered"] = delivered(
+            if let Some(e) = delivered(
                 r,
                 |site| matches!(site, Site::Wall { wall, .. } if wall == k),
-            );
+            ) {
+                v["e_delivered"] = e;
+            }
             v
         })
         .collect();
@@ -259,8 +263,9 @@ fn flat_law(name: &str, v: Value) -> Value {
 
 /// The contact law, bumper, seat and totals of a link or a wall, into `v`.
 /// The smallest and largest delivered e (`-v_out / v_i`) of the ended impacts at the sites `at` picks, with
-/// a word on why they differ from the e asked of the contact; null without such impacts.
-fn delivered(r: &Results, at: impl Fn(Site) -> bool) -> Value {
+/// a word on why they differ from the e asked of the contact; `None` without such impacts (the key is left
+/// out: a result file holds no null).
+fn delivered(r: &Results, at: impl Fn(Site) -> bool) -> Option<Value> {
     let e: Vec<f64> = r
         .impacts
         .iter()
@@ -268,15 +273,15 @@ fn delivered(r: &Results, at: impl Fn(Site) -> bool) -> Value {
         .filter_map(|i| i.e_post)
         .collect();
     if e.is_empty() {
-        return Value::Null;
+        return None;
     }
-    json!({
+    Some(json!({
         "min": num(e.iter().copied().fold(f64::INFINITY, f64::min)),
         "max": num(e.iter().copied().fold(f64::NEG_INFINITY, f64::max)),
         "note": "separation over approach velocity; the calibration is exact for two free bodies, and the storey, \
                  damping and other forces on the floors act during each contact (docs/verification.md, \
                  \"Impacts inside a run\")",
-    })
+    }))
 }
 
 fn site_totals(

@@ -226,17 +226,19 @@ def spectrum(
     periods: Optional[Iterable[float]] = None,
     format: Optional[str] = None,
     dt: Optional[float] = None,
-    units: str = "g",
+    units: Optional[str] = None,
     scale: float = 1.0,
 ) -> Dict[str, Any]:
     """The elastic response spectrum of a record (a built-in name or a file; ``format``, ``dt``, ``units`` and
-    ``scale`` as in a scenario's ``[ground_motion]``) for oscillators of damping ratio ``damping`` at
+    ``scale`` as in a scenario's ``[ground_motion]``; ``units`` unset: an AT2 header's, else g) for oscillators of damping ratio ``damping`` at
     ``periods`` (s; default 100 from 0.02 to 10 s, evenly spaced in log), by the exact piecewise-linear
     solution with peaks located between samples: a dict of ``damping``, ``periods`` (s), ``sd`` (m), ``psv``
     (m/s) and ``psa`` (m/s^2), numpy arrays; the numbers of ``pounding record spectrum --json``."""
     p = np.geomspace(0.02, 10.0, 100) if periods is None else np.asarray(list(periods), dtype=np.float64)
     source = os.fspath(record)
-    gm = {"record" if source == "el-centro-1940" else "file": source, "units": units, "scale": float(scale)}
+    gm = {"record" if source == "el-centro-1940" else "file": source, "scale": float(scale)}
+    if units is not None:
+        gm["units"] = units
     if format is not None:
         gm["format"] = format
     if dt is not None:
