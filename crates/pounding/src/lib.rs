@@ -61,7 +61,7 @@
 //! ## Where to read more
 //!
 //! In the repository's `docs/` folder: `docs/contact-models.md` (the models, their damping formulas and
-//! sources, and `#choosing-the-contact-stiffness`), `docs/scenarios.md` (scenario files: the schema of
+//! sources, and `#5-choosing-the-contact-stiffness`), `docs/scenarios.md` (scenario files: the schema of
 //! `pounding::scenario`, behind the `serde` feature, and how record files are read) and
 //! `docs/verification.md` (what the numbers are checked against: exact solutions, convergence, OpenSees).
 //!

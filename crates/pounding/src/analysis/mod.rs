@@ -76,7 +76,7 @@ pub struct LinkSpec {
     /// Floor pairs `(floor of the left building, floor of the right)`, from 1 (`None`: every pair of floors
     /// at the same height, within 1 mm).
     pub floors: Option<Vec<(usize, usize)>>,
-    /// The contact law of every element (see `docs/contact-models.md#choosing-the-contact-stiffness` for its
+    /// The contact law of every element (see `docs/contact-models.md#5-choosing-the-contact-stiffness` for its
     /// stiffness).
     pub contact: ContactModel,
     /// A bumper on the joint's face (it must fit in the gap).

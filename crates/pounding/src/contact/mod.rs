@@ -146,7 +146,7 @@ impl ContactModel {
     /// 3/2-power law, the Hertz stiffness of the contacting surfaces, `(4/3) E* sqrt(R)` (N/m^1.5). Peak
     /// displacements and drifts change little with `k`; the peak force of an impact grows as
     /// `k^(1/(n+1))` (`v sqrt(k m)` for an elastic linear spring) and contacts shorten as `k` grows, so a
-    /// stiffer contact needs more integration steps. See `docs/contact-models.md#choosing-the-contact-stiffness`.
+    /// stiffer contact needs more integration steps. See `docs/contact-models.md#5-choosing-the-contact-stiffness`.
     pub fn new(model: Model, k: f64, e: f64) -> Result<Self, Error> {
         let info = model.info();
         Ok(Self {

@@ -50,7 +50,7 @@ impl ContactOptions {
     }
 
     /// The contact model with stiffness `k` (N/m^n; how to choose it: [`ContactModel::new`] and
-    /// `docs/contact-models.md#choosing-the-contact-stiffness`).
+    /// `docs/contact-models.md#5-choosing-the-contact-stiffness`).
     pub fn build(&self, k: f64) -> Result<ContactModel, OptionError> {
         if self.alpha.is_some() && self.model != Model::Papi {
             return Err(OptionError::NotFor {
