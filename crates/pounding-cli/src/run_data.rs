@@ -35,6 +35,14 @@ pub fn impact_loops_csv(s: &Scenario, r: &Results) -> String {
     out
 }
 
+/// The last component of a path (a record file's name), or the whole text if it has none: subtitles show
+/// the file, not its folders.
+pub fn file_name(path: &str) -> String {
+    Path::new(path)
+        .file_name()
+        .map_or_else(|| path.to_string(), |n| n.to_string_lossy().into_owned())
+}
+
 /// One impact's force–penetration path, from impact-loops.csv.
 pub struct LoopData {
     /// Index of the impact in [`RunData::impacts`].
@@ -573,7 +581,7 @@ impl RunData {
             Path::new(scenario)
                 .file_name()
                 .map_or(scenario.into(), |n| n.to_string_lossy()),
-            rec["source"].as_str().unwrap_or("record"),
+            file_name(rec["source"].as_str().unwrap_or("record")),
             crate::output::fmt_num(rec["scale"].as_f64().unwrap_or(1.0)),
             crate::output::fmt_num(summary["duration"].as_f64().unwrap_or(0.0)),
             impacts.iter().filter(|i| !i.consumed).count()

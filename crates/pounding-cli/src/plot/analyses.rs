@@ -54,6 +54,7 @@ pub fn record(r: &Record, subtitle: &str) -> Figure {
         ],
         columns: 1,
         plot: (PLOT.0, 170.0),
+        ..Figure::default()
     }
 }
 
@@ -87,6 +88,7 @@ pub fn spectrum(s: &Spectrum, title: &str) -> Figure {
         ],
         columns: 1,
         plot: (PLOT.0, 170.0),
+        ..Figure::default()
     }
 }
 
@@ -146,6 +148,7 @@ pub fn separation(report: &Value, subtitle: &str) -> Figure {
         panels: vec![p],
         columns: 1,
         plot: (PLOT.0, 320.0),
+        ..Figure::default()
     }
 }
 
@@ -273,6 +276,7 @@ pub fn ida(
             panels: curves,
             columns: n.min(2),
             plot: (420.0, 260.0),
+            ..Figure::default()
         });
     }
     let n = frag.len();
@@ -288,6 +292,7 @@ pub fn ida(
         panels: frag,
         columns: n.clamp(1, 2),
         plot: (420.0, 260.0),
+        ..Figure::default()
     });
     out
 }
