@@ -1003,7 +1003,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
         }
     }
     let several = given.len() > 1;
-    for (e, names) in &given {
+    for (k, (e, names)) in given.iter().enumerate() {
         r.series.push(Series {
             label: if several {
                 format!("requested e = {} ({})", fmt_num(*e), names.join(", "))
@@ -1011,8 +1011,10 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
                 format!("requested e = {}", fmt_num(*e))
             },
             mark: Mark::HLine(*e),
+            // Two contacts given different e: dashes, then dots.
             style: Style {
                 width: 1.4,
+                dash: [Dash::Dashed, Dash::Dotted][k % 2],
                 ..Style::reference()
             },
         });

@@ -559,10 +559,29 @@ fn same_stroke(st: &Style, c: Same) -> String {
 }
 
 /// The legend text of a series: its label, and the line it coincides with.
-fn legend_label(ser: &Series, same: Option<(Same, &String)>) -> String {
-    match same {
-        Some((_, of)) => format!("{} (same as {of})", ser.label),
+fn legend_label(p: &Panel, k: usize, same: &[Option<Same>]) -> String {
+    let ser = &p.series[k];
+    match same[k] {
+        Some(c) => format!("{} (same as {})", ser.label, short_name(p, c.root)),
         None => ser.label.clone(),
+    }
+}
+
+/// The label of series `k` without its parenthesis ("hunt-crossley (e_post 0.65)" → "hunt-crossley"),
+/// unless another label of the panel starts the same ("Anagnostopoulos (kelvin-voigt, clamped)").
+fn short_name(p: &Panel, k: usize) -> String {
+    let of = &p.series[k].label;
+    match of.split_once(" (") {
+        Some((head, _))
+            if !p
+                .series
+                .iter()
+                .enumerate()
+                .any(|(i, s)| i != k && s.label.starts_with(head)) =>
+        {
+            head.to_string()
+        }
+        _ => of.clone(),
     }
 }
 
@@ -790,10 +809,7 @@ fn legend_size(p: &Panel, same: &[Option<Same>]) -> (f64, f64) {
         .collect();
     let w = labelled
         .iter()
-        .map(|(k, s)| {
-            let of = same[*k].map(|c| (c, &p.series[c.root].label));
-            text_width(&legend_label(s, of), LEGEND)
-        })
+        .map(|(k, _)| text_width(&legend_label(p, *k, same), LEGEND))
         .fold(0.0, f64::max);
     (w + 40.0, labelled.len() as f64 * ENTRY + 8.0)
 }
@@ -852,9 +868,9 @@ fn legend_svg(
     p: &Panel,
     place: Place,
     (x0, y0, x1): (f64, f64, f64),
-    same: &[Option<Same>],
+    same_all: &[Option<Same>],
 ) {
-    let (w, h) = legend_size(p, same);
+    let (w, h) = legend_size(p, same_all);
     let (lx, ly) = match place {
         Place::Nowhere => return,
         Place::Right => (x1 + 14.0, y0),
@@ -876,7 +892,7 @@ fn legend_svg(
     for (i, (k, ser)) in labelled.enumerate() {
         let cy = ly + 4.0 + ENTRY * (i as f64 + 0.5);
         let sx = lx + 8.0;
-        let same = same[k].map(|c| (c, &p.series[c.root].label));
+        let same = same_all[k];
         match ser.mark {
             Mark::Points { .. } => {
                 legend_dot(
@@ -904,7 +920,7 @@ fn legend_svg(
                     px(sx),
                     px(cy),
                     match same {
-                        Some((c, _)) => same_stroke(
+                        Some(c) => same_stroke(
                             &ser.style,
                             Same {
                                 rank: 1,
@@ -932,7 +948,7 @@ fn legend_svg(
             "\n<text x=\"{}\" y=\"{}\">{}</text>",
             px(sx + 28.0),
             px(cy + 0.35 * LEGEND),
-            esc(&legend_label(ser, same))
+            esc(&legend_label(p, k, same_all))
         );
     }
     s.push_str("\n</g>");

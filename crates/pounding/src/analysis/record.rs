@@ -132,6 +132,13 @@ impl Path {
 
     fn push(&mut self, t: f64, d: f64, f: f64) {
         let p = &mut self.points;
+        // A step of zero length (an event at the instant of the last one) adds no point.
+        if p.t.last() == Some(&t) {
+            let k = p.t.len() - 1;
+            p.penetration[k] = d;
+            p.force[k] = f;
+            return;
+        }
         if self.tentative {
             p.t.pop();
             p.penetration.pop();
