@@ -865,7 +865,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
             if mine.len() - consumed == 1 { "" } else { "s" }
         );
         if consumed > 0 {
-            title += &format!(", bumper consumed in {consumed} (layer and hard law together)");
+            title += &format!(", bumper consumed in {consumed}");
         }
         if !mine.is_empty() {
             title += &format!(", largest {}", human(peak, "N", 3));
@@ -940,7 +940,15 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
             "Line: the force at the output samples with each impact's located peak inserted; markers: the \
              located peak of each impact (peak_force_N of impacts.csv). Each panel has its own force axis."
                 .into(),
-        ],
+        ]
+        .into_iter()
+        .chain(
+            d.impacts
+                .iter()
+                .any(|i| i.consumed)
+                .then(|| "With a bumper, the line is the layer's and the hard law's force together; markers are each law's impacts.".to_string()),
+        )
+        .collect(),
         ..Figure::default()
     };
     let closing_fig = Figure {
@@ -1076,16 +1084,15 @@ fn impact_loops(d: &RunData) -> Option<Figure> {
         });
         mine.truncate(LOOPS_PER_LEVEL);
         let mut p = Panel::new(
-            format!(
-                "{}: {} of {total} impact{}",
-                lv.label,
-                if total > mine.len() {
-                    format!("the {} strongest", mine.len())
-                } else {
-                    "all".to_string()
-                },
-                if total == 1 { "" } else { "s" }
-            ),
+            if total > mine.len() {
+                format!("{}: strongest {} of {total}", lv.label, mine.len())
+            } else {
+                format!(
+                    "{}: {total} impact{}",
+                    lv.label,
+                    if total == 1 { "" } else { "s" }
+                )
+            },
             Quantity::new("penetration", "m"),
             force(),
         );
@@ -1139,7 +1146,7 @@ fn impact_loops(d: &RunData) -> Option<Figure> {
         title: "Force against penetration of the strongest impacts of each contact level".into(),
         subtitle: d.subtitle.clone(),
         columns,
-        plot: (300.0, 210.0),
+        plot: (340.0, 220.0),
         panels,
         notes: vec![
             "Every accepted integration step of each impact and its located peak (marker), from \

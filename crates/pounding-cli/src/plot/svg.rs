@@ -367,7 +367,7 @@ fn panel_svg(
             "\n<text class=\"ptitle\" x=\"{}\" y=\"{}\" font-size=\"{PANEL_TITLE}\">{}</text>",
             px(x0),
             px(y0 - 9.0),
-            esc(&p.title)
+            esc(&one_line(&p.title, PANEL_TITLE, m.size.w))
         );
     }
     // Data, clipped to the plot area. Lines that coincide with an earlier one are drawn in dashes that
