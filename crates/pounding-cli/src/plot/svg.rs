@@ -74,7 +74,9 @@ pub fn render(fig: &Figure) -> String {
             bottom
         }
     };
-    let sub = one_line(&fig.subtitle, SUBTITLE, width - 40.0);
+    // A subtitle too long for one line keeps its leading clauses (up to a "; ") and hands the rest to the
+    // notes; one without such a break is cut with an ellipsis. It never wraps.
+    let (sub, rest) = split_subtitle(&fig.subtitle, SUBTITLE, width - 40.0);
     let head =
         (14.0 + TITLE + 6.0 + if sub.is_empty() { 0.0 } else { SUBTITLE + 4.0 } + 6.0).ceil();
     let mut row_top = Vec::with_capacity(rows);
@@ -83,9 +85,9 @@ pub fn render(fig: &Figure) -> String {
         row_top.push(y);
         y += top + size.h + bottom_of(row);
     }
-    let notes: Vec<String> = fig
-        .notes
+    let notes: Vec<String> = rest
         .iter()
+        .chain(&fig.notes)
         .flat_map(|n| wrap(n, NOTE, width - 40.0))
         .collect();
     let notes_top = y;
@@ -165,6 +167,23 @@ fn axes_of(p: &Panel) -> (Axis, Axis) {
         Axis::new(&p.y, yl, yh, tight_y)
     };
     (Axis::new(&p.x, xl, xh, p.x_tight || p.x_range.is_some()), y)
+}
+
+/// A subtitle on one line no wider than `width` px at `size` px: the longest run of its "; "-separated
+/// clauses that fits, and the other clauses (for a note); or, if even its first clause is too long, that
+/// clause cut with an ellipsis and the rest.
+fn split_subtitle(text: &str, size: f64, width: f64) -> (String, Option<String>) {
+    if text_width(text, size) <= width {
+        return (text.to_string(), None);
+    }
+    let clauses: Vec<&str> = text.split("; ").collect();
+    let mut k = 1;
+    while k < clauses.len() && text_width(&clauses[..=k].join("; "), size) <= width {
+        k += 1;
+    }
+    let head = clauses[..k].join("; ");
+    let rest = (k < clauses.len()).then(|| clauses[k..].join("; "));
+    (one_line(&head, size, width), rest)
 }
 
 /// `text` on one line no wider than `width` px at `size` px: cut at the end with an ellipsis if too long.
@@ -984,7 +1003,20 @@ mod tests {
     }
 
     #[test]
-    fn long_subtitles_wrap_at_spaces() {
+    fn long_subtitles_stay_on_one_line_and_lose_nothing() {
+        let text = "papi, k = 1e9 N/m, e = 0.65, damping formula; m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s";
+        let (line, rest) = split_subtitle(text, 12.0, 300.0);
+        assert!(text_width(&line, 12.0) <= 300.0);
+        assert_eq!(format!("{line}; {}", rest.unwrap()), text);
+        // One clause too long: cut with an ellipsis.
+        let path = "six.toml: records/a-very-long-folder-name/another-level/with-a-long-record-file-name.csv";
+        let (line, rest) = split_subtitle(path, 12.0, 300.0);
+        assert!(line.ends_with('\u{2026}') && text_width(&line, 12.0) <= 300.0);
+        assert_eq!(rest, None);
+    }
+
+    #[test]
+    fn long_notes_wrap_at_spaces() {
         let text = "m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s, e_pre = 0.65, formula damping";
         let lines = wrap(text, 12.0, 200.0);
         assert!(lines.len() > 1);
