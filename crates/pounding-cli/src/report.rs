@@ -7,6 +7,7 @@
 
 use crate::args::ReportArgs;
 use crate::output::{fmt_sig, write_atomic};
+use crate::plot::axis::plain;
 use crate::plot::{svg, Figure};
 use crate::run_data::RunData;
 use crate::CliError;
@@ -55,9 +56,29 @@ fn e(s: &str) -> String {
     svg::esc(s)
 }
 
-/// A number for people: 5 significant digits.
+/// A number for people: 5 significant digits, never in e-notation.
 fn n(v: &Value) -> String {
-    v.as_f64().map_or("–".into(), |x| fmt_sig(x, 5))
+    v.as_f64().map_or("–".into(), |x| plain(x, 5))
+}
+
+/// A length (m in the files) in mm, 4 significant digits.
+fn mm(v: &Value) -> String {
+    v.as_f64().map_or("–".into(), |x| plain(x * 1e3, 4))
+}
+
+/// A force (N in the files) in MN, 4 significant digits.
+fn mn(v: &Value) -> String {
+    v.as_f64().map_or("–".into(), |x| plain(x * 1e-6, 4))
+}
+
+/// An energy (J in the files) in kJ, 4 significant digits.
+fn kj(v: &Value) -> String {
+    v.as_f64().map_or("–".into(), |x| plain(x * 1e-3, 4))
+}
+
+/// A time in s, to the ms (times of events within a run).
+fn secs(x: f64) -> String {
+    format!("{x:.3}")
 }
 
 /// A table: id, caption, header cells (with units) and rows of cells (already escaped).
@@ -81,12 +102,17 @@ fn table(out: &mut String, id: &str, caption: &str, head: &[&str], rows: &[Vec<S
     out.push_str("\n</tbody></table>");
 }
 
+/// The display units of the report's tables and figures (the files keep base SI units).
+pub const UNITS: &str = "lengths in mm, forces in MN, energies in kJ, accelerations in m/s², velocities in \
+                         m/s, times in s (one impact's duration in ms); the files keep base SI units";
+
 const STYLE: &str = "
 body { font-family: 'DejaVu Sans', Verdana, Arial, Helvetica, sans-serif; color: #1a1a1a; margin: 2em auto;
        max-width: 1180px; padding: 0 1.5em; line-height: 1.45; }
 h1 { font-size: 1.6em; margin-bottom: 0.2em; }
 h2 { font-size: 1.25em; border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 2em; }
-p.meta { color: #555; margin-top: 0; }
+p.meta { color: #555; margin-top: 0; overflow-wrap: anywhere; }
+dd { overflow-wrap: anywhere; }
 nav a { margin-right: 1em; }
 table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }
 caption { text-align: left; font-weight: bold; padding-bottom: 0.3em; }
@@ -128,9 +154,10 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
     let _ = write!(h, "\n<h1>{}</h1>", e(&title));
     let _ = write!(
         h,
-        "\n<p class=\"meta\">{} · written by pounding {} from the files of its output folder · SI units</p>",
+        "\n<p class=\"meta\">{} · written by pounding {} from the files of its output folder · {}</p>",
         e(&d.subtitle),
-        env!("CARGO_PKG_VERSION")
+        env!("CARGO_PKG_VERSION"),
+        UNITS
     );
     h.push_str("\n<nav><a href=\"#summary\">Summary</a><a href=\"#scenario\">Scenario</a><a href=\"#modes\">Modal properties</a><a href=\"#response\">Peak response</a><a href=\"#contacts\">Contacts</a><a href=\"#figures\">Figures</a><a href=\"#impacts\">Impacts</a></nav>");
 
@@ -182,7 +209,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             &mut h,
             &format!("building {}", b["name"].as_str().unwrap_or("")),
             format!(
-                "{} storey{} ({}), T1 = {} s, roof peak displacement {} m{most}",
+                "{} storey{} ({}), T1 = {} s, roof peak displacement {} mm{most}",
                 b["storeys"],
                 if b["storeys"].as_u64() == Some(1) {
                     ""
@@ -191,7 +218,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 },
                 e(&models(b)),
                 n(&b["periods"][0]),
-                n(&peak)
+                mm(&peak)
             ),
         );
     }
@@ -199,19 +226,19 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
         let iso = &b["isolator"];
         if let Some(model) = iso["model"].as_str() {
             let clearance = match (&iso["clearance"], &iso["exceeds_clearance"]) {
-                (Value::Number(c), Value::Bool(true)) => {
-                    format!(" against a clearance of {c} m: EXCEEDED")
+                (c @ Value::Number(_), Value::Bool(true)) => {
+                    format!(" against a clearance of {} mm: EXCEEDED", mm(c))
                 }
-                (Value::Number(c), _) => format!(" against a clearance of {c} m"),
+                (c @ Value::Number(_), _) => format!(" against a clearance of {} mm", mm(c)),
                 _ => String::new(),
             };
             dl(
                 &mut h,
                 &format!("isolator of {}", b["name"].as_str().unwrap_or("")),
                 format!(
-                    "{}, peak displacement {} m{clearance}",
+                    "{}, peak displacement {} mm{clearance}",
                     e(model),
-                    n(&iso["peak_displacement"])
+                    mm(&iso["peak_displacement"])
                 ),
             );
         }
@@ -221,10 +248,10 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             &mut h,
             &format!("wall {}", w["name"].as_str().unwrap_or("")),
             format!(
-                "{} impacts, peak force {} N, dissipated {} J",
+                "{} impacts, peak force {} MN, dissipated {} kJ",
                 w["impacts"],
-                n(&w["peak_force"]),
-                n(&w["dissipated_energy"])
+                mn(&w["peak_force"]),
+                kj(&w["dissipated_energy"])
             ),
         );
     }
@@ -233,10 +260,10 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             &mut h,
             &format!("contact {}", between(c)),
             format!(
-                "{} impacts, peak force {} N, dissipated {} J",
+                "{} impacts, peak force {} MN, dissipated {} kJ",
                 c["impacts"],
-                n(&c["peak_force"]),
-                n(&c["dissipated_energy"])
+                mn(&c["peak_force"]),
+                kj(&c["dissipated_energy"])
             ),
         );
     }
@@ -247,7 +274,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
         dl(
             &mut h,
             "delivered e of the impacts",
-            format!("{} to {}", fmt_sig(lo, 4), fmt_sig(hi, 4)),
+            format!("{} to {}", plain(lo, 4), plain(hi, 4)),
         );
     }
     dl(
@@ -308,7 +335,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 "period (s)",
                 "damping (%)",
                 "effective mass (%)",
-                "shape, floor 1 up (largest = 1)",
+                "shape, floor 1 up (largest |component| = 1)",
             ],
             &rows,
         );
@@ -324,11 +351,15 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             rows.push(vec![
                 name.clone(),
                 (f + 1).to_string(),
-                n(&b["peak_displacement"][f]),
-                n(&b["time_of_peak_displacement"][f]),
+                mm(&b["peak_displacement"][f]),
+                b["time_of_peak_displacement"][f]
+                    .as_f64()
+                    .map_or("–".into(), secs),
                 n(&b["peak_absolute_acceleration"][f]),
-                n(&b["time_of_peak_absolute_acceleration"][f]),
-                n(&b["residual_displacement"][f]),
+                b["time_of_peak_absolute_acceleration"][f]
+                    .as_f64()
+                    .map_or("–".into(), secs),
+                mm(&b["residual_displacement"][f]),
             ]);
         }
     }
@@ -339,11 +370,11 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
         &[
             "building",
             "floor",
-            "peak displacement (m)",
+            "peak displacement (mm)",
             "at (s)",
             "peak absolute acceleration (m/s²)",
             "at (s)",
-            "residual displacement (m)",
+            "residual displacement (mm)",
         ],
         &rows,
     );
@@ -359,23 +390,25 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             .map(|j| {
                 // Ductility, yield force and hysteretic energy are listed for the inelastic storeys only.
                 let at = inelastic.iter().position(|&i| i == j as u64 + 1);
-                let only = |key: &str| at.map_or(String::new(), |i| n(&b[key][i]));
+                let only = |key: &str, f: fn(&Value) -> String| {
+                    at.map_or(String::new(), |i| f(&b[key][i]))
+                };
                 vec![
                     (j + 1).to_string(),
                     e(b["storey_models"][j].as_str().unwrap_or("linear")),
-                    n(&b["peak_drift"][j]),
+                    mm(&b["peak_drift"][j]),
                     b["peak_drift_ratio"][j]
                         .as_f64()
                         .map_or("–".into(), |r| format!("{:.3}", 100.0 * r)),
-                    n(&b["peak_storey_shear"][j]),
-                    n(&b["residual_drift"][j]),
-                    only("yield_forces"),
+                    mn(&b["peak_storey_shear"][j]),
+                    mm(&b["residual_drift"][j]),
+                    only("yield_forces", mn),
                     at.map_or(String::new(), |i| {
                         b["ductility"][i]
                             .as_f64()
                             .map_or("–".into(), |mu| format!("{mu:.3}"))
                     }),
-                    only("hysteretic_energy"),
+                    only("hysteretic_energy", kj),
                 ]
             })
             .collect();
@@ -389,13 +422,13 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             &[
                 "storey",
                 "model",
-                "peak drift (m)",
+                "peak drift (mm)",
                 "drift ratio (%)",
-                "peak shear (N)",
-                "residual drift (m)",
-                "yield force (N)",
+                "peak shear (MN)",
+                "residual drift (mm)",
+                "yield force (MN)",
                 "ductility",
-                "hysteretic energy (J)",
+                "hysteretic energy (kJ)",
             ],
             &rows,
         );
@@ -448,8 +481,8 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 .filter_map(Value::as_f64)
                 .fold(0.0, f64::max);
             let seat = match (&c["seat"], &c["unseated"]) {
-                (Value::Number(x), Value::Bool(true)) => format!("{x}: UNSEATED"),
-                (Value::Number(x), _) => format!("{x}: seated"),
+                (x @ Value::Number(_), Value::Bool(true)) => format!("{}: UNSEATED", mm(x)),
+                (x @ Value::Number(_), _) => format!("{}: seated", mm(x)),
                 _ => "–".into(),
             };
             let impacts = match c["consumed"].as_u64() {
@@ -458,17 +491,17 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             };
             vec![
                 e(&label),
-                n(&c["gap"]),
+                mm(&c["gap"]),
                 floors.join(", "),
                 e(c["model"].as_str().unwrap_or("")),
                 n(&c["e"]),
                 format!("{} (n = {})", n(&c["stiffness"]), n(&c["exponent"])),
                 param,
                 impacts,
-                n(&c["peak_force"]),
-                n(&c["max_penetration"]),
-                n(&c["dissipated_energy"]),
-                crate::output::fmt_sig(opening, 6),
+                mn(&c["peak_force"]),
+                mm(&c["max_penetration"]),
+                kj(&c["dissipated_energy"]),
+                plain(opening * 1e3, 4),
                 seat,
             ]
         })
@@ -479,18 +512,18 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
         "Contacts",
         &[
             "contact",
-            "gap (m)",
+            "gap (mm)",
             "floors",
             "model",
             "e",
-            "k (N/m^n)",
+            "k (N/m^n, SI)",
             "damping",
             "impacts",
-            "peak force (N)",
-            "max penetration (m)",
-            "dissipated (J)",
-            "largest opening (m)",
-            "seat (m)",
+            "peak force (MN)",
+            "max penetration (mm)",
+            "dissipated (kJ)",
+            "largest opening (mm)",
+            "seat (mm)",
         ],
         &rows,
     );
@@ -503,12 +536,12 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                 .flatten()
                 .map(|p| format!("{}-{}", p[0], p[1]))
                 .collect();
-            let peaks = |key: &str| {
+            let peaks = |key: &str, f: fn(&Value) -> String| {
                 d[key]
                     .as_array()
                     .into_iter()
                     .flatten()
-                    .map(n)
+                    .map(f)
                     .collect::<Vec<_>>()
                     .join(", ")
             };
@@ -526,9 +559,9 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                     })
                     .collect::<Vec<_>>()
                     .join(", ")),
-                peaks("peak_force"),
-                peaks("max_closing"),
-                peaks("max_opening"),
+                peaks("peak_force", mn),
+                peaks("max_closing", mm),
+                peaks("max_opening", mm),
             ]
         })
         .collect();
@@ -536,15 +569,15 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
         table(
             &mut h,
             "devices",
-            "Devices (law: stiffness N/m, damping N s/m, slack m)",
+            "Devices (law, SI: stiffness N/m, damping N s/m, slack m)",
             &[
                 "device",
                 "between",
                 "floors",
                 "law",
-                "peak force (N)",
-                "largest closing (m)",
-                "largest opening (m)",
+                "peak force (MN)",
+                "largest closing (mm)",
+                "largest opening (mm)",
             ],
             &devices,
         );
@@ -553,7 +586,7 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
     table(
         &mut h,
         "energy",
-        "Energy at the end of the analysis (J): input = kinetic + strain + structural damping + storey hysteresis + contact",
+        "Energy at the end of the analysis (kJ): input = kinetic + strain + structural damping + storey hysteresis + contact",
         &[
             "input",
             "kinetic",
@@ -564,12 +597,12 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             "balance error (relative)",
         ],
         &[vec![
-            n(&en["input"]),
-            n(&en["kinetic"]),
-            n(&en["strain"]),
-            n(&en["structural_damping"]),
-            n(&en["hysteretic"]),
-            n(&en["contact"]),
+            kj(&en["input"]),
+            kj(&en["kinetic"]),
+            kj(&en["strain"]),
+            kj(&en["structural_damping"]),
+            kj(&en["hysteretic"]),
+            kj(&en["contact"]),
             n(&s["energy_balance_error"]),
         ]],
     );
@@ -615,14 +648,14 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
                     (f, 0) | (0, f) => f.to_string(),
                     (l, r) => format!("{l}-{r}"),
                 },
-                fmt_sig(i.time, 6),
-                fmt_sig(i.v_i, 4),
-                i.e_post.map_or("(not ended)".into(), |x| fmt_sig(x, 4)),
-                fmt_sig(i.peak_force, 4),
-                fmt_sig(i.time_of_peak_force, 6),
-                fmt_sig(i.duration, 4),
-                fmt_sig(i.max_penetration, 4),
-                fmt_sig(i.dissipated_energy, 4),
+                format!("{:.4}", i.time),
+                plain(i.v_i, 4),
+                i.e_post.map_or("(not ended)".into(), |x| plain(x, 4)),
+                plain(i.peak_force * 1e-6, 4),
+                format!("{:.4}", i.time_of_peak_force),
+                plain(i.duration * 1e3, 4),
+                plain(i.max_penetration * 1e3, 4),
+                plain(i.dissipated_energy * 1e-3, 4),
             ]
         })
         .collect();
@@ -637,15 +670,15 @@ pub fn html(d: &RunData, figs: &[Figure]) -> String {
             "touch (s)",
             "v_i (m/s)",
             "e_post",
-            "peak force (N)",
+            "peak force (MN)",
             "peak at (s)",
-            "duration (s)",
-            "max penetration (m)",
-            "dissipated (J)",
+            "duration (ms)",
+            "max penetration (mm)",
+            "dissipated (kJ)",
         ],
         &rows,
     );
-    h.push_str("\n<footer><p class=\"meta\">Files: summary.json, response.csv, impacts.csv, energy.csv, scenario.toml (units in every column header).</p></footer>");
+    h.push_str("\n<footer><p class=\"meta\">Files: summary.json, response.csv, impacts.csv, impact-loops.csv, energy.csv, scenario.toml (base SI units, named in every column header).</p></footer>");
     h.push_str("\n</body>\n</html>\n");
     h
 }

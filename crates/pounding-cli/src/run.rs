@@ -76,6 +76,10 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         ),
         ("response.csv", response_csv(scenario, &results)),
         ("impacts.csv", impacts_csv(scenario, &results)),
+        (
+            crate::run_data::LOOPS_FILE,
+            crate::run_data::impact_loops_csv(scenario, &results),
+        ),
         ("energy.csv", energy_csv(&results)),
     ];
     // The whole set is written into a folder beside --out and appears there in one rename.

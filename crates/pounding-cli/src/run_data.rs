@@ -2,8 +2,58 @@
 //! `pounding report DIR` gives the same figures as `run --plots` did, from the files alone.
 
 use crate::CliError;
+use pounding::analysis::{Results, Scenario};
 use serde_json::Value;
+use std::fmt::Write as _;
 use std::path::Path;
+
+/// The file of every impact's force–penetration path, in a run's output folder.
+pub const LOOPS_FILE: &str = "impact-loops.csv";
+
+/// `impact-loops.csv`: one block of rows per impact, in the order of impacts.csv (`impact` is its row,
+/// from 1), each row a point of the impact's path: its touch, the end of every accepted integration step in
+/// contact and its located peak, in time order (t_s, s; penetration_m, m; force_N, N). `stride` is 1 when
+/// every step is kept, `2^k` for an impact that outgrew [`pounding::analysis::MAX_LOOP_POINTS`] points.
+pub fn impact_loops_csv(s: &Scenario, r: &Results) -> String {
+    let mut out =
+        String::from("impact,contact,floor_left,floor_right,stride,t_s,penetration_m,force_N\n");
+    for (k, (i, l)) in r.impacts.iter().zip(&r.histories.impact_loops).enumerate() {
+        let floor = |f: Option<usize>| f.map_or(String::new(), |f| f.to_string());
+        let (fl, fr) = s.site_sides(i.site);
+        let head = format!(
+            "{},{},{},{},{}",
+            k + 1,
+            s.site_name(i.site),
+            floor(fl),
+            floor(fr),
+            l.stride
+        );
+        for ((t, d), f) in l.t.iter().zip(&l.penetration).zip(&l.force) {
+            let _ = writeln!(out, "{head},{t:e},{d:e},{f:e}");
+        }
+    }
+    out
+}
+
+/// The last component of a path (a record file's name), or the whole text if it has none: subtitles show
+/// the file, not its folders.
+pub fn file_name(path: &str) -> String {
+    Path::new(path)
+        .file_name()
+        .map_or_else(|| path.to_string(), |n| n.to_string_lossy().into_owned())
+}
+
+/// One impact's force–penetration path, from impact-loops.csv.
+pub struct LoopData {
+    /// Index of the impact in [`RunData::impacts`].
+    pub impact: usize,
+    /// Times, s.
+    pub t: Vec<f64>,
+    /// Penetration, m.
+    pub penetration: Vec<f64>,
+    /// Contact force, N.
+    pub force: Vec<f64>,
+}
 
 /// One building's histories, and its floor elevations if the scenario file gives them.
 pub struct BuildingData {
@@ -114,6 +164,9 @@ pub struct RunData {
     pub devices: Vec<DeviceData>,
     /// Every impact, in time order.
     pub impacts: Vec<ImpactRow>,
+    /// The force–penetration path of each impact that has one in impact-loops.csv (none for a folder
+    /// written before that file existed).
+    pub loops: Vec<LoopData>,
     /// Input, kinetic, strain, structural damping, hysteretic, contact energy, J, at `t`.
     pub energy: Vec<Vec<f64>>,
 }
@@ -194,6 +247,47 @@ fn storey_heights(text: &str) -> Vec<(String, Vec<f64>)> {
             Some((name, heights))
         })
         .collect()
+}
+
+/// The paths of impact-loops.csv, checked against the number of impacts.
+fn read_loops(dir: &Path, impacts: usize) -> Result<Vec<LoopData>, CliError> {
+    let (header, rows) = csv(dir, LOOPS_FILE)?;
+    let col = |name: &str| {
+        header
+            .iter()
+            .position(|h| h == name)
+            .ok_or_else(|| bad(dir, format!("{LOOPS_FILE} has no column {name}")))
+    };
+    let [ki, kt, kd, kf] = [
+        col("impact")?,
+        col("t_s")?,
+        col("penetration_m")?,
+        col("force_N")?,
+    ];
+    let mut loops: Vec<LoopData> = Vec::new();
+    for r in &rows {
+        let x = |k: usize| number(dir, LOOPS_FILE, &r[k]);
+        let i = x(ki)? as usize;
+        if i == 0 || i > impacts {
+            return Err(bad(
+                dir,
+                format!("{LOOPS_FILE}: impact {i} is not a row of impacts.csv"),
+            ));
+        }
+        if loops.last().is_none_or(|l| l.impact != i - 1) {
+            loops.push(LoopData {
+                impact: i - 1,
+                t: Vec::new(),
+                penetration: Vec::new(),
+                force: Vec::new(),
+            });
+        }
+        let l = loops.last_mut().expect("a block");
+        l.t.push(x(kt)?);
+        l.penetration.push(x(kd)?);
+        l.force.push(x(kf)?);
+    }
+    Ok(loops)
 }
 
 impl RunData {
@@ -469,6 +563,12 @@ impl RunData {
             });
         }
 
+        let loops = if dir.join(LOOPS_FILE).is_file() {
+            read_loops(dir, impacts.len())?
+        } else {
+            Vec::new()
+        };
+
         let (_, rows) = csv(dir, "energy.csv")?;
         let energy = (1..=6)
             .map(|k| column(dir, "energy.csv", &rows, k))
@@ -481,7 +581,7 @@ impl RunData {
             Path::new(scenario)
                 .file_name()
                 .map_or(scenario.into(), |n| n.to_string_lossy()),
-            rec["source"].as_str().unwrap_or("record"),
+            file_name(rec["source"].as_str().unwrap_or("record")),
             crate::output::fmt_num(rec["scale"].as_f64().unwrap_or(1.0)),
             crate::output::fmt_num(summary["duration"].as_f64().unwrap_or(0.0)),
             impacts.iter().filter(|i| !i.consumed).count()
@@ -496,6 +596,7 @@ impl RunData {
             contacts,
             devices,
             impacts,
+            loops,
             energy,
         })
     }

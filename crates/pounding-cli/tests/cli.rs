@@ -963,6 +963,7 @@ fn output_sets_appear_whole_replace_only_runs_and_report_refuses_mixes() {
         [
             ".pounding-run",
             "energy.csv",
+            "impact-loops.csv",
             "impacts.csv",
             "response.csv",
             "scenario.toml",

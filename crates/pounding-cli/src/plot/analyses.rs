@@ -48,12 +48,13 @@ pub fn record(r: &Record, subtitle: &str) -> Figure {
             "{subtitle}; velocity and displacement from rest, without baseline correction"
         ),
         panels: vec![
-            panel("ground acceleration", "m/s^2", acc, 0),
+            panel("ground acceleration", "m/s\u{b2}", acc, 0),
             panel("ground velocity", "m/s", vel, 0),
             panel("ground displacement", "m", dis, 0),
         ],
         columns: 1,
         plot: (PLOT.0, 170.0),
+        ..Figure::default()
     }
 }
 
@@ -83,10 +84,11 @@ pub fn spectrum(s: &Spectrum, title: &str) -> Figure {
         panels: vec![
             panel("spectral displacement SD", "m", &s.sd),
             panel("pseudo-velocity PSV", "m/s", &s.psv),
-            panel("pseudo-acceleration PSA", "m/s^2", &s.psa),
+            panel("pseudo-acceleration PSA", "m/s\u{b2}", &s.psa),
         ],
         columns: 1,
         plot: (PLOT.0, 170.0),
+        ..Figure::default()
     }
 }
 
@@ -146,6 +148,7 @@ pub fn separation(report: &Value, subtitle: &str) -> Figure {
         panels: vec![p],
         columns: 1,
         plot: (PLOT.0, 320.0),
+        ..Figure::default()
     }
 }
 
@@ -172,7 +175,7 @@ pub fn ida(
     fits: &Value,
     measure: (&str, &str),
 ) -> Vec<Figure> {
-    let im = || Quantity::new(measure.0, "m/s^2");
+    let im = || Quantity::new(measure.0, "m/s\u{b2}");
     let mut curves = Vec::new();
     for (l, ls) in limit_states.iter().enumerate() {
         let (name, threshold) = (&ls.name, &ls.threshold);
@@ -273,6 +276,7 @@ pub fn ida(
             panels: curves,
             columns: n.min(2),
             plot: (420.0, 260.0),
+            ..Figure::default()
         });
     }
     let n = frag.len();
@@ -288,6 +292,7 @@ pub fn ida(
         panels: frag,
         columns: n.clamp(1, 2),
         plot: (420.0, 260.0),
+        ..Figure::default()
     });
     out
 }

@@ -1,5 +1,6 @@
-//! Linear axes: range, "nice" ticks (1, 2, 2.5, 5 x 10^k) and tick labels in an SI-prefixed unit, so that a
-//! force axis reads "1.5 MN" rather than "1500000 N".
+//! Linear axes: range, "nice" ticks (1, 2, 2.5, 5 x 10^k) and tick labels in the display unit of the
+//! quantity ([`display_prefix`]: lengths in mm, forces in MN, energies in kJ, times in s or ms), so that a
+//! force axis reads "1.5" in MN rather than "1500000" in N.
 
 /// What an axis shows: a quantity in an SI unit (prefixed on the axis as needed), or a plain number.
 #[derive(Clone, Debug, PartialEq)]
@@ -8,6 +9,9 @@ pub struct Quantity {
     pub name: String,
     /// Its SI unit ("N", "m", "s", "J", "m/s"), "%" or "" for a dimensionless number; never prefixed.
     pub unit: &'static str,
+    /// The power of ten (a multiple of 3) of the displayed unit, if not the convention's
+    /// ([`display_prefix`]): 0 for a height in m.
+    pub prefix: Option<i32>,
 }
 
 impl Quantity {
@@ -16,7 +20,87 @@ impl Quantity {
         Self {
             name: name.into(),
             unit,
+            prefix: None,
         }
+    }
+
+    /// The same quantity shown in `unit` times `10^e` (`e` a multiple of 3 from -9 to 9).
+    pub fn shown_in(mut self, e: i32) -> Self {
+        self.prefix = Some(e);
+        self
+    }
+}
+
+/// The display convention of figures and the report's tables, as the power of ten of the unit shown for a
+/// value of SI `unit` whose largest magnitude is `biggest`: lengths (m) in mm, forces (N) in MN, energies
+/// (J) in kJ; times (s) in s, or in ms (µs) when every value is below 1 s (the time of one impact);
+/// accelerations (m/s^2), velocities (m/s), percentages and plain numbers as they are.
+pub fn display_prefix(unit: &str, biggest: f64) -> i32 {
+    match unit {
+        "m" => -3,
+        "N" => 6,
+        "J" => 3,
+        "s" if biggest > 0.0 && biggest < 1.0 => {
+            (((biggest.log10() / 3.0).floor() as i32) * 3).clamp(-6, 0)
+        }
+        _ => 0,
+    }
+}
+
+/// `unit` with the prefix of `10^e`: "mm", "MN", "kJ".
+pub fn prefixed(unit: &str, e: i32) -> String {
+    format!("{}{unit}", prefix_symbol(e))
+}
+
+/// A number for people, never in e-notation: `digits` significant digits (trailing zeros dropped), with a
+/// typographic minus; a value of 1e9 or more, or below 1e-4, as "1.23 × 10^n" with a superscript n.
+pub fn plain(v: f64, digits: i32) -> String {
+    if !v.is_finite() {
+        return "\u{2013}".into();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    let e = a.log10().floor() as i32;
+    let out = if (-4..9).contains(&e) {
+        let decimals = (digits - 1 - e).max(0) as usize;
+        let f = 10f64.powi(digits - 1 - e);
+        let s = format!("{:.*}", decimals, (v * f).round() / f);
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        let m = v / 10f64.powi(e);
+        let sup: String = e
+            .to_string()
+            .chars()
+            .map(|c| match c {
+                '-' => '\u{207b}',
+                '0' => '\u{2070}',
+                '1' => '\u{b9}',
+                '2' => '\u{b2}',
+                '3' => '\u{b3}',
+                d => char::from_u32(0x2070 + d.to_digit(10).unwrap_or(0)).unwrap_or(d),
+            })
+            .collect();
+        format!("{} \u{d7} 10{sup}", plain(m, digits))
+    };
+    out.replace('-', "\u{2212}")
+}
+
+/// A value in its display unit with that unit ([`display_prefix`]) and `digits` significant digits:
+/// "27.3 MN", "12.5 mm", "186.6 kJ", "35.2 ms".
+pub fn human(v: f64, unit: &str, digits: i32) -> String {
+    let e = display_prefix(unit, v.abs());
+    let u = prefixed(unit, e);
+    let x = plain(v / 10f64.powi(e), digits);
+    if u.is_empty() {
+        x
+    } else {
+        format!("{x} {u}")
     }
 }
 
@@ -63,7 +147,9 @@ impl Axis {
         // Ticks as multiples of the step, snapped so that 0 prints as 0 and not -1e-17.
         let ticks: Vec<f64> = (first..=last).map(|i| i as f64 * step).collect();
         let biggest = ticks.iter().fold(0.0f64, |m, t| m.max(t.abs()));
-        let prefix = prefix_for(q.unit, biggest);
+        let prefix = q
+            .prefix
+            .unwrap_or_else(|| display_prefix(q.unit, hi.abs().max(lo.abs()).max(biggest)));
         let scaled_step = step / 10f64.powi(prefix);
         // 2.5 and 0.25 need one more decimal than their power of ten; 25 and 250 do not.
         let decimals = (-(scaled_step.log10() - 1e-9).floor()).max(0.0) as usize
@@ -169,17 +255,6 @@ fn nice_step(raw: f64) -> f64 {
 fn is_quarter(step: f64) -> bool {
     let p = 10f64.powf(step.log10().floor());
     ((step / p) - 2.5).abs() < 1e-9
-}
-
-/// The SI prefix exponent that puts `biggest` in [1, 1000) for units that take prefixes. Percentages and
-/// plain numbers keep their values; seconds are never shown in ks.
-fn prefix_for(unit: &str, biggest: f64) -> i32 {
-    if unit.is_empty() || unit == "%" || biggest == 0.0 {
-        return 0;
-    }
-    let e = (biggest.log10() / 3.0).floor() as i32 * 3;
-    let max = if unit == "s" { 0 } else { 9 };
-    e.clamp(-9, max)
 }
 
 /// The SI prefix of the power of ten `e` (a multiple of 3 from -9 to 9).

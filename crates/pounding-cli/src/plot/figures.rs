@@ -1,8 +1,9 @@
 //! The tool's figures: one impact (force against time and against penetration), several models on one
 //! impact, the seed's Table 1 as curves, and the figures of a pounding run.
 
-use super::{Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
-use crate::output::fmt_sig;
+use super::axis::human;
+use super::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
+use crate::output::{fmt_num, fmt_sig};
 use crate::run_data::RunData;
 use serde_json::Value;
 
@@ -74,6 +75,7 @@ pub fn impact(prefix: &str, title: &str, subtitle: &str, runs: &[ForceHistory]) 
             panels: vec![time],
             columns: 1,
             plot: PLOT,
+            ..Figure::default()
         },
         Figure {
             id: format!("{prefix}-force-penetration"),
@@ -82,6 +84,7 @@ pub fn impact(prefix: &str, title: &str, subtitle: &str, runs: &[ForceHistory]) 
             panels: vec![loop_],
             columns: 1,
             plot: PLOT,
+            ..Figure::default()
         },
     ]
 }
@@ -153,6 +156,7 @@ pub fn table1(groups: &[(&str, Vec<Curve>)]) -> Vec<Figure> {
             panels: delivered,
             columns: 1,
             plot: PLOT,
+            ..Figure::default()
         },
         Figure {
             id: "table1-error".into(),
@@ -163,6 +167,7 @@ pub fn table1(groups: &[(&str, Vec<Curve>)]) -> Vec<Figure> {
             panels: error,
             columns: 1,
             plot: PLOT,
+            ..Figure::default()
         },
     ]
 }
@@ -236,106 +241,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
         displacement.push(p);
     }
 
-    let mut forces = Vec::new();
-    let mut closing = Vec::new();
-    for (c, cd) in d.contacts.iter().enumerate() {
-        let mine: Vec<_> = d.impacts.iter().filter(|i| i.contact == c).collect();
-        let what = if cd.wall { "wall" } else { "contact" };
-        let consumed = mine.iter().filter(|i| i.consumed).count();
-        let title = if consumed > 0 {
-            format!(
-                "{what} {}: {} impacts, bumper consumed in {consumed} (its layer and the hard law behind it together)",
-                cd.name,
-                mine.len() - consumed
-            )
-        } else {
-            format!("{what} {}: {} impacts", cd.name, mine.len())
-        };
-        let mut p = Panel::new(title, time(), force());
-        p.x_tight = true;
-        p.y_zero = true;
-        let mut q = Panel::new(
-            format!("{what} {}: closing of the gap", cd.name),
-            time(),
-            Quantity::new("relative displacement u_left \u{2212} u_right", "m"),
-        );
-        q.x_tight = true;
-        for (k, el) in cd.elements.iter().enumerate() {
-            let label = match (cd.left, cd.right) {
-                (Some(_), Some(_)) => format!("floors {}-{}", el.floors.0, el.floors.1),
-                _ => format!("floor {}", el.floors.0.max(el.floors.1)),
-            };
-            // The samples, with each impact's located peak inserted, so the curve reaches its true peak.
-            let peaks: Vec<(f64, f64)> = mine
-                .iter()
-                .filter(|i| i.floors == el.floors)
-                .map(|i| (i.time_of_peak_force, i.peak_force))
-                .collect();
-            let (t, f) = merge(&d.t, &el.force, &peaks);
-            p.series.push(Series::line(&label, t, f, Style::nth(k)));
-            // A wall's side does not move relative to the ground.
-            let u = |b: Option<usize>, f: usize, k: usize| {
-                b.map_or(0.0, |b| d.buildings[b].floors[f - 1][k])
-            };
-            let rel = (0..d.t.len())
-                .map(|k| u(cd.left, el.floors.0, k) - u(cd.right, el.floors.1, k))
-                .collect();
-            q.series
-                .push(Series::line(&label, d.t.clone(), rel, Style::nth(k)));
-        }
-        if !mine.is_empty() {
-            p.series.push(Series::points(
-                "peak of each impact",
-                mine.iter().map(|i| i.time_of_peak_force).collect(),
-                mine.iter().map(|i| i.peak_force).collect(),
-                Style {
-                    width: 1.4,
-                    ..Style::nth(1)
-                },
-            ));
-        }
-        q.series.push(Series {
-            label: format!("gap ({} mm): contact above", fmt_mm(cd.gap)),
-            mark: Mark::HLine(cd.gap),
-            style: Style::reference(),
-        });
-        forces.push(p);
-        closing.push(q);
-    }
-
-    // Delivered e of each ended impact against its impact velocity, with the e each contact was given.
-    let mut restitution = Panel::new(
-        "",
-        Quantity::new("relative velocity at touch v_i", "m/s"),
-        Quantity::new("delivered e (e_post)", ""),
-    );
-    restitution.y_zero = true;
-    for (c, cd) in d.contacts.iter().enumerate() {
-        let ended: Vec<_> = d
-            .impacts
-            .iter()
-            .filter(|i| i.contact == c && i.e_post.is_some())
-            .collect();
-        restitution.series.push(Series::points(
-            format!("{} {}", if cd.wall { "wall" } else { "contact" }, cd.name),
-            ended.iter().map(|i| i.v_i).collect(),
-            ended.iter().filter_map(|i| i.e_post).collect(),
-            Style {
-                width: 1.6,
-                ..Style::nth(c)
-            },
-        ));
-        restitution.series.push(Series {
-            label: format!("e given to {}: {}", cd.name, crate::output::fmt_num(cd.e)),
-            mark: Mark::HLine(cd.e),
-            style: Style {
-                width: 1.2,
-                dash: super::Dash::Dashed,
-                ..Style::nth(c)
-            },
-        });
-    }
-
+    let (forces, closing, restitution) = contact_figures(d);
     let mut energy = Panel::new("", time(), Quantity::new("energy", "J"));
     let mut hysteretic = false;
     energy.x_tight = true;
@@ -373,47 +279,27 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             .push(Series::line(*name, d.t.clone(), e.clone(), st));
     }
 
-    let mut figs = vec![Figure {
-        id: "displacement".into(),
-        title: "Floor displacements".into(),
-        subtitle: d.subtitle.clone(),
-        panels: displacement,
-        columns: 1,
-        plot: PLOT,
-    }];
+    let mut figs = vec![
+        record(d),
+        Figure {
+            id: "displacement".into(),
+            title: "Floor displacements".into(),
+            subtitle: d.subtitle.clone(),
+            panels: displacement,
+            columns: 1,
+            plot: PLOT,
+            ..Figure::default()
+        },
+    ];
     if !d.buildings.is_empty() {
         figs.push(envelopes(d));
         figs.extend(hysteresis(d));
         figs.extend(isolators(d));
     }
-    if !d.contacts.is_empty() {
-        figs.push(Figure {
-            id: "contact-force".into(),
-            title: "Contact forces".into(),
-            subtitle: d.subtitle.clone(),
-            panels: forces,
-            columns: 1,
-            plot: PLOT,
-        });
-        if d.impacts.iter().any(|i| i.e_post.is_some()) {
-            figs.push(Figure {
-                id: "impact-restitution".into(),
-                title: "Delivered coefficient of restitution of each impact".into(),
-                subtitle: d.subtitle.clone(),
-                panels: vec![restitution],
-                columns: 1,
-                plot: PLOT,
-            });
-        }
-        figs.push(Figure {
-            id: "relative-displacement".into(),
-            title: "Relative displacement of the contact floors against the gap".into(),
-            subtitle: d.subtitle.clone(),
-            panels: closing,
-            columns: 1,
-            plot: PLOT,
-        });
-    }
+    figs.extend(forces);
+    figs.extend(impact_loops(d));
+    figs.extend(restitution);
+    figs.extend(closing);
     if !d.devices.is_empty() {
         let panels = d
             .devices
@@ -443,6 +329,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             panels,
             columns: 1,
             plot: PLOT,
+            ..Figure::default()
         });
     }
     figs.push(Figure {
@@ -457,6 +344,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
         panels: vec![energy],
         columns: 1,
         plot: PLOT,
+        ..Figure::default()
     });
     figs
 }
@@ -480,7 +368,7 @@ fn levels(d: &RunData) -> (Vec<Vec<f64>>, Quantity) {
             .iter()
             .map(|b| with_ground(b.elevations.as_deref().unwrap_or_default()))
             .collect();
-        (z, Quantity::new("height above ground", "m"))
+        (z, Quantity::new("height above ground", "m").shown_in(0))
     } else {
         let z = d
             .buildings
@@ -575,6 +463,7 @@ fn envelopes(d: &RunData) -> Figure {
         panels: vec![disp, drift, acc, shear],
         columns: 4,
         plot: (240.0, 360.0),
+        ..Figure::default()
     }
 }
 
@@ -644,7 +533,7 @@ fn yield_lines(p: &mut Panel, fy: f64, label: bool) {
     let st = Style::reference();
     p.series.push(Series {
         label: if label {
-            format!("yield force \u{b1}F_y = \u{b1}{}", si(fy, "N"))
+            format!("yield force \u{b1}F_y = \u{b1}{}", human_si(fy, "N"))
         } else {
             String::new()
         },
@@ -683,7 +572,7 @@ fn isolators(d: &RunData) -> Option<Figure> {
                 format!(
                     "{}: {model} isolator, peak displacement {}",
                     d.buildings[b].name,
-                    si(iso["peak_displacement"].as_f64().unwrap_or(0.0), "m")
+                    human_si(iso["peak_displacement"].as_f64().unwrap_or(0.0), "m")
                 ),
                 Quantity::new("isolator displacement", "m"),
                 Quantity::new("isolator force", "N"),
@@ -703,7 +592,7 @@ fn isolators(d: &RunData) -> Option<Figure> {
             if let Some(c) = iso["clearance"].as_f64() {
                 for (k, x) in [c, -c].into_iter().enumerate() {
                     let label = if k == 0 {
-                        format!("clearance \u{b1}{}", si(c, "m"))
+                        format!("clearance \u{b1}{}", human_si(c, "m"))
                     } else {
                         String::new()
                     };
@@ -728,6 +617,7 @@ fn isolators(d: &RunData) -> Option<Figure> {
         panels,
         columns: 1,
         plot: (620.0, 380.0),
+        ..Figure::default()
     })
 }
 
@@ -771,7 +661,11 @@ fn hysteresis(d: &RunData) -> Vec<Figure> {
     let v = d.buildings[most.building].storey_shear[j].clone();
     let mut p = Panel::new(
         match most.hysteretic_energy {
-            Some(e) => format!("{}, hysteretic energy {}", storey_title(most), si(e, "J")),
+            Some(e) => format!(
+                "{}, hysteretic energy {}",
+                storey_title(most),
+                human_si(e, "J")
+            ),
             None => storey_title(most),
         },
         drift_q(),
@@ -783,7 +677,7 @@ fn hysteresis(d: &RunData) -> Vec<Figure> {
         p.series
             .push(Series::line("", u.clone(), v.clone(), loop_style));
         p.series.push(Series::points(
-            format!("end of the analysis: drift {}", si(ue, "m")),
+            format!("end of the analysis: drift {}", human_si(ue, "m")),
             vec![ue],
             vec![ve],
             end_style,
@@ -810,6 +704,7 @@ fn hysteresis(d: &RunData) -> Vec<Figure> {
         panels: vec![p],
         columns: 1,
         plot: (620.0, 380.0),
+        ..Figure::default()
     }];
 
     // Every inelastic storey of that building, on common axes so that the loops compare.
@@ -868,34 +763,494 @@ fn hysteresis(d: &RunData) -> Vec<Figure> {
             panels,
             columns: mine.len().min(4),
             plot: (260.0, 190.0),
+            ..Figure::default()
         });
     }
     figs
 }
 
-/// A value with an SI prefix and 4 significant digits: "2.5 MN", "186.6 kJ", "1.27 mm".
-fn si(v: f64, unit: &str) -> String {
-    let e = if v == 0.0 || !v.is_finite() {
-        0
+/// Blues from light to dark (ColorBrewer's Blues, #9ecae1 to #08306b, in 16 steps).
+const BLUES: [&str; 16] = [
+    "#9ecae1", "#8dc1dd", "#7cb7da", "#6baed6", "#5da5d1", "#509bcb", "#4292c6", "#3787c0",
+    "#2c7cbb", "#2171b5", "#1966ad", "#105ca4", "#08519c", "#08468c", "#083b7b", "#08306b",
+];
+
+/// Floor `f` (from 0) of `n`: blues from light (floor 1) to dark, the roof in the darkest blue and a little
+/// wider, for every building height (up to 16 floors each has its own shade).
+pub fn floor_style(f: usize, n: usize) -> Style {
+    let k = if n <= 1 {
+        BLUES.len() - 1
     } else {
-        ((v.abs().log10() / 3.0).floor() as i32 * 3).clamp(-9, 9)
+        ((f as f64 / (n - 1) as f64) * (BLUES.len() - 1) as f64).round() as usize
     };
-    let prefix = super::axis::prefix_symbol(e);
-    format!("{} {prefix}{unit}", fmt_sig(v / 10f64.powi(e), 4)).replace('-', "\u{2212}")
+    Style {
+        color: BLUES[k.min(BLUES.len() - 1)],
+        width: if f + 1 == n { 2.0 } else { 1.5 },
+        ..Style::nth(0)
+    }
 }
 
-/// Floors from light to dark up the building, the roof in the darkest blue.
-fn floor_style(f: usize, n: usize) -> Style {
-    if n <= 3 {
-        return Style::nth(f);
+/// A contact level of a run: one contact element (a floor pair of a contact, or a wall's floor).
+struct Level {
+    /// Index of the contact in [`RunData::contacts`].
+    contact: usize,
+    /// Index of the element in the contact.
+    element: usize,
+    /// "contact west|east, floors 2-2" or "wall moat, floor 1".
+    label: String,
+    /// Its colour and marker shape, the same in every figure of the run.
+    style: Style,
+}
+
+/// Every contact level of the run, contacts left to right, then walls; floor pairs in order.
+fn contact_levels(d: &RunData) -> Vec<Level> {
+    let mut out = Vec::new();
+    for (c, cd) in d.contacts.iter().enumerate() {
+        for (e, el) in cd.elements.iter().enumerate() {
+            let short = if cd.wall {
+                format!("floor {}", el.floors.0.max(el.floors.1))
+            } else {
+                format!("floors {}-{}", el.floors.0, el.floors.1)
+            };
+            let what = if cd.wall { "wall" } else { "contact" };
+            out.push(Level {
+                contact: c,
+                element: e,
+                label: format!("{what} {}, {short}", cd.name),
+                style: Style::level(out.len()),
+            });
+        }
     }
-    const RAMP: [&str; 8] = [
-        "#9ecae1", "#6baed6", "#4292c6", "#2171b5", "#08519c", "#08306b", "#041f4a", "#000000",
-    ];
-    let k = ((f as f64 / (n - 1) as f64) * (RAMP.len() - 1) as f64).round() as usize;
-    Style {
-        color: RAMP[k.min(RAMP.len() - 1)],
-        ..Style::nth(0)
+    out
+}
+
+/// The plot height of one of `n` small multiples, px: the usual 250 for one, less for many.
+fn multiple_height(n: usize) -> f64 {
+    match n {
+        0 | 1 => PLOT.1,
+        2 | 3 => 170.0,
+        _ => 120.0,
+    }
+}
+
+/// Contact forces and relative displacements, one panel per contact level (small multiples sharing the
+/// time axis), and the delivered e of every ended impact against its velocity at touch.
+fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figure>) {
+    let levels = contact_levels(d);
+    if levels.is_empty() {
+        return (None, None, None);
+    }
+    let time = || Quantity::new("time", "s");
+    let t_range = (
+        d.t.first().copied().unwrap_or(0.0),
+        d.t.last().copied().unwrap_or(1.0),
+    );
+    let mut forces = Vec::new();
+    let mut closing = Vec::new();
+    let (mut lo, mut hi) = (0.0f64, 0.0f64);
+    for lv in &levels {
+        let cd = &d.contacts[lv.contact];
+        let el = &cd.elements[lv.element];
+        let mine: Vec<_> = d
+            .impacts
+            .iter()
+            .filter(|i| i.contact == lv.contact && i.floors == el.floors)
+            .collect();
+        let consumed = mine.iter().filter(|i| i.consumed).count();
+        let peak = mine.iter().map(|i| i.peak_force).fold(0.0, f64::max);
+        let mut title = format!(
+            "{}: {} impact{}",
+            lv.label,
+            mine.len() - consumed,
+            if mine.len() - consumed == 1 { "" } else { "s" }
+        );
+        if consumed > 0 {
+            title += &format!(", bumper consumed in {consumed}");
+        }
+        if !mine.is_empty() {
+            title += &format!(", largest {}", human(peak, "N", 3));
+        }
+        let mut p = Panel::new(title, time(), force());
+        p.x_range = Some(t_range);
+        p.y_zero = true;
+        p.legend = Legend::None;
+        // The samples, with each impact's located peak inserted, so the curve reaches its true peak.
+        let peaks: Vec<(f64, f64)> = mine
+            .iter()
+            .map(|i| (i.time_of_peak_force, i.peak_force))
+            .collect();
+        let (t, f) = merge(&d.t, &el.force, &peaks);
+        p.series.push(Series::line(&lv.label, t, f, lv.style));
+        if !mine.is_empty() {
+            p.series.push(Series::points(
+                format!("{}: peak of each impact", lv.label),
+                mine.iter().map(|i| i.time_of_peak_force).collect(),
+                mine.iter().map(|i| i.peak_force).collect(),
+                Style {
+                    width: 1.6,
+                    ..lv.style
+                },
+            ));
+        }
+        forces.push(p);
+
+        // A wall's side does not move relative to the ground.
+        let u = |b: Option<usize>, f: usize, k: usize| {
+            b.map_or(0.0, |b| d.buildings[b].floors[f - 1][k])
+        };
+        let rel: Vec<f64> = (0..d.t.len())
+            .map(|k| u(cd.left, el.floors.0, k) - u(cd.right, el.floors.1, k))
+            .collect();
+        for &v in rel.iter().chain([&cd.gap]) {
+            (lo, hi) = (lo.min(v), hi.max(v));
+        }
+        let mut q = Panel::new(
+            format!("{}: gap {} mm", lv.label, fmt_mm(cd.gap)),
+            time(),
+            Quantity::new("u_left \u{2212} u_right", "m"),
+        );
+        q.x_range = Some(t_range);
+        q.legend = Legend::None;
+        q.series
+            .push(Series::line(&lv.label, d.t.clone(), rel, lv.style));
+        q.series.push(Series {
+            label: format!("gap ({} mm): contact above", fmt_mm(cd.gap)),
+            mark: Mark::HLine(cd.gap),
+            style: Style::reference(),
+        });
+        closing.push(q);
+    }
+    // One range for every level: the gap line at one height, and the levels compare at a glance.
+    let pad = 0.04 * (hi - lo);
+    for q in &mut closing {
+        q.y_range = Some((lo - pad, hi + pad));
+    }
+    let n = levels.len();
+    let force_fig = Figure {
+        id: "contact-force".into(),
+        title: format!(
+            "Contact force at each contact level ({n} level{})",
+            if n == 1 { "" } else { "s" }
+        ),
+        subtitle: d.subtitle.clone(),
+        panels: forces,
+        plot: (PLOT.0, multiple_height(n)),
+        share_x: true,
+        notes: vec![
+            "Line: the force at the output samples with each impact's located peak inserted; markers: the \
+             located peak of each impact (peak_force_N of impacts.csv). Each panel has its own force axis."
+                .into(),
+        ]
+        .into_iter()
+        .chain(
+            d.impacts
+                .iter()
+                .any(|i| i.consumed)
+                .then(|| "With a bumper, the line is the layer's and the hard law's force together; markers are each law's impacts.".to_string()),
+        )
+        .collect(),
+        ..Figure::default()
+    };
+    let closing_fig = Figure {
+        id: "relative-displacement".into(),
+        title: "Relative displacement of the contact floors against the gap".into(),
+        subtitle: d.subtitle.clone(),
+        panels: closing,
+        plot: (PLOT.0, multiple_height(n)),
+        share_x: true,
+        notes: vec![
+            "u_left \u{2212} u_right of each pair of contact floors (for a wall, the floor's displacement towards \
+             it); dashed: the gap, contact above it. One axis for every level."
+                .into(),
+        ],
+        ..Figure::default()
+    };
+
+    // Delivered e of each ended impact against its impact velocity, one colour and shape per level.
+    let mut r = Panel::new(
+        "",
+        Quantity::new("relative velocity at touch v_i", "m/s"),
+        Quantity::new("delivered e (e_post)", ""),
+    );
+    r.y_zero = true;
+    r.x_zero = true;
+    r.legend = Legend::Right;
+    let (mut above, mut ended, mut top) = (0, 0, f64::NEG_INFINITY);
+    for lv in &levels {
+        let cd = &d.contacts[lv.contact];
+        let el = &cd.elements[lv.element];
+        let mine: Vec<_> = d
+            .impacts
+            .iter()
+            .filter(|i| i.contact == lv.contact && i.floors == el.floors && i.e_post.is_some())
+            .collect();
+        if mine.is_empty() {
+            continue;
+        }
+        for e in mine.iter().filter_map(|i| i.e_post) {
+            ended += 1;
+            above += usize::from(e > cd.e * (1.0 + 1e-9));
+            top = top.max(e);
+        }
+        r.series.push(Series::points(
+            &lv.label,
+            mine.iter().map(|i| i.v_i).collect(),
+            mine.iter().filter_map(|i| i.e_post).collect(),
+            Style {
+                width: 1.8,
+                ..lv.style
+            },
+        ));
+    }
+    // The requested e of each contact (one line for contacts given the same e).
+    let mut given: Vec<(f64, Vec<&str>)> = Vec::new();
+    for cd in &d.contacts {
+        match given.iter_mut().find(|g| g.0 == cd.e) {
+            Some(g) => g.1.push(&cd.name),
+            None => given.push((cd.e, vec![&cd.name])),
+        }
+    }
+    let several = given.len() > 1;
+    for (k, (e, names)) in given.iter().enumerate() {
+        r.series.push(Series {
+            label: if several {
+                format!("requested e = {} ({})", fmt_num(*e), names.join(", "))
+            } else {
+                format!("requested e = {}", fmt_num(*e))
+            },
+            mark: Mark::HLine(*e),
+            // Two contacts given different e: dashes, then dots.
+            style: Style {
+                width: 1.4,
+                dash: [Dash::Dashed, Dash::Dotted][k % 2],
+                ..Style::reference()
+            },
+        });
+    }
+    let restitution = (ended > 0).then(|| {
+        let mut notes = Vec::new();
+        if above > 0 {
+            notes.push(format!(
+                "{above} of {ended} impacts lie above the requested e{}: each contact law is calibrated to \
+                 deliver e between two free bodies, but the storey forces act on the floors during a contact \
+                 between buildings (docs/verification.md, \"Impacts inside a run\").{}",
+                if top > 1.0 {
+                    format!(" (up to {})", fmt_sig(top, 4))
+                } else {
+                    String::new()
+                },
+                if top > 1.0 {
+                    " Above 1, the storeys pushed the floors apart during the contact."
+                } else {
+                    ""
+                }
+            ));
+        }
+        Figure {
+            id: "impact-restitution".into(),
+            title: "Delivered coefficient of restitution of each impact, by contact level".into(),
+            subtitle: d.subtitle.clone(),
+            panels: vec![r],
+            notes,
+            ..Figure::default()
+        }
+    });
+    (Some(force_fig), Some(closing_fig), restitution)
+}
+
+/// The force–penetration loops of the strongest impacts (at most [`LOOPS_PER_LEVEL`]) of each contact level,
+/// from impact-loops.csv (none for a folder without it).
+fn impact_loops(d: &RunData) -> Option<Figure> {
+    let levels = contact_levels(d);
+    let mut panels = Vec::new();
+    for lv in &levels {
+        let el = &d.contacts[lv.contact].elements[lv.element];
+        let mut mine: Vec<_> = d
+            .loops
+            .iter()
+            .filter(|l| {
+                let i = &d.impacts[l.impact];
+                i.contact == lv.contact && i.floors == el.floors
+            })
+            .collect();
+        if mine.is_empty() {
+            continue;
+        }
+        let total = mine.len();
+        mine.sort_by(|a, b| {
+            d.impacts[b.impact]
+                .peak_force
+                .total_cmp(&d.impacts[a.impact].peak_force)
+        });
+        mine.truncate(LOOPS_PER_LEVEL);
+        let mut p = Panel::new(
+            if total > mine.len() {
+                format!("{}: strongest {} of {total}", lv.label, mine.len())
+            } else {
+                format!(
+                    "{}: {total} impact{}",
+                    lv.label,
+                    if total == 1 { "" } else { "s" }
+                )
+            },
+            Quantity::new("penetration", "m"),
+            force(),
+        );
+        p.x_zero = true;
+        p.y_zero = true;
+        for (rank, l) in mine.iter().enumerate() {
+            let i = &d.impacts[l.impact];
+            let dash = [Dash::Solid, Dash::Dashed, Dash::Dotted][rank % 3];
+            let st = Style {
+                dash,
+                width: 1.5,
+                ..lv.style
+            };
+            p.series.push(Series::line(
+                format!(
+                    "#{} at {} s: {}",
+                    l.impact + 1,
+                    fmt_sig(i.time, 4),
+                    human(i.peak_force, "N", 3)
+                ),
+                l.penetration.clone(),
+                l.force.clone(),
+                st,
+            ));
+        }
+        // The located peaks.
+        let peak_of = |l: &&crate::run_data::LoopData| {
+            let k = (0..l.force.len())
+                .max_by(|&a, &b| l.force[a].total_cmp(&l.force[b]))
+                .unwrap_or(0);
+            (l.penetration[k], l.force[k])
+        };
+        let pk: Vec<(f64, f64)> = mine.iter().map(peak_of).collect();
+        p.series.push(Series::points(
+            "",
+            pk.iter().map(|p| p.0).collect(),
+            pk.iter().map(|p| p.1).collect(),
+            Style {
+                width: 1.6,
+                ..lv.style
+            },
+        ));
+        panels.push(p);
+    }
+    if panels.is_empty() {
+        return None;
+    }
+    let columns = panels.len().min(2);
+    Some(Figure {
+        id: "impact-loops".into(),
+        title: "Force against penetration of the strongest impacts of each contact level".into(),
+        subtitle: d.subtitle.clone(),
+        columns,
+        plot: (340.0, 220.0),
+        panels,
+        notes: vec![
+            "Every accepted integration step of each impact and its located peak (marker), from \
+             impact-loops.csv; the area inside a loop is the energy the impact dissipated. Legend: impact \
+             number in impacts.csv, time of touch, peak force."
+                .into(),
+        ],
+        ..Figure::default()
+    })
+}
+
+/// Impacts drawn per contact level in `impact-loops.svg`.
+pub const LOOPS_PER_LEVEL: usize = 3;
+
+/// The record as the run applied it: ground acceleration at the output samples, and the velocity and
+/// displacement integrated from them (from rest, exact for a piecewise-linear acceleration between samples).
+fn record(d: &RunData) -> Figure {
+    let (t, a) = (&d.t, &d.ground_acceleration);
+    let mut v = vec![0.0; t.len()];
+    let mut u = vec![0.0; t.len()];
+    for k in 1..t.len() {
+        let h = t[k] - t[k - 1];
+        v[k] = v[k - 1] + (a[k - 1] + a[k]) / 2.0 * h;
+        u[k] = u[k - 1] + v[k - 1] * h + (2.0 * a[k - 1] + a[k]) * h * h / 6.0;
+    }
+    let t_range = (
+        t.first().copied().unwrap_or(0.0),
+        t.last().copied().unwrap_or(1.0),
+    );
+    let peak = |y: &[f64]| {
+        (0..y.len())
+            .max_by(|&i, &j| y[i].abs().total_cmp(&y[j].abs()))
+            .map_or((0.0, 0.0), |k| (t[k], y[k]))
+    };
+    let panel = |title: String, q: Quantity, y: Vec<f64>| {
+        let (tp, yp) = peak(&y);
+        let mut p = Panel::new(title, Quantity::new("time", "s"), q);
+        p.x_range = Some(t_range);
+        p.legend = Legend::None;
+        p.series.push(Series::line(
+            "",
+            t.clone(),
+            y,
+            Style {
+                width: 1.0,
+                ..Style::nth(6)
+            },
+        ));
+        p.series.push(Series::points(
+            "largest |value|",
+            vec![tp],
+            vec![yp],
+            Style {
+                width: 1.8,
+                ..Style::nth(1)
+            },
+        ));
+        p
+    };
+    let (ta, ya) = peak(a);
+    let (tv, yv) = peak(&v);
+    let (tu, yu) = peak(&u);
+    Figure {
+        id: "record".into(),
+        title: "Ground motion as the run applied it: acceleration, velocity, displacement".into(),
+        subtitle: d.subtitle.clone(),
+        panels: vec![
+            panel(
+                format!(
+                    "ground acceleration: largest {} at {} s",
+                    human(ya.abs(), "m/s\u{b2}", 3),
+                    fmt_sig(ta, 4)
+                ),
+                Quantity::new("acceleration", "m/s\u{b2}"),
+                a.clone(),
+            ),
+            panel(
+                format!(
+                    "ground velocity: largest {} at {} s",
+                    human(yv.abs(), "m/s", 3),
+                    fmt_sig(tv, 4)
+                ),
+                Quantity::new("velocity", "m/s"),
+                v,
+            ),
+            panel(
+                format!(
+                    "ground displacement: largest {} at {} s",
+                    human(yu.abs(), "m", 3),
+                    fmt_sig(tu, 4)
+                ),
+                Quantity::new("displacement", "m"),
+                u,
+            ),
+        ],
+        plot: (PLOT.0, 140.0),
+        share_x: true,
+        notes: vec![format!(
+            "The acceleration at the output samples (every {} s); velocity and displacement integrated from \
+             them from rest, without baseline correction: the ground motion the analysis applied. Dots: largest \
+             |value|.",
+            fmt_num(d.summary["output_dt"].as_f64().unwrap_or(0.0))
+        )],
+        ..Figure::default()
     }
 }
 
@@ -925,6 +1280,11 @@ fn merge(t: &[f64], f: &[f64], extra: &[(f64, f64)]) -> (Vec<f64>, Vec<f64>) {
         out_f.push(fe);
     }
     (out_t, out_f)
+}
+
+/// A value in its display unit, 4 significant digits: "2.5 MN", "186.6 kJ", "1.27 mm".
+fn human_si(v: f64, unit: &str) -> String {
+    human(v, unit, 4)
 }
 
 #[cfg(test)]

@@ -19,6 +19,34 @@ pub const PALETTE: [&str; 8] = [
     "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#8C6D31",
 ];
 
+/// Marker shapes of points, cycled with the palette so that a contact level keeps one colour and one shape
+/// in every figure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// A disc.
+    Circle,
+    /// A square.
+    Square,
+    /// A triangle pointing up.
+    Triangle,
+    /// A diamond.
+    Diamond,
+    /// A triangle pointing down.
+    TriangleDown,
+    /// A hexagon.
+    Hexagon,
+}
+
+/// The shapes in the order levels take them.
+pub const SHAPES: [Shape; 6] = [
+    Shape::Circle,
+    Shape::Square,
+    Shape::Triangle,
+    Shape::Diamond,
+    Shape::TriangleDown,
+    Shape::Hexagon,
+];
+
 /// Line dash patterns, cycled after the palette so that 24 series stay distinct.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Dash {
@@ -41,6 +69,8 @@ pub struct Style {
     pub width: f64,
     /// A line also marks each of its points with a dot (short lines: profiles over floors).
     pub marker: bool,
+    /// Shape of points (and of a line's markers).
+    pub shape: Shape,
 }
 
 impl Style {
@@ -56,6 +86,20 @@ impl Style {
             dash,
             width: 1.6,
             marker: false,
+            shape: Shape::Circle,
+        }
+    }
+
+    /// The style of contact level `k` (a contact element or a wall's floor, counted over the figure): the
+    /// `k`-th palette colour and the `k`-th shape, so that 48 levels stay distinct and a level's line,
+    /// markers and restitution points match.
+    pub fn level(k: usize) -> Self {
+        Self {
+            color: PALETTE[k % PALETTE.len()],
+            dash: Dash::Solid,
+            width: 1.4,
+            marker: false,
+            shape: SHAPES[k % SHAPES.len()],
         }
     }
 
@@ -66,6 +110,7 @@ impl Style {
             dash: Dash::Dashed,
             width: 1.2,
             marker: false,
+            shape: Shape::Circle,
         }
     }
 }
@@ -219,6 +264,26 @@ pub struct Figure {
     pub columns: usize,
     /// Size of each panel's plot area (inside the frame), px: [`PLOT`] for most figures.
     pub plot: (f64, f64),
+    /// Small multiples in one column sharing the time axis: tick labels and the x label only under the
+    /// bottom panel, and little space between panels (the panels should be given one `x_range`).
+    pub share_x: bool,
+    /// Notes under the panels (each one paragraph, wrapped to the figure's width).
+    pub notes: Vec<String>,
+}
+
+impl Default for Figure {
+    fn default() -> Self {
+        Self {
+            id: String::new(),
+            title: String::new(),
+            subtitle: String::new(),
+            panels: Vec::new(),
+            columns: 1,
+            plot: PLOT,
+            share_x: false,
+            notes: Vec::new(),
+        }
+    }
 }
 
 /// The usual plot area, px: wide and low, for histories.

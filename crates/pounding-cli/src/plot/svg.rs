@@ -3,7 +3,7 @@
 
 use super::axis::Axis;
 use super::font::text_width;
-use super::{Dash, Figure, Legend, Mark, Panel, Series, Style};
+use super::{Dash, Figure, Legend, Mark, Panel, Series, Shape, Style};
 use std::fmt::Write as _;
 
 /// Font sizes, px.
@@ -13,6 +13,7 @@ const PANEL_TITLE: f64 = 13.0;
 const LABEL: f64 = 12.0;
 const TICK: f64 = 11.0;
 const LEGEND: f64 = 11.0;
+const NOTE: f64 = 11.5;
 /// Height of one legend entry, px.
 const ENTRY: f64 = 16.0;
 /// The font stack: DejaVu Sans (whose metrics the layout uses, and which PNGs embed), then look-alikes.
@@ -26,11 +27,19 @@ pub fn render(fig: &Figure) -> String {
         h: fig.plot.1,
     };
     let axes: Vec<(Axis, Axis)> = fig.panels.iter().map(axes_of).collect();
+    // Lines that coincide, judged in pixels (where the panel is drawn does not matter).
+    let sames: Vec<Vec<Option<Same>>> = fig
+        .panels
+        .iter()
+        .zip(&axes)
+        .map(|(p, (xa, ya))| coincident(p, &Map::new(xa, ya, (0.0, 0.0), size)))
+        .collect();
     let places: Vec<Place> = fig
         .panels
         .iter()
         .zip(&axes)
-        .map(|(p, (xa, ya))| place_legend(p, xa, ya, size))
+        .zip(&sames)
+        .map(|((p, (xa, ya)), same)| place_legend(p, xa, ya, size, same))
         .collect();
     // One left margin and one legend width for all panels, so that plots line up.
     let tick_w = axes
@@ -46,21 +55,48 @@ pub fn render(fig: &Figure) -> String {
     let legend_w = fig
         .panels
         .iter()
-        .zip(&places)
-        .filter(|(_, pl)| **pl == Place::Right)
-        .map(|(p, _)| legend_size(p).0 + 16.0)
+        .zip(places.iter().zip(&sames))
+        .filter(|(_, (pl, _))| **pl == Place::Right)
+        .map(|(p, (_, same))| legend_size(p, same).0 + 16.0)
         .fold(0.0, f64::max)
         .ceil();
     let right = 18.0 + legend_w;
     let top = 28.0;
     let bottom = 8.0 + TICK + 10.0 + LABEL + 12.0;
     let cell_w = left + size.w + right;
-    let cell_h = top + size.h + bottom;
     let width = cell_w * columns as f64;
-    let sub = wrap(&fig.subtitle, SUBTITLE, width - 40.0);
-    let head = (14.0 + TITLE + 6.0 + (SUBTITLE + 4.0) * sub.len() as f64 + 6.0).ceil();
     let rows = fig.panels.len().div_ceil(columns);
-    let height = head + cell_h * rows as f64;
+    // Small multiples sharing x: the tick labels and the x label under the bottom row only.
+    let bottom_of = |row: usize| {
+        if fig.share_x && row + 1 < rows {
+            6.0
+        } else {
+            bottom
+        }
+    };
+    // A subtitle too long for one line keeps its leading clauses (up to a "; ") and hands the rest to the
+    // notes; one without such a break is cut with an ellipsis. It never wraps.
+    let (sub, rest) = split_subtitle(&fig.subtitle, SUBTITLE, width - 40.0);
+    let head =
+        (14.0 + TITLE + 6.0 + if sub.is_empty() { 0.0 } else { SUBTITLE + 4.0 } + 6.0).ceil();
+    let mut row_top = Vec::with_capacity(rows);
+    let mut y = head;
+    for row in 0..rows {
+        row_top.push(y);
+        y += top + size.h + bottom_of(row);
+    }
+    let notes: Vec<String> = rest
+        .iter()
+        .chain(&fig.notes)
+        .flat_map(|n| wrap(n, NOTE, width - 40.0))
+        .collect();
+    let notes_top = y;
+    let height = (y + if notes.is_empty() {
+        0.0
+    } else {
+        (NOTE + 5.0) * notes.len() as f64 + 10.0
+    })
+    .ceil();
 
     let mut s = String::new();
     let _ = write!(
@@ -82,24 +118,33 @@ pub fn render(fig: &Figure) -> String {
         "\n<text x=\"{}\" y=\"{}\" font-size=\"{TITLE}\" font-weight=\"bold\" text-anchor=\"middle\">{}</text>",
         px(width / 2.0),
         px(10.0 + TITLE),
-        esc(&fig.title)
+        esc(&one_line(&fig.title, TITLE, width - 20.0))
     );
-    for (i, line) in sub.iter().enumerate() {
+    if !sub.is_empty() {
         let _ = write!(
             s,
             "\n<text class=\"subtitle\" x=\"{}\" y=\"{}\" font-size=\"{SUBTITLE}\" fill=\"#444444\" text-anchor=\"middle\">{}</text>",
             px(width / 2.0),
-            px(14.0 + TITLE + 6.0 + SUBTITLE + (SUBTITLE + 4.0) * i as f64),
-            esc(line)
+            px(14.0 + TITLE + 6.0 + SUBTITLE),
+            esc(&sub)
         );
     }
     for (k, (panel, (xa, ya))) in fig.panels.iter().zip(&axes).enumerate() {
         let (row, col) = (k / columns, k % columns);
         let x0 = col as f64 * cell_w + left;
-        let y0 = head + row as f64 * cell_h + top;
+        let y0 = row_top[row] + top;
         let clip = format!("{}-clip{k}", fig.id);
         let m = Map::new(xa, ya, (x0, y0), size);
-        panel_svg(&mut s, panel, &m, places[k], &clip);
+        let x_labels = !fig.share_x || row + 1 == rows || k + columns >= fig.panels.len();
+        panel_svg(&mut s, panel, &m, (places[k], &sames[k]), &clip, x_labels);
+    }
+    for (i, line) in notes.iter().enumerate() {
+        let _ = write!(
+            s,
+            "\n<text class=\"note\" x=\"20.00\" y=\"{}\" font-size=\"{NOTE}\" fill=\"#333333\">{}</text>",
+            px(notes_top + 4.0 + NOTE + (NOTE + 5.0) * i as f64),
+            esc(line)
+        );
     }
     s.push_str("\n</svg>\n");
     s
@@ -122,6 +167,39 @@ fn axes_of(p: &Panel) -> (Axis, Axis) {
         Axis::new(&p.y, yl, yh, tight_y)
     };
     (Axis::new(&p.x, xl, xh, p.x_tight || p.x_range.is_some()), y)
+}
+
+/// A subtitle on one line no wider than `width` px at `size` px: the longest run of its "; "-separated
+/// clauses that fits, and the other clauses (for a note); or, if even its first clause is too long, that
+/// clause cut with an ellipsis and the rest.
+fn split_subtitle(text: &str, size: f64, width: f64) -> (String, Option<String>) {
+    if text_width(text, size) <= width {
+        return (text.to_string(), None);
+    }
+    let clauses: Vec<&str> = text.split("; ").collect();
+    let mut k = 1;
+    while k < clauses.len() && text_width(&clauses[..=k].join("; "), size) <= width {
+        k += 1;
+    }
+    let head = clauses[..k].join("; ");
+    let rest = (k < clauses.len()).then(|| clauses[k..].join("; "));
+    (one_line(&head, size, width), rest)
+}
+
+/// `text` on one line no wider than `width` px at `size` px: cut at the end with an ellipsis if too long.
+fn one_line(text: &str, size: f64, width: f64) -> String {
+    if text_width(text, size) <= width {
+        return text.to_string();
+    }
+    let mut chars: Vec<char> = text.chars().collect();
+    while !chars.is_empty() {
+        chars.pop();
+        let t: String = chars.iter().collect::<String>().trim_end().to_string() + "\u{2026}";
+        if text_width(&t, size) <= width {
+            return t;
+        }
+    }
+    String::new()
 }
 
 /// `text` broken at spaces into lines no wider than `width` px at `size` px.
@@ -207,7 +285,14 @@ impl<'a> Map<'a> {
     }
 }
 
-fn panel_svg(s: &mut String, p: &Panel, m: &Map, place: Place, clip: &str) {
+fn panel_svg(
+    s: &mut String,
+    p: &Panel,
+    m: &Map,
+    (place, same): (Place, &[Option<Same>]),
+    clip: &str,
+    x_labels: bool,
+) {
     let (xa, ya) = (m.xa, m.ya);
     let (x0, y0) = (m.x0, m.y0);
     let (x1, y1) = (x0 + m.size.w, y0 + m.size.h);
@@ -240,6 +325,9 @@ fn panel_svg(s: &mut String, p: &Panel, m: &Map, place: Place, clip: &str) {
     for &t in &xa.ticks {
         let x = m.px(t);
         let _ = write!(grid, "M{} {}V{}", px(x), px(y0), px(y1));
+        if !x_labels {
+            continue;
+        }
         let _ = write!(
             labels,
             "\n<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
@@ -268,13 +356,15 @@ fn panel_svg(s: &mut String, p: &Panel, m: &Map, place: Place, clip: &str) {
         "\n<g class=\"ticks\" font-size=\"{TICK}\" fill=\"#222222\">{labels}\n</g>"
     );
     // Axis labels and title.
-    let _ = write!(
-        s,
-        "\n<text class=\"xlabel\" x=\"{}\" y=\"{}\" font-size=\"{LABEL}\" text-anchor=\"middle\">{}</text>",
-        px((x0 + x1) / 2.0),
-        px(y1 + 6.0 + TICK + 10.0 + LABEL),
-        esc(&xa.label)
-    );
+    if x_labels {
+        let _ = write!(
+            s,
+            "\n<text class=\"xlabel\" x=\"{}\" y=\"{}\" font-size=\"{LABEL}\" text-anchor=\"middle\">{}</text>",
+            px((x0 + x1) / 2.0),
+            px(y1 + 6.0 + TICK + 10.0 + LABEL),
+            esc(&xa.label)
+        );
+    }
     let ylx = x0
         - 8.0
         - (ya.ticks.iter())
@@ -296,13 +386,14 @@ fn panel_svg(s: &mut String, p: &Panel, m: &Map, place: Place, clip: &str) {
             "\n<text class=\"ptitle\" x=\"{}\" y=\"{}\" font-size=\"{PANEL_TITLE}\">{}</text>",
             px(x0),
             px(y0 - 9.0),
-            esc(&p.title)
+            esc(&one_line(&p.title, PANEL_TITLE, m.size.w))
         );
     }
-    // Data, clipped to the plot area.
+    // Data, clipped to the plot area. Lines that coincide with an earlier one are drawn in dashes that
+    // leave gaps, so that each of them shows.
     let _ = write!(s, "\n<g clip-path=\"url(#{clip})\">");
-    for ser in &p.series {
-        series_svg(s, ser, m);
+    for (ser, c) in p.series.iter().zip(same) {
+        series_svg(s, ser, m, c.map(|c| (c, &p.series[c.root].label)));
     }
     s.push_str("\n</g>");
     // Markers are not clipped: a dot on the largest value, at the frame, stays whole.
@@ -317,7 +408,7 @@ fn panel_svg(s: &mut String, p: &Panel, m: &Map, place: Place, clip: &str) {
         px(m.size.w),
         px(m.size.h)
     );
-    legend_svg(s, p, place, (x0, y0, x1));
+    legend_svg(s, p, place, (x0, y0, x1), same);
     s.push_str("\n</g>");
 }
 
@@ -344,7 +435,243 @@ fn pixels(ser: &Series, m: &Map) -> Vec<(f64, f64)> {
     }
 }
 
-fn series_svg(s: &mut String, ser: &Series, m: &Map) {
+/// A line drawn over an earlier one it coincides with: the earlier one (`root`), its place among the copies
+/// of that line (1, 2, ...) and the number of lines in the group (the root included).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Same {
+    root: usize,
+    rank: usize,
+    group: usize,
+}
+
+/// Length of a dash of coinciding lines, px.
+const DASH: f64 = 6.0;
+
+/// For each series of `p`, the earlier labelled line it coincides with, if any: both run over the same x
+/// span and no point of either lies farther than 0.5 % of the plot's height from the other (in pixels, so
+/// that a log axis is judged as drawn).
+fn coincident(p: &Panel, m: &Map) -> Vec<Option<Same>> {
+    let n = p.series.len();
+    let mut same: Vec<Option<Same>> = vec![None; n];
+    let lines: Vec<Option<Vec<(f64, f64)>>> = p
+        .series
+        .iter()
+        .map(|s| match s.mark {
+            Mark::Line { .. } if !s.label.is_empty() => Some(pixels(s, m)),
+            _ => None,
+        })
+        .collect();
+    let tol = 0.005 * m.size.h;
+    for i in 0..n {
+        let Some(a) = &lines[i] else { continue };
+        for j in 0..i {
+            let Some(b) = &lines[j] else { continue };
+            if same[j].is_some() || !close(a, b, tol) {
+                continue;
+            }
+            same[i] = Some(Same {
+                root: j,
+                rank: 0,
+                group: 0,
+            });
+            break;
+        }
+    }
+    // Number the copies of each root.
+    for j in 0..n {
+        let copies: Vec<usize> = (0..n)
+            .filter(|&i| same[i].is_some_and(|c| c.root == j))
+            .collect();
+        for (r, &i) in copies.iter().enumerate() {
+            same[i] = Some(Same {
+                root: j,
+                rank: r + 1,
+                group: copies.len() + 1,
+            });
+        }
+    }
+    same
+}
+
+/// Whether two drawn lines (pixels) coincide within `tol` px: the same x span, and every point of each
+/// within `tol` of the other line.
+fn close(a: &[(f64, f64)], b: &[(f64, f64)], tol: f64) -> bool {
+    let (Some(a0), Some(a1), Some(b0), Some(b1)) = (a.first(), a.last(), b.first(), b.last())
+    else {
+        return false;
+    };
+    let span = |v: &[(f64, f64)]| {
+        v.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.0), hi.max(p.0))
+            })
+    };
+    let (sa, sb) = (span(a), span(b));
+    if (sa.0 - sb.0).abs() > tol.max(1.0) || (sa.1 - sb.1).abs() > tol.max(1.0) {
+        return false;
+    }
+    let _ = (a0, a1, b0, b1);
+    within(a, b, tol) && within(b, a, tol)
+}
+
+/// Whether every point of `a` lies within `tol` px of the polyline `b`: by interpolation at the same x when
+/// `b` runs left to right, else by the distance to its nearest segment (for loops; long ones are not
+/// compared).
+fn within(a: &[(f64, f64)], b: &[(f64, f64)], tol: f64) -> bool {
+    let monotone = b.windows(2).all(|w| w[1].0 >= w[0].0);
+    if monotone {
+        return a.iter().all(|&(x, y)| {
+            let k = b.partition_point(|p| p.0 < x);
+            let mut best = f64::INFINITY;
+            // Every point of b at this x (a vertical run) and the segment across it.
+            let mut i = k;
+            while i < b.len() && b[i].0 <= x {
+                best = best.min((b[i].1 - y).abs());
+                i += 1;
+            }
+            if k > 0 && k < b.len() {
+                let (p, q) = (b[k - 1], b[k]);
+                let f = if q.0 > p.0 {
+                    (x - p.0) / (q.0 - p.0)
+                } else {
+                    0.0
+                };
+                best = best.min((p.1 + f * (q.1 - p.1) - y).abs());
+            }
+            best <= tol
+        });
+    }
+    if a.len().saturating_mul(b.len()) > 4_000_000 {
+        return false;
+    }
+    a.iter().all(|&pt| {
+        b.windows(2)
+            .any(|w| segment_distance(pt, w[0], w[1]) <= tol)
+            || (b.len() == 1 && segment_distance(pt, b[0], b[0]) <= tol)
+    })
+}
+
+/// Distance from `p` to the segment `a`-`b`, px.
+fn segment_distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = dx * dx + dy * dy;
+    let f = if l2 > 0.0 {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p.0 - a.0 - f * dx).hypot(p.1 - a.1 - f * dy)
+}
+
+/// The stroke of a line that coincides with an earlier one: dashes of [`DASH`] px, one every `group` dashes,
+/// shifted by its rank, so that the earlier line shows in the remaining gaps.
+fn same_stroke(st: &Style, c: Same) -> String {
+    let period = DASH * c.group as f64;
+    format!(
+        "stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{} {}\" stroke-dashoffset=\"{}\"",
+        st.color,
+        px(st.width),
+        px(DASH),
+        px(period - DASH),
+        px(-DASH * (c.rank - 1) as f64)
+    )
+}
+
+/// The legend text of a series: its label, and the line it coincides with.
+fn legend_label(p: &Panel, k: usize, same: &[Option<Same>]) -> String {
+    let ser = &p.series[k];
+    match same[k] {
+        Some(c) => format!("{} (same as {})", ser.label, short_name(p, c.root)),
+        None => ser.label.clone(),
+    }
+}
+
+/// The label of series `k` without its parenthesis ("hunt-crossley (e_post 0.65)" → "hunt-crossley"),
+/// unless another label of the panel starts the same ("Anagnostopoulos (kelvin-voigt, clamped)").
+fn short_name(p: &Panel, k: usize) -> String {
+    let of = &p.series[k].label;
+    match of.split_once(" (") {
+        Some((head, _))
+            if !p
+                .series
+                .iter()
+                .enumerate()
+                .any(|(i, s)| i != k && s.label.starts_with(head)) =>
+        {
+            head.to_string()
+        }
+        _ => of.clone(),
+    }
+}
+
+/// A marker of `shape` and radius `r` at `(cx, cy)`, px: a circle, or a path that carries its centre as
+/// `data-cx`, `data-cy`.
+fn marker(s: &mut String, shape: Shape, cx: f64, cy: f64, r: f64) {
+    let d = match shape {
+        Shape::Circle => return circle(s, cx, cy, r),
+        Shape::Square => {
+            let h = 0.89 * r;
+            format!(
+                "M{} {}h{}v{}h{}z",
+                px(cx - h),
+                px(cy - h),
+                px(2.0 * h),
+                px(2.0 * h),
+                px(-2.0 * h)
+            )
+        }
+        Shape::Diamond => {
+            let h = 1.25 * r;
+            format!(
+                "M{} {}L{} {}L{} {}L{} {}z",
+                px(cx),
+                px(cy - h),
+                px(cx + h),
+                px(cy),
+                px(cx),
+                px(cy + h),
+                px(cx - h),
+                px(cy)
+            )
+        }
+        Shape::Triangle | Shape::TriangleDown => {
+            let h = 1.35 * r;
+            let sgn = if shape == Shape::Triangle { 1.0 } else { -1.0 };
+            format!(
+                "M{} {}L{} {}L{} {}z",
+                px(cx),
+                px(cy - sgn * h),
+                px(cx + 0.866 * h),
+                px(cy + sgn * 0.5 * h),
+                px(cx - 0.866 * h),
+                px(cy + sgn * 0.5 * h)
+            )
+        }
+        Shape::Hexagon => {
+            let h = 1.1 * r;
+            let mut d = String::new();
+            for k in 0..6 {
+                let a = std::f64::consts::PI / 3.0 * k as f64;
+                let _ = write!(
+                    d,
+                    "{}{} {}",
+                    if k == 0 { "M" } else { "L" },
+                    px(cx + h * a.cos()),
+                    px(cy + h * a.sin())
+                );
+            }
+            d + "z"
+        }
+    };
+    let _ = write!(
+        s,
+        "<path data-cx=\"{}\" data-cy=\"{}\" d=\"{d}\"/>",
+        px(cx),
+        px(cy)
+    );
+}
+
+fn series_svg(s: &mut String, ser: &Series, m: &Map, same: Option<(Same, &String)>) {
     let label = esc(&ser.label);
     match &ser.mark {
         Mark::Line { x, y } => {
@@ -362,20 +689,32 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map) {
                 }
                 let _ = write!(d, "{},{}", px(pts[i].0), px(pts[i].1));
             }
+            let (stroke, of) = match same {
+                Some((c, of)) => (
+                    same_stroke(&ser.style, c),
+                    format!(" data-same-as=\"{}\"", esc(of)),
+                ),
+                None => (stroke(&ser.style), String::new()),
+            };
             let _ = write!(
                 s,
-                "\n<polyline class=\"line\" data-label=\"{label}\" fill=\"none\" stroke-linejoin=\"round\" {} points=\"{d}\"/>",
-                stroke(&ser.style)
+                "\n<polyline class=\"line\" data-label=\"{label}\"{of} fill=\"none\" stroke-linejoin=\"round\" {stroke} points=\"{d}\"/>"
             );
         }
         Mark::Points { x, y } => {
             let _ = write!(
                 s,
-                "\n<g class=\"points\" data-label=\"{label}\" fill=\"{}\" fill-opacity=\"0.85\">",
+                "\n<g class=\"points\" data-label=\"{label}\" fill=\"{}\" fill-opacity=\"0.85\" stroke=\"#ffffff\" stroke-width=\"0.6\">",
                 ser.style.color
             );
             for (a, b) in x.iter().zip(y) {
-                circle(s, m.px(*a), m.py(*b), ser.style.width + 1.2);
+                marker(
+                    s,
+                    ser.style.shape,
+                    m.px(*a),
+                    m.py(*b),
+                    ser.style.width + 1.2,
+                );
             }
             s.push_str("</g>");
         }
@@ -406,16 +745,11 @@ fn series_svg(s: &mut String, ser: &Series, m: &Map) {
     }
 }
 
-/// A legend's dot of radius `r` at `(cx, cy)`, px, filled with `color`, on a line of its own.
-fn legend_dot(s: &mut String, cx: f64, cy: f64, r: f64, color: &str) {
-    let _ = write!(
-        s,
-        "\n<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>",
-        px(cx),
-        px(cy),
-        px(r),
-        color
-    );
+/// A legend's marker of `shape` and radius `r` at `(cx, cy)`, px, filled with `color`, on a line of its own.
+fn legend_dot(s: &mut String, cx: f64, cy: f64, r: f64, color: &str, shape: Shape) {
+    let _ = write!(s, "\n<g fill=\"{color}\">");
+    marker(s, shape, cx, cy, r);
+    s.push_str("</g>");
 }
 
 /// One dot of radius `r` at `(cx, cy)`, px.
@@ -444,7 +778,7 @@ fn markers_svg(s: &mut String, ser: &Series, m: &Map) {
     for (a, b) in x.iter().zip(y) {
         let (cx, cy) = (m.px(*a), m.py(*b));
         if inside(cx, m.x0, m.x0 + m.size.w) && inside(cy, m.y0, m.y0 + m.size.h) {
-            circle(s, cx, cy, ser.style.width + 1.4);
+            marker(s, ser.style.shape, cx, cy, ser.style.width + 1.4);
         }
     }
     s.push_str("</g>");
@@ -485,11 +819,16 @@ fn thin(pts: &[(f64, f64)], width: f64) -> Vec<usize> {
 }
 
 /// Width and height of a panel's legend box, px.
-fn legend_size(p: &Panel) -> (f64, f64) {
-    let labelled: Vec<&Series> = p.series.iter().filter(|s| !s.label.is_empty()).collect();
+fn legend_size(p: &Panel, same: &[Option<Same>]) -> (f64, f64) {
+    let labelled: Vec<(usize, &Series)> = p
+        .series
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| !s.label.is_empty())
+        .collect();
     let w = labelled
         .iter()
-        .map(|s| text_width(&s.label, LEGEND))
+        .map(|(k, _)| text_width(&legend_label(p, *k, same), LEGEND))
         .fold(0.0, f64::max);
     (w + 40.0, labelled.len() as f64 * ENTRY + 8.0)
 }
@@ -504,8 +843,8 @@ enum Place {
 
 /// An inside legend goes in the first corner (top right, top left, bottom right, bottom left) where it hides
 /// no data; if every corner hides some, it goes to the right of the plot.
-fn place_legend(p: &Panel, xa: &Axis, ya: &Axis, size: Size) -> Place {
-    let (w, h) = legend_size(p);
+fn place_legend(p: &Panel, xa: &Axis, ya: &Axis, size: Size, same: &[Option<Same>]) -> Place {
+    let (w, h) = legend_size(p, same);
     match p.legend {
         _ if h <= 8.0 => return Place::Nowhere,
         Legend::None => return Place::Nowhere,
@@ -543,8 +882,14 @@ fn place_legend(p: &Panel, xa: &Axis, ya: &Axis, size: Size) -> Place {
         .map_or(Place::Right, |&(x, y)| Place::Corner(x, y))
 }
 
-fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, f64)) {
-    let (w, h) = legend_size(p);
+fn legend_svg(
+    s: &mut String,
+    p: &Panel,
+    place: Place,
+    (x0, y0, x1): (f64, f64, f64),
+    same_all: &[Option<Same>],
+) {
+    let (w, h) = legend_size(p, same_all);
     let (lx, ly) = match place {
         Place::Nowhere => return,
         Place::Right => (x1 + 14.0, y0),
@@ -558,12 +903,25 @@ fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, 
         px(w),
         px(h)
     );
-    for (i, ser) in p.series.iter().filter(|s| !s.label.is_empty()).enumerate() {
+    let labelled = p
+        .series
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| !s.label.is_empty());
+    for (i, (k, ser)) in labelled.enumerate() {
         let cy = ly + 4.0 + ENTRY * (i as f64 + 0.5);
         let sx = lx + 8.0;
+        let same = same_all[k];
         match ser.mark {
             Mark::Points { .. } => {
-                legend_dot(s, sx + 11.0, cy, ser.style.width + 1.2, ser.style.color);
+                legend_dot(
+                    s,
+                    sx + 11.0,
+                    cy,
+                    ser.style.width + 1.2,
+                    ser.style.color,
+                    ser.style.shape,
+                );
             }
             Mark::Rug(_) => {
                 let _ = write!(
@@ -580,10 +938,27 @@ fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, 
                     "\n<path d=\"M{} {}h22\" fill=\"none\" {}/>",
                     px(sx),
                     px(cy),
-                    stroke(&ser.style)
+                    match same {
+                        Some(c) => same_stroke(
+                            &ser.style,
+                            Same {
+                                rank: 1,
+                                group: 2,
+                                ..c
+                            }
+                        ),
+                        None => stroke(&ser.style),
+                    }
                 );
                 if ser.style.marker {
-                    legend_dot(s, sx + 11.0, cy, ser.style.width + 1.4, ser.style.color);
+                    legend_dot(
+                        s,
+                        sx + 11.0,
+                        cy,
+                        ser.style.width + 1.4,
+                        ser.style.color,
+                        ser.style.shape,
+                    );
                 }
             }
         }
@@ -592,7 +967,7 @@ fn legend_svg(s: &mut String, p: &Panel, place: Place, (x0, y0, x1): (f64, f64, 
             "\n<text x=\"{}\" y=\"{}\">{}</text>",
             px(sx + 28.0),
             px(cy + 0.35 * LEGEND),
-            esc(&ser.label)
+            esc(&legend_label(p, k, same_all))
         );
     }
     s.push_str("\n</g>");
@@ -628,7 +1003,20 @@ mod tests {
     }
 
     #[test]
-    fn long_subtitles_wrap_at_spaces() {
+    fn long_subtitles_stay_on_one_line_and_lose_nothing() {
+        let text = "papi, k = 1e9 N/m, e = 0.65, damping formula; m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s";
+        let (line, rest) = split_subtitle(text, 12.0, 300.0);
+        assert!(text_width(&line, 12.0) <= 300.0);
+        assert_eq!(format!("{line}; {}", rest.unwrap()), text);
+        // One clause too long: cut with an ellipsis.
+        let path = "six.toml: records/a-very-long-folder-name/another-level/with-a-long-record-file-name.csv";
+        let (line, rest) = split_subtitle(path, 12.0, 300.0);
+        assert!(line.ends_with('\u{2026}') && text_width(&line, 12.0) <= 300.0);
+        assert_eq!(rest, None);
+    }
+
+    #[test]
+    fn long_notes_wrap_at_spaces() {
         let text = "m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s, e_pre = 0.65, formula damping";
         let lines = wrap(text, 12.0, 200.0);
         assert!(lines.len() > 1);

@@ -637,6 +637,29 @@ pub struct Histories {
     /// Energies, J: input, kinetic, recoverable strain, viscous damping, hysteretic, contact work
     /// (`energy[0..6][sample]`).
     pub energy: [Vec<f64>; 6],
+    /// The force–penetration path of every impact, `impact_loops[i]` of [`Results::impacts`]`[i]`: points at
+    /// every accepted integration step in contact, with the located peak (histories sample every
+    /// `output_dt`, too coarse for impacts of a few ms).
+    pub impact_loops: Vec<ImpactLoop>,
+}
+
+/// Largest number of points an [`ImpactLoop`] keeps; past it, every other point is dropped and only every
+/// `stride`-th step is kept from then on ([`ImpactLoop::stride`]).
+pub const MAX_LOOP_POINTS: usize = 2000;
+
+/// The path of one impact: its touch, the end of every accepted integration step while in contact, and its
+/// located peak force, in time order.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ImpactLoop {
+    /// Times, s.
+    pub t: Vec<f64>,
+    /// Penetration `u_left - u_right - gap` (for a wall, towards it), m.
+    pub penetration: Vec<f64>,
+    /// Contact force (as reported: the located peak is [`Impact::peak_force`]), N.
+    pub force: Vec<f64>,
+    /// 1 if every step is kept; `2^k` once the impact outgrew [`MAX_LOOP_POINTS`] `k` times (then one step
+    /// in `stride` is kept, and always the touch, the last step and the peak).
+    pub stride: usize,
 }
 
 /// Counts of the integration.

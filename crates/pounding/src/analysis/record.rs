@@ -2,7 +2,7 @@
 //! balance, and (optionally) histories at the output interval.
 
 use super::model::{ContactRef, DeviceRef, Model};
-use super::{Histories, Impact, Progress, Site};
+use super::{Histories, Impact, ImpactLoop, Progress, Site, MAX_LOOP_POINTS};
 use crate::element::{ContactPiece, Engagement, Event, Kind};
 use crate::engine::{hermite_peak, EventInfo, Hermite, Observer, PeakTracker, Segment, System};
 use std::ops::ControlFlow;
@@ -104,6 +104,85 @@ struct Tracker {
     resting: bool,
     /// Index in the impact list once recorded (released, not yet re-armed).
     recorded: Option<usize>,
+    /// Its force–penetration path, if the run keeps them.
+    path: Option<Path>,
+}
+
+/// The points of an impact's path so far. The last point is always the latest step; it stays only if it
+/// falls on the stride (`tentative` otherwise, and the next step replaces it).
+struct Path {
+    points: ImpactLoop,
+    steps: usize,
+    tentative: bool,
+}
+
+impl Path {
+    fn new(t: f64, d: f64, f: f64) -> Self {
+        Self {
+            points: ImpactLoop {
+                t: vec![t],
+                penetration: vec![d],
+                force: vec![f],
+                stride: 1,
+            },
+            steps: 0,
+            tentative: false,
+        }
+    }
+
+    fn push(&mut self, t: f64, d: f64, f: f64) {
+        let p = &mut self.points;
+        // A step of zero length (an event at the instant of the last one) adds no point.
+        if p.t.last() == Some(&t) {
+            let k = p.t.len() - 1;
+            p.penetration[k] = d;
+            p.force[k] = f;
+            return;
+        }
+        if self.tentative {
+            p.t.pop();
+            p.penetration.pop();
+            p.force.pop();
+        }
+        p.t.push(t);
+        p.penetration.push(d);
+        p.force.push(f);
+        self.steps += 1;
+        self.tentative = self.steps % p.stride != 0;
+        if p.t.len() > MAX_LOOP_POINTS {
+            // Every other point goes (the touch and the latest step stay), and one step in twice as many is
+            // kept from now on.
+            let n = p.t.len();
+            let keep = |v: &mut Vec<f64>| {
+                let mut k = 0;
+                v.retain(|_| {
+                    k += 1;
+                    (k - 1) % 2 == 0 || k == n
+                });
+            };
+            keep(&mut p.t);
+            keep(&mut p.penetration);
+            keep(&mut p.force);
+            p.stride *= 2;
+            self.tentative = false;
+        }
+    }
+
+    /// The path with the located peak `(t, d, f)` inserted in time order.
+    fn with_peak(&self, (t, d, f): (f64, f64, f64)) -> ImpactLoop {
+        let mut out = self.points.clone();
+        let k = out.t.partition_point(|&x| x <= t);
+        // A peak at a node is that node: replace it rather than add a twin.
+        if k > 0 && out.t[k - 1] == t {
+            out.penetration[k - 1] = d;
+            out.force[k - 1] = f;
+        } else {
+            out.t.insert(k, t);
+            out.penetration.insert(k, d);
+            out.force.insert(k, f);
+        }
+        out
+    }
 }
 
 /// Every impact of every contact element.
@@ -113,6 +192,10 @@ pub(super) struct Impacts {
     slot: Vec<usize>,
     trackers: Vec<Option<Tracker>>,
     pub impacts: Vec<Impact>,
+    /// Keep each impact's force–penetration path.
+    keep_loops: bool,
+    /// The path of each of `impacts` (if kept).
+    loops: Vec<ImpactLoop>,
     /// Largest closing `u_left - u_right` of each contact element so far, m (0 at rest).
     pub max_closing: Vec<f64>,
     /// Largest opening (the closing's opposite) of each contact element so far, m (0 at rest).
@@ -126,7 +209,8 @@ pub(super) struct Impacts {
 }
 
 impl Impacts {
-    pub fn new(m: &Model) -> Self {
+    /// The recorder of `m`'s impacts; `keep_loops`: keep each impact's force–penetration path too.
+    pub fn new(m: &Model, keep_loops: bool) -> Self {
         let mut slot = vec![usize::MAX; m.system.elements().len()];
         for (k, c) in m.contacts.iter().enumerate() {
             slot[c.element] = k;
@@ -147,6 +231,8 @@ impl Impacts {
             slot,
             trackers: m.contacts.iter().map(|_| None).collect(),
             impacts: Vec::new(),
+            keep_loops,
+            loops: Vec::new(),
             max_closing: vec![0.0; m.contacts.len()],
             max_opening: vec![0.0; m.contacts.len()],
             pair,
@@ -158,6 +244,22 @@ impl Impacts {
     /// Impacts started so far (ended or not).
     pub fn count(&self) -> usize {
         self.impacts.len() + self.trackers.iter().flatten().count()
+    }
+
+    /// Records the impact `tr` of `c`, ended at `t` (or still going on, `v_out = None`).
+    fn record(&mut self, k: usize, t: f64, v_out: Option<f64>, work: f64) {
+        let c = &self.contacts[k];
+        let tr = self.trackers[k].as_mut().expect("an impact under way");
+        let i = Self::impact(c, tr, t, v_out, work);
+        if let Some(path) = &tr.path {
+            let d = tr
+                .peak
+                .best_piece()
+                .map_or(path.points.penetration[0], |p| p.at(i.time_of_peak_force).0);
+            self.loops
+                .push(path.with_peak((i.time_of_peak_force, d, i.peak_force)));
+        }
+        self.impacts.push(i);
     }
 
     fn impact(c: &ContactRef, tr: &mut Tracker, t: f64, v_out: Option<f64>, work: f64) -> Impact {
@@ -179,21 +281,35 @@ impl Impacts {
         }
     }
 
-    /// Ends the record: impacts still going on at `t`, and every impact in order of touch.
-    pub fn finish(&mut self, sys: &System, t: f64, y: &[f64]) -> Vec<Impact> {
-        for (k, c) in self.contacts.iter().enumerate() {
+    /// Ends the record: impacts still going on at `t`, and every impact in order of touch, with their paths
+    /// in the same order (empty if not kept).
+    pub fn finish(&mut self, sys: &System, t: f64, y: &[f64]) -> (Vec<Impact>, Vec<ImpactLoop>) {
+        for k in 0..self.contacts.len() {
+            let c = self.contacts[k];
             let engaged = matches!(
                 &sys.elements()[c.element].kind,
                 Kind::Contact(ct) if matches!(ct.state(), Engagement::Contact { .. })
             );
-            if let (Some(tr), true) = (self.trackers[k].as_mut(), engaged) {
+            if self.trackers[k].is_some() && engaged {
                 let work = y[sys.layout().block(c.element).start];
-                self.impacts.push(Self::impact(c, tr, t, None, work));
+                self.record(k, t, None, work);
             }
         }
-        let mut impacts = std::mem::take(&mut self.impacts);
-        impacts.sort_by(|a, b| a.time.total_cmp(&b.time));
-        impacts
+        let impacts = std::mem::take(&mut self.impacts);
+        let mut loops = std::mem::take(&mut self.loops);
+        let mut order: Vec<usize> = (0..impacts.len()).collect();
+        // Stable: impacts that touch at one instant keep the order they were recorded in.
+        order.sort_by(|&a, &b| impacts[a].time.total_cmp(&impacts[b].time));
+        let sorted = order.iter().map(|&i| impacts[i].clone()).collect();
+        let loops = if loops.is_empty() {
+            loops
+        } else {
+            order
+                .iter()
+                .map(|&i| std::mem::take(&mut loops[i]))
+                .collect()
+        };
+        (sorted, loops)
     }
 }
 
@@ -235,8 +351,12 @@ impl Observer for Impacts {
             let (x, v) = sys.deformation_interpolants(c.element, seg.dense);
             if let Some(piece) = ct.piece((seg.t0, seg.t1), x, v) {
                 let (x1, v1) = sys.deformation(c.element, seg.y1);
-                tr.peak.push(piece, ct.reported_force(x1, v1));
+                let f1 = ct.reported_force(x1, v1);
+                tr.peak.push(piece, f1);
                 tr.max_penetration = tr.max_penetration.max(x1 - ct.gap());
+                if let Some(path) = tr.path.as_mut() {
+                    path.push(seg.t1, x1 - ct.gap(), f1);
+                }
             }
         }
     }
@@ -253,6 +373,7 @@ impl Observer for Impacts {
         };
         let (x, v) = sys.deformation(c.element, ev.y);
         let work = ev.y[sys.layout().block(c.element).start];
+        let keep = self.keep_loops;
         let start = || Tracker {
             time: ev.t,
             v_i: v,
@@ -261,6 +382,7 @@ impl Observer for Impacts {
             max_penetration: 0.0,
             resting: v < ct.min_impact_velocity(),
             recorded: None,
+            path: keep.then(|| Path::new(ev.t, x - ct.gap(), ct.reported_force(x, v))),
         };
         let engaged = matches!(ct.state(), Engagement::Contact { .. });
         match ev.event {
@@ -273,23 +395,25 @@ impl Observer for Impacts {
                     tr.max_penetration = tr.max_penetration.max(x - ct.gap());
                 }
             }
-            Event::ZeroForce => {
+            Event::ZeroForce if self.trackers[k].is_some() => {
+                self.record(k, ev.t, Some(v), work);
+                let n = self.impacts.len();
                 if let Some(tr) = self.trackers[k].as_mut() {
-                    self.impacts.push(Self::impact(&c, tr, ev.t, Some(v), work));
-                    tr.recorded = Some(self.impacts.len() - 1);
+                    tr.recorded = Some(n - 1);
                 }
             }
-            Event::Separation => {
-                if let Some(mut tr) = self.trackers[k].take() {
-                    self.impacts
-                        .push(Self::impact(&c, &mut tr, ev.t, Some(v), work));
-                }
+            Event::Separation if self.trackers[k].is_some() => {
+                self.record(k, ev.t, Some(v), work);
+                self.trackers[k] = None;
             }
             Event::Rearm => self.trackers[k] = None,
             Event::Resume => {
                 // The same impact goes on: withdraw its record.
                 if let Some(i) = self.trackers[k].as_mut().and_then(|tr| tr.recorded.take()) {
                     self.impacts.remove(i);
+                    if self.keep_loops {
+                        self.loops.remove(i);
+                    }
                     for j in self
                         .trackers
                         .iter_mut()
@@ -365,6 +489,7 @@ impl HistoryRecorder {
                 wall_force: per(walls),
                 device_force: per(devices),
                 energy: std::array::from_fn(|_| Vec::with_capacity(n_out)),
+                impact_loops: Vec::new(),
             },
             times: (0..n_out).map(|k| (k as f64 * dt).min(t_end)).collect(),
             next: 0,
@@ -559,5 +684,43 @@ impl Observer for Recorders<'_> {
 
     fn cancelled(&self) -> bool {
         self.cancelled
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Path, MAX_LOOP_POINTS};
+
+    #[test]
+    fn a_long_path_keeps_its_ends_and_its_peak_within_the_cap() {
+        // A triangle of 10 001 steps: force i at step i up to 5000, then down; penetration = force / 1e3.
+        let n = 10_000;
+        let f = |i: usize| (i.min(n - i)) as f64;
+        let mut p = Path::new(0.0, 0.0, 0.0);
+        for i in 1..=n {
+            p.push(i as f64, f(i) / 1e3, f(i));
+        }
+        let l = &p.points;
+        assert!(l.t.len() <= MAX_LOOP_POINTS);
+        assert!(l.t.windows(2).all(|w| w[0] < w[1]));
+        assert_eq!((l.t[0], *l.t.last().unwrap()), (0.0, n as f64));
+        // 10 000 steps in at most 2000 points: one in 8 kept.
+        assert_eq!(l.stride, 8);
+        // The located peak goes in at its time, between kept points.
+        let with = p.with_peak((5000.5, 5.0005, 5000.5));
+        let k = with.force.iter().position(|&x| x == 5000.5).unwrap();
+        assert!(with.t[k - 1] < 5000.5 && with.t[k + 1] > 5000.5);
+        assert_eq!(with.t.len(), l.t.len() + 1);
+        // A peak at a kept node replaces it.
+        assert_eq!(p.with_peak((0.0, 0.0, 1.0)).t.len(), l.t.len());
+    }
+
+    #[test]
+    fn a_short_path_keeps_every_step() {
+        let mut p = Path::new(0.0, 0.0, 0.0);
+        for i in 1..=100 {
+            p.push(i as f64, 0.0, 1.0);
+        }
+        assert_eq!((p.points.t.len(), p.points.stride), (101, 1));
     }
 }

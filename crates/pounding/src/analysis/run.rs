@@ -3,8 +3,8 @@
 use super::model::Model;
 use super::record::{DevicePeaks, HistoryRecorder, Impacts, Peak, Peaks, Recorders};
 use super::{
-    BuildingResponse, DeviceResponse, EnergyBalance, Layer, LinkResponse, Results, RunOptions,
-    Scenario, Site, Statistics,
+    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Layer, LinkResponse, Results,
+    RunOptions, Scenario, Site, Statistics,
 };
 use crate::element::Kind;
 use crate::engine::{self, Settings};
@@ -80,7 +80,7 @@ pub(super) fn run(
     });
     let mut rec = Recorders::new(
         Peaks::new(&model),
-        Impacts::new(&model),
+        Impacts::new(&model, opts.histories),
         DevicePeaks::new(&model),
         histories,
         progress,
@@ -182,7 +182,7 @@ pub(super) fn run(
             }
         })
         .collect();
-    let impacts = rec.impacts.finish(sys, out.t, y);
+    let (impacts, impact_loops) = rec.impacts.finish(sys, out.t, y);
     // Totals of a link or a wall: its impacts, the work of its elements, its closings and openings per
     // site (a bumper's two elements share their site), and its largest force.
     let totals = |owns: &dyn Fn(Site) -> bool, seat: Option<f64>| {
@@ -259,7 +259,13 @@ pub(super) fn run(
                 0.0
             },
         },
-        histories: rec.histories.map(|h| h.hist).unwrap_or_default(),
+        histories: rec
+            .histories
+            .map(|h| Histories {
+                impact_loops,
+                ..h.hist
+            })
+            .unwrap_or_default(),
         statistics: Statistics {
             steps: out.steps,
             rejected: out.rejected,
