@@ -104,7 +104,7 @@ pub struct SweepArgs {
 
 #[derive(Args, Debug)]
 #[command(
-    after_help = "Files in --out: scenario.toml, summary.json, response.csv, impacts.csv, energy.csv. With --plots: displacement.svg, envelopes.svg, hysteresis.svg (hysteresis-storeys.svg with two or more inelastic storeys), isolators.svg (isolated buildings), contact-force.svg, impact-restitution.svg, relative-displacement.svg (with contacts or walls), device-force.svg (with devices), energy.svg. With --report: report.html. See docs/scenarios.md and docs/figures.md."
+    after_help = "Files in --out: scenario.toml, summary.json, response.csv, impacts.csv, impact-loops.csv, energy.csv. With --plots: record.svg, displacement.svg, envelopes.svg, hysteresis.svg, energy.svg; hysteresis-storeys.svg (a building with two or more inelastic storeys), isolators.svg (isolated buildings), contact-force.svg and relative-displacement.svg (contacts or walls), impact-loops.svg (an impact happened), impact-restitution.svg (an impact ended), device-force.svg (devices). With --report: report.html. See docs/scenarios.md and docs/figures.md."
 )]
 pub struct RunArgs {
     /// Scenario file (TOML): ground motion, buildings left to right, contacts. See examples/.

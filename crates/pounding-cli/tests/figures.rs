@@ -1105,8 +1105,9 @@ fn coinciding_curves_say_so_and_stay_visible() {
         "paper",
         "table1",
         "--json",
-        "--plots",
+        "--out",
         dir.to_str().unwrap(),
+        "--plots",
     ]);
     let panels = read_panels(&dir.join("table1-e-post.svg"));
     let (p, k) = panels
@@ -1158,8 +1159,9 @@ fn coinciding_curves_say_so_and_stay_visible() {
         "--damping",
         "exact",
         "--json",
-        "--plots",
+        "--out",
         dir.to_str().unwrap(),
+        "--plots",
     ]);
     for name in ["compare-force-time", "compare-force-penetration"] {
         let p = &read_panels(&dir.join(format!("{name}.svg")))[0];

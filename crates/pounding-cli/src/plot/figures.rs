@@ -1,5 +1,5 @@
 //! The tool's figures: one impact (force against time and against penetration), several models on one
-//! impact, the seed's Table 1 as curves, and the figures of a pounding run.
+//! impact, Table 1 of Papi & Toopchi-Nezhad (2022) as curves, and the figures of a pounding run.
 
 use super::axis::human;
 use super::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
@@ -99,7 +99,7 @@ pub struct Curve {
     pub e_post: Vec<f64>,
 }
 
-/// The seed's Table 1 as curves, in two groups (the seed's models; the other damped models): delivered
+/// Table 1 of Papi & Toopchi-Nezhad (2022) as curves, in two groups (the paper's models; the other damped models): delivered
 /// against requested e with the ideal line, and the relative error against e.
 pub fn table1(groups: &[(&str, Vec<Curve>)]) -> Vec<Figure> {
     let e_pre = || Quantity::new("requested e (e_pre)", "");
@@ -160,7 +160,7 @@ pub fn table1(groups: &[(&str, Vec<Curve>)]) -> Vec<Figure> {
         },
         Figure {
             id: "table1-error".into(),
-            title: "Error in the coefficient of restitution (seed's Table 1)".into(),
+            title: "Error in the coefficient of restitution (Table 1 of Papi & Toopchi-Nezhad 2022)".into(),
             subtitle: format!(
                 "{subtitle}; errors below 0.001 % (calibrated models: about 1e\u{2212}10 %) lie under the axis"
             ),
