@@ -874,6 +874,10 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
         p.x_range = Some(t_range);
         p.y_zero = true;
         p.legend = Legend::None;
+        if mine.is_empty() && el.force.iter().all(|f| *f == 0.0) {
+            // A level that never touched: a plain 0 to 1 MN axis, not one scaled to nothing.
+            p.y_range = Some((0.0, 1.0e6));
+        }
         // The samples, with each impact's located peak inserted, so the curve reaches its true peak.
         let peaks: Vec<(f64, f64)> = mine
             .iter()
