@@ -248,10 +248,10 @@ fn impact_figures(
         return Vec::new();
     };
     let subtitle = format!(
-        "{}; {inputs}: e_post = {}, peak force {} N",
+        "{}; {inputs}: e_post = {}, peak force {}",
         contact_label(s, None).replace(" (set per impact)", ""),
         fmt_sig(r.e_post, 6),
-        fmt_sig(r.peak_force, 5)
+        crate::plot::axis::human(r.peak_force, "N", 4)
     );
     figures::impact(
         prefix,

@@ -100,6 +100,27 @@ pub fn fmt_sig(x: f64, digits: i32) -> String {
     fmt_num((x * f).round() / f)
 }
 
+/// `x` with about `sig` significant digits in plain ASCII notation (no exponent, fixed decimals, at most 6), for
+/// the terminal's tables; a value that rounds to zero is `0`, never `-0.000`. (The figures and the report use
+/// `plot::axis::plain`, with typographic minus and powers of ten.)
+pub fn fmt_table(x: f64, sig: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return if x == 0.0 { "0".into() } else { fmt_num(x) };
+    }
+    let decimals = (sig - 1 - x.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    let text = format!("{x:.decimals$}");
+    // -0.000 reads as a sign error; a value that rounds to zero is 0.
+    if text
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        "0".into()
+    } else {
+        text
+    }
+}
+
 pub use pounding_study::summary::num;
 
 pub use pounding_study::input::write_atomic;
@@ -180,5 +201,15 @@ mod tests {
         assert_eq!(fmt_num(1.0e7), "1e7");
         assert_eq!(fmt_num(9.782715214245265e6), "9.78271521425e6");
         assert_eq!(fmt_num(123.456), "123.456");
+    }
+
+    #[test]
+    fn table_numbers_are_plain_and_never_negative_zero() {
+        assert_eq!(fmt_table(22756.7, 4), "22757");
+        assert_eq!(fmt_table(9.1524, 4), "9.152");
+        assert_eq!(fmt_table(0.0399, 4), "0.03990");
+        assert_eq!(fmt_table(-3.2e-10, 4), "0");
+        assert_eq!(fmt_table(-0.0, 4), "0");
+        assert_eq!(fmt_table(-12.345, 3), "-12.3");
     }
 }

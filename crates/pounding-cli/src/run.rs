@@ -3,7 +3,7 @@
 
 use crate::args::RunArgs;
 use crate::commands::{contact_label, input};
-use crate::output::{fmt_num, fmt_sig, render_figures};
+use crate::output::{fmt_num, fmt_sig, fmt_table, render_figures};
 use crate::run_data::RunData;
 use crate::scenario::load;
 use crate::CliError;
@@ -329,34 +329,15 @@ fn describe_extras(bumper: &Option<Bumper>, seat: Option<f64>) {
     }
 }
 
-/// `x` with about `sig` significant digits in plain notation (no exponent), for tables people read.
-fn plain(x: f64, sig: i32) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return if x == 0.0 { "0".into() } else { fmt_num(x) };
-    }
-    let decimals = (sig - 1 - x.abs().log10().floor() as i32).clamp(0, 6) as usize;
-    let text = format!("{x:.decimals$}");
-    // -0.000 reads as a sign error; a value that rounds to zero is 0.
-    if text
-        .trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.')
-    {
-        "0".into()
-    } else {
-        text
-    }
-}
-
 /// Metres as millimetres, N as MN, J as kJ: the units of the terminal tables, the figures and the report.
 fn mm(x: f64) -> String {
-    plain(1e3 * x, 4)
+    fmt_table(1e3 * x, 4)
 }
 fn mn(x: f64) -> String {
-    plain(1e-6 * x, 4)
+    fmt_table(1e-6 * x, 4)
 }
 fn kj(x: f64) -> String {
-    plain(1e-3 * x, 4)
+    fmt_table(1e-3 * x, 4)
 }
 
 fn print_results(s: &Scenario, r: &Results) {
@@ -375,7 +356,7 @@ fn print_results(s: &Scenario, r: &Results) {
                 f + 1,
                 mm(resp.peak_displacement[f]),
                 resp.time_of_peak_displacement[f],
-                plain(resp.peak_absolute_acceleration[f], 4),
+                fmt_table(resp.peak_absolute_acceleration[f], 4),
                 f + 1,
                 mm(resp.peak_drift[f]),
                 100.0 * resp.peak_drift[f] / h_f,

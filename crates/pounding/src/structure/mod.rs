@@ -34,7 +34,7 @@ use crate::Error;
 /// assert_eq!(b.elevations(), [3.0, 6.0, 9.0]); // m
 /// // A missing list is named in the error.
 /// let e = ShearBuilding::builder().masses([4.0e5]).heights([3.0]).build().unwrap_err();
-/// assert_eq!(e.to_string(), "stiffnesses has 0 values, but there are 1 floors: give one per floor");
+/// assert_eq!(e.to_string(), "stiffnesses has 0 values, but there is 1 floor: give one per floor");
 /// # Ok::<(), pounding::Error>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]
