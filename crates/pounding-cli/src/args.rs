@@ -109,7 +109,7 @@ pub struct SweepArgs {
 pub struct RunArgs {
     /// Scenario file (TOML): ground motion, buildings left to right, contacts. See examples/.
     pub scenario: std::path::PathBuf,
-    /// Folder for summary.json, response.csv, impacts.csv and energy.csv (created if missing).
+    /// Folder for the run's files, listed below (created if missing; an earlier run's folder is replaced whole).
     #[arg(long, value_name = "DIR")]
     pub out: std::path::PathBuf,
     /// Relative tolerance of the integration, 1e-12 to 1e-3 (overrides [analysis] tolerance).
