@@ -1185,9 +1185,15 @@ fn record(d: &RunData) -> Figure {
             .max_by(|&i, &j| y[i].abs().total_cmp(&y[j].abs()))
             .map_or((0.0, 0.0), |k| (t[k], y[k]))
     };
-    let panel = |title: String, q: Quantity, y: Vec<f64>| {
+    // One panel per quantity, titled with its largest |value| and when.
+    let panel = |what: &'static str, unit: &'static str, y: Vec<f64>| {
         let (tp, yp) = peak(&y);
-        let mut p = Panel::new(title, Quantity::new("time", "s"), q);
+        let title = format!(
+            "ground {what}: largest {} at {} s",
+            human(yp.abs(), unit, 3),
+            fmt_sig(tp, 4)
+        );
+        let mut p = Panel::new(title, Quantity::new("time", "s"), Quantity::new(what, unit));
         p.x_range = Some(t_range);
         p.legend = Legend::None;
         p.series.push(Series::line(
@@ -1210,41 +1216,14 @@ fn record(d: &RunData) -> Figure {
         ));
         p
     };
-    let (ta, ya) = peak(a);
-    let (tv, yv) = peak(&v);
-    let (tu, yu) = peak(&u);
     Figure {
         id: "record".into(),
         title: "Ground motion as the run applied it: acceleration, velocity, displacement".into(),
         subtitle: d.subtitle.clone(),
         panels: vec![
-            panel(
-                format!(
-                    "ground acceleration: largest {} at {} s",
-                    human(ya.abs(), "m/s\u{b2}", 3),
-                    fmt_sig(ta, 4)
-                ),
-                Quantity::new("acceleration", "m/s\u{b2}"),
-                a.clone(),
-            ),
-            panel(
-                format!(
-                    "ground velocity: largest {} at {} s",
-                    human(yv.abs(), "m/s", 3),
-                    fmt_sig(tv, 4)
-                ),
-                Quantity::new("velocity", "m/s"),
-                v,
-            ),
-            panel(
-                format!(
-                    "ground displacement: largest {} at {} s",
-                    human(yu.abs(), "m", 3),
-                    fmt_sig(tu, 4)
-                ),
-                Quantity::new("displacement", "m"),
-                u,
-            ),
+            panel("acceleration", "m/s\u{b2}", a.clone()),
+            panel("velocity", "m/s", v),
+            panel("displacement", "m", u),
         ],
         plot: (PLOT.0, 140.0),
         share_x: true,
