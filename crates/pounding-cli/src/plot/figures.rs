@@ -802,6 +802,14 @@ struct Level {
     style: Style,
 }
 
+impl Level {
+    /// Whether impact `i` happened at this level.
+    fn holds(&self, d: &RunData, i: &crate::run_data::ImpactRow) -> bool {
+        i.contact == self.contact
+            && i.floors == d.contacts[self.contact].elements[self.element].floors
+    }
+}
+
 /// Every contact level of the run, contacts left to right, then walls; floor pairs in order.
 fn contact_levels(d: &RunData) -> Vec<Level> {
     let mut out = Vec::new();
@@ -851,11 +859,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
     for lv in &levels {
         let cd = &d.contacts[lv.contact];
         let el = &cd.elements[lv.element];
-        let mine: Vec<_> = d
-            .impacts
-            .iter()
-            .filter(|i| i.contact == lv.contact && i.floors == el.floors)
-            .collect();
+        let mine: Vec<_> = d.impacts.iter().filter(|i| lv.holds(d, i)).collect();
         let consumed = mine.iter().filter(|i| i.consumed).count();
         let peak = mine.iter().map(|i| i.peak_force).fold(0.0, f64::max);
         let mut title = format!(
@@ -982,11 +986,10 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
     let (mut above, mut ended, mut top) = (0, 0, f64::NEG_INFINITY);
     for lv in &levels {
         let cd = &d.contacts[lv.contact];
-        let el = &cd.elements[lv.element];
         let mine: Vec<_> = d
             .impacts
             .iter()
-            .filter(|i| i.contact == lv.contact && i.floors == el.floors && i.e_post.is_some())
+            .filter(|i| lv.holds(d, i) && i.e_post.is_some())
             .collect();
         if mine.is_empty() {
             continue;
@@ -1068,14 +1071,10 @@ fn impact_loops(d: &RunData) -> Option<Figure> {
     let levels = contact_levels(d);
     let mut panels = Vec::new();
     for lv in &levels {
-        let el = &d.contacts[lv.contact].elements[lv.element];
         let mut mine: Vec<_> = d
             .loops
             .iter()
-            .filter(|l| {
-                let i = &d.impacts[l.impact];
-                i.contact == lv.contact && i.floors == el.floors
-            })
+            .filter(|l| lv.holds(d, &d.impacts[l.impact]))
             .collect();
         if mine.is_empty() {
             continue;
