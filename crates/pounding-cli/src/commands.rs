@@ -517,7 +517,7 @@ fn compare(a: &CompareArgs) -> Result<(), CliError> {
             })
             .collect();
         let subtitle = format!(
-            "{}, e_pre = {}, {damping} damping, k_h = {} N/m^1.5 (equivalent k for n \u{2260} 1.5)",
+            "e_pre = {1}, {damping} damping; {0}; k_h = {2} N/m^1.5 (models of n \u{2260} 1.5: the equivalent k)",
             bodies_text(&a.bodies),
             fmt_num(a.e),
             fmt_num(a.k)
