@@ -1798,3 +1798,61 @@ fn counts_agree_with_their_nouns() {
     assert!(text.contains("1 storey,"), "{text}");
     assert!(!text.contains("1 storeys"), "{text}");
 }
+
+#[test]
+fn every_file_a_command_writes_is_named_in_its_help() {
+    let dir = tmp("help-files");
+    let help = |args: &[&str]| {
+        let o = pounding(args);
+        assert!(o.status.success());
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let written = |out: &std::path::Path| -> Vec<String> {
+        std::fs::read_dir(out)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| !n.starts_with('.'))
+            .collect()
+    };
+    let run_help = help(&["run", "--help"]);
+    // Between them, these examples write every figure a run can write: walls, devices, an isolator,
+    // inelastic storeys.
+    for ex in [
+        "isolated-moat.toml",
+        "bridge-three-span.toml",
+        "three-vs-eight-inelastic.toml",
+    ] {
+        let out = dir.join(ex);
+        let o = pounding(&[
+            "run",
+            &example(ex),
+            "--out",
+            out.to_str().unwrap(),
+            "--plots",
+            "--report",
+            "-q",
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        for name in written(&out) {
+            assert!(run_help.contains(&name), "{ex}: {name} not in `run --help`");
+        }
+    }
+    let out = dir.join("impact");
+    let o = pounding(&[
+        "impact",
+        "--model",
+        "papi",
+        "--e",
+        "0.5",
+        "--out",
+        out.to_str().unwrap(),
+        "--plots",
+    ]);
+    assert!(o.status.success());
+    let impact_help = help(&["impact", "--help"]);
+    let names = written(&out);
+    assert_eq!(names.len(), 4, "{names:?}");
+    for name in names {
+        assert!(impact_help.contains(&name), "{name} not in `impact --help`");
+    }
+}
