@@ -70,7 +70,6 @@ pub struct SeparationArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
-    /// Figure: each rule's estimate against the required gap.
     #[command(flatten)]
     pub out: OutArgs,
 }

@@ -7,7 +7,7 @@ use crate::output::{fmt_num, fmt_sig, fmt_table, render_figures};
 use crate::run_data::RunData;
 use crate::scenario::load;
 use crate::CliError;
-use pounding::analysis::{Bumper, Device, DeviceEnds, Results, Scenario, Site};
+use pounding::analysis::{Bumper, Device, DeviceEnds, Results, Scenario};
 use pounding::element::{DeviceLaw, StoreyLaw};
 use std::fmt::Write as _;
 use std::io::IsTerminal;
@@ -429,10 +429,7 @@ fn print_results(s: &Scenario, r: &Results) {
                     link.contact.spec().restitution(),
                     link.seat,
                     link.bumper.is_some(),
-                    Site::Link {
-                        link: l,
-                        floors: (0, 0),
-                    },
+                    r.delivered_e(Results::at_link(l)),
                 )
             });
         let walls = s
@@ -447,30 +444,17 @@ fn print_results(s: &Scenario, r: &Results) {
                     wall.contact.spec().restitution(),
                     wall.seat,
                     wall.bumper.is_some(),
-                    Site::Wall { wall: w, floor: 0 },
+                    r.delivered_e(Results::at_wall(w)),
                 )
             });
         let mut spread = false;
-        for (name, lr, e_asked, seat, bumper, site) in links.chain(walls) {
-            let same = |i: &&pounding::analysis::Impact| match (i.site, site) {
-                (Site::Link { link: a, .. }, Site::Link { link: b, .. }) => a == b,
-                (Site::Wall { wall: a, .. }, Site::Wall { wall: b, .. }) => a == b,
-                _ => false,
-            };
-            let delivered: Vec<f64> = r
-                .impacts
-                .iter()
-                .filter(same)
-                .filter_map(|i| i.e_post)
-                .collect();
-            let range = match delivered.iter().fold(None, |acc: Option<(f64, f64)>, &e| {
-                Some(acc.map_or((e, e), |(a, b)| (a.min(e), b.max(e))))
-            }) {
+        for (name, lr, e_asked, seat, bumper, delivered) in links.chain(walls) {
+            if let Some((lo, hi)) = delivered {
+                spread |= (lo - e_asked).abs() > 0.01 || (hi - e_asked).abs() > 0.01;
+            }
+            let range = match delivered {
                 Some((lo, hi)) if hi - lo < 5e-4 => format!("{lo:.3}"),
-                Some((lo, hi)) => {
-                    spread |= (lo - e_asked).abs() > 0.01 || (hi - e_asked).abs() > 0.01;
-                    format!("{lo:.3}-{hi:.3}")
-                }
+                Some((lo, hi)) => format!("{lo:.3}-{hi:.3}"),
                 None => "-".into(),
             };
             let opening = lr.max_opening.iter().fold(0.0, |a: f64, b| a.max(*b));

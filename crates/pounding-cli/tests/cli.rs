@@ -1856,3 +1856,52 @@ fn every_file_a_command_writes_is_named_in_its_help() {
         assert!(impact_help.contains(&name), "{name} not in `impact --help`");
     }
 }
+
+#[test]
+fn each_contact_reports_the_range_of_e_its_impacts_delivered() {
+    let dir = tmp("delivered");
+    let out = dir.join("out");
+    let o = pounding(&[
+        "run",
+        &example("three-in-a-row.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    // The range, read independently from impacts.csv (column e_post; empty for an impact not ended).
+    let csv = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (c_contact, c_e) = (col("contact"), col("e_post"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let mut above_one = false;
+    for c in summary["contacts"].as_array().unwrap() {
+        let name = format!(
+            "{}|{}",
+            c["between"][0].as_str().unwrap(),
+            c["between"][1].as_str().unwrap()
+        );
+        let e: Vec<f64> = rows
+            .iter()
+            .filter(|r| r[c_contact] == name && !r[c_e].is_empty())
+            .map(|r| r[c_e].parse().unwrap())
+            .collect();
+        let lo = e.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = e.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        assert_eq!(c["e_delivered"]["min"].as_f64().unwrap(), lo, "{name}");
+        assert_eq!(c["e_delivered"]["max"].as_f64().unwrap(), hi, "{name}");
+        assert!(text.contains(&format!("{lo:.3}-{hi:.3}")), "{name}: {text}");
+        above_one |= hi > 1.0;
+    }
+    // This example delivers e above 1 between floors, and the terminal says why.
+    assert!(above_one);
+    assert!(
+        text.contains("can even part the floors faster than they met"),
+        "{text}"
+    );
+}

@@ -109,10 +109,7 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "floors": link.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
             });
             site_totals(&mut v, &link.contact, &link.bumper, link.seat, lr);
-            if let Some(e) = delivered(
-                r,
-                |site| matches!(site, Site::Link { link, .. } if link == l),
-            ) {
+            if let Some(e) = delivered(r, Results::at_link(l)) {
                 v["e_delivered"] = e;
             }
             v
@@ -132,10 +129,7 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                 "floors": w.floors,
             });
             site_totals(&mut v, &w.contact, &w.bumper, w.seat, wr);
-            if let Some(e) = delivered(
-                r,
-                |site| matches!(site, Site::Wall { wall, .. } if wall == k),
-            ) {
+            if let Some(e) = delivered(r, Results::at_wall(k)) {
                 v["e_delivered"] = e;
             }
             v
@@ -262,22 +256,14 @@ fn flat_law(name: &str, v: Value) -> Value {
 }
 
 /// The contact law, bumper, seat and totals of a link or a wall, into `v`.
-/// The smallest and largest delivered e (`-v_out / v_i`) of the ended impacts at the sites `at` picks, with
-/// a word on why they differ from the e asked of the contact; `None` without such impacts (the key is left
-/// out: a result file holds no null).
+/// The smallest and largest delivered e of a contact's or wall's ended impacts ([`Results::delivered_e`]),
+/// with a word on why they differ from the e asked of it; `None` without such impacts (the key is left out:
+/// a result file holds no null).
 fn delivered(r: &Results, at: impl Fn(Site) -> bool) -> Option<Value> {
-    let e: Vec<f64> = r
-        .impacts
-        .iter()
-        .filter(|i| at(i.site))
-        .filter_map(|i| i.e_post)
-        .collect();
-    if e.is_empty() {
-        return None;
-    }
+    let (lo, hi) = r.delivered_e(at)?;
     Some(json!({
-        "min": num(e.iter().copied().fold(f64::INFINITY, f64::min)),
-        "max": num(e.iter().copied().fold(f64::NEG_INFINITY, f64::max)),
+        "min": num(lo),
+        "max": num(hi),
         "note": "separation over approach velocity; the calibration is exact for two free bodies, and the storey, \
                  damping and other forces on the floors act during each contact (docs/verification.md, \
                  \"Impacts inside a run\")",

@@ -675,6 +675,30 @@ pub struct Statistics {
 }
 
 impl Results {
+    /// The smallest and largest delivered coefficient of restitution (`-v_out / v_i`, dimensionless) of the
+    /// ended impacts at the sites `at` accepts, `None` if there are none. Between floors of buildings these
+    /// differ from the `e` a contact was calibrated for: the calibration holds for two free bodies, and the
+    /// other forces on the floors act during a contact (`docs/verification.md`, "Impacts inside a run").
+    pub fn delivered_e(&self, at: impl Fn(Site) -> bool) -> Option<(f64, f64)> {
+        self.impacts
+            .iter()
+            .filter(|i| at(i.site))
+            .filter_map(|i| i.e_post)
+            .fold(None, |range, e| {
+                Some(range.map_or((e, e), |(lo, hi): (f64, f64)| (lo.min(e), hi.max(e))))
+            })
+    }
+
+    /// Whether a site is link `link`, any floor pair: for [`Results::delivered_e`].
+    pub fn at_link(link: usize) -> impl Fn(Site) -> bool {
+        move |s| matches!(s, Site::Link { link: l, .. } if l == link)
+    }
+
+    /// Whether a site is wall `wall`, any floor: for [`Results::delivered_e`].
+    pub fn at_wall(wall: usize) -> impl Fn(Site) -> bool {
+        move |s| matches!(s, Site::Wall { wall: w, .. } if w == wall)
+    }
+
     /// The first quantity that is not a finite number (its name), if any: a run returns
     /// [`Error::NotFinite`] rather than such a result.
     pub fn first_non_finite(&self) -> Option<String> {
