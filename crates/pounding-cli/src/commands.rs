@@ -200,10 +200,7 @@ pub fn check_out(o: &OutArgs) -> Result<(), CliError> {
 /// Fails early if `--png` is asked of a build without PNG support.
 pub fn check_figures(f: &crate::args::FigureArgs) -> Result<(), CliError> {
     if f.png && !cfg!(feature = "png") {
-        return Err(input(
-            "--png needs PNG support, which this build leaves out: build with `--features png` \
-             (cargo run --release --features png -- ...); the SVG figures need nothing",
-        ));
+        return Err(input(crate::output::NO_PNG));
     }
     Ok(())
 }

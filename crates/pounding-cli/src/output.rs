@@ -148,10 +148,12 @@ fn png_bytes(svg: &str, id: &str) -> Result<Vec<u8>, crate::CliError> {
 
 #[cfg(not(feature = "png"))]
 fn png_bytes(_: &str, _: &str) -> Result<Vec<u8>, crate::CliError> {
-    Err(crate::CliError::Input(
-        "--png needs PNG support, which this build leaves out: build with `--features png`".into(),
-    ))
+    Err(crate::CliError::Input(NO_PNG.into()))
 }
+
+/// The message for `--png` in a build without the `png` feature.
+pub const NO_PNG: &str = "--png needs PNG support, which this build leaves out: build with `--features png` \
+                          (cargo run --release --features png -- ...); the SVG figures need nothing";
 
 /// Writes `files` (name, bytes) into `dir`, created if missing, each atomically, in name order. Returns the
 /// names written.
