@@ -113,6 +113,8 @@ pub struct ShearBuildingBuilder {
     stiffnesses: Vec<f64>,
     heights: Vec<f64>,
     damping_ratio: f64,
+    /// Base slab mass (kg) and its isolator, for a base-isolated building.
+    base: Option<(f64, Isolator)>,
 }
 
 impl Default for ShearBuildingBuilder {
@@ -122,6 +124,7 @@ impl Default for ShearBuildingBuilder {
             stiffnesses: Vec::new(),
             heights: Vec::new(),
             damping_ratio: 0.05,
+            base: None,
         }
     }
 }
@@ -147,14 +150,32 @@ impl ShearBuildingBuilder {
         self.damping_ratio = zeta;
         self
     }
-    /// The building, checked: [`ShearBuilding::new`] with these values.
+    /// Base isolation: a base slab of `base_mass` kg (floor 1) on `isolator` (storey 1). The masses,
+    /// stiffnesses and heights given are then those of the superstructure above the slab (all three may be
+    /// empty, for a deck on its bearings), as in [`ShearBuilding::isolated`].
+    pub fn isolated_on(mut self, base_mass: f64, isolator: Isolator) -> Self {
+        self.base = Some((base_mass, isolator));
+        self
+    }
+    /// The building, checked: [`ShearBuilding::new`] with these values, or [`ShearBuilding::isolated`]
+    /// after [`ShearBuildingBuilder::isolated_on`].
     pub fn build(self) -> Result<ShearBuilding, Error> {
-        ShearBuilding::new(
-            self.masses,
-            self.stiffnesses,
-            self.heights,
-            self.damping_ratio,
-        )
+        match self.base {
+            None => ShearBuilding::new(
+                self.masses,
+                self.stiffnesses,
+                self.heights,
+                self.damping_ratio,
+            ),
+            Some((base_mass, isolator)) => ShearBuilding::isolated(
+                base_mass,
+                isolator,
+                self.masses,
+                self.stiffnesses,
+                self.heights,
+                self.damping_ratio,
+            ),
+        }
     }
 }
 

@@ -4,7 +4,7 @@
 use pounding::analysis::{Building, Bumper, LinkSpec, Scenario};
 use pounding::contact::{ContactModel, Model};
 use pounding::ground_motion::Record;
-use pounding::structure::ShearBuilding;
+use pounding::structure::{Isolator, IsolatorModel, ShearBuilding};
 use pounding::Error;
 
 #[test]
@@ -184,4 +184,41 @@ fn with_contact_names_what_is_wrong() {
         let e = three().with_contact(s).unwrap_err();
         assert_eq!(name_of(e.clone()), name, "{e}");
     }
+}
+
+#[test]
+fn the_builder_builds_isolated_buildings_as_isolated_does() {
+    let iso = Isolator::new(IsolatorModel::Bilinear {
+        stiffness: 1.5e8,
+        yield_force: 2.2e6,
+        post_yield_ratio: 0.1,
+    });
+    let (m, k, h) = (vec![6.0e5, 5.0e5], vec![8.0e8, 7.0e8], vec![3.0, 3.0]);
+    let positional =
+        ShearBuilding::isolated(8.0e5, iso.clone(), m.clone(), k.clone(), h.clone(), 0.04).unwrap();
+    let named = ShearBuilding::builder()
+        .isolated_on(8.0e5, iso.clone())
+        .masses(m)
+        .stiffnesses(k)
+        .heights(h)
+        .damping_ratio(0.04)
+        .build()
+        .unwrap();
+    assert_eq!(named, positional);
+    // Slab, then two floors above it: three floors in all, the isolator the first storey.
+    assert_eq!(named.storeys(), 3);
+    assert!(named.isolator().is_some());
+    // A deck on its bearings: no superstructure at all.
+    let deck = ShearBuilding::builder()
+        .isolated_on(2.0e6, iso)
+        .build()
+        .unwrap();
+    assert_eq!(deck.storeys(), 1);
+    // A bad isolator is named as the positional form names it.
+    let bad = Isolator::new(IsolatorModel::Linear { stiffness: -1.0 });
+    let e = ShearBuilding::builder()
+        .isolated_on(8.0e5, bad)
+        .build()
+        .unwrap_err();
+    assert!(e.to_string().contains("stiffness"), "{e}");
 }
