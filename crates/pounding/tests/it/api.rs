@@ -195,9 +195,9 @@ fn the_builder_builds_isolated_buildings_as_isolated_does() {
     });
     let (m, k, h) = (vec![6.0e5, 5.0e5], vec![8.0e8, 7.0e8], vec![3.0, 3.0]);
     let positional =
-        ShearBuilding::isolated(8.0e5, iso.clone(), m.clone(), k.clone(), h.clone(), 0.04).unwrap();
+        ShearBuilding::isolated(8.0e5, iso, m.clone(), k.clone(), h.clone(), 0.04).unwrap();
     let named = ShearBuilding::builder()
-        .isolated_on(8.0e5, iso.clone())
+        .isolated_on(8.0e5, iso)
         .masses(m)
         .stiffnesses(k)
         .heights(h)
