@@ -179,6 +179,20 @@ impl ShearBuildingBuilder {
     }
 }
 
+/// One stiffness and one height per floor mass: an [`Error::Length`] naming the list that differs.
+fn same_lengths(masses: &[f64], stiffnesses: &[f64], heights: &[f64]) -> Result<(), Error> {
+    for (name, list) in [("stiffnesses", stiffnesses), ("heights", heights)] {
+        if list.len() != masses.len() {
+            return Err(Error::Length {
+                name,
+                len: list.len(),
+                expected: masses.len(),
+            });
+        }
+    }
+    Ok(())
+}
+
 impl ShearBuilding {
     /// A builder with named values: `ShearBuilding::builder().masses(..).stiffnesses(..).heights(..)
     /// .damping_ratio(..).build()` (see [`ShearBuilding`]). Prefer it to [`ShearBuilding::new`], whose three
@@ -204,15 +218,7 @@ impl ShearBuilding {
                 allowed: "1 to 200 floor masses (kg), one per storey (limits::MAX_STOREYS)",
             });
         }
-        for (name, list) in [("stiffnesses", &stiffnesses), ("heights", &heights)] {
-            if list.len() != masses.len() {
-                return Err(Error::Length {
-                    name,
-                    len: list.len(),
-                    expected: masses.len(),
-                });
-            }
-        }
+        same_lengths(&masses, &stiffnesses, &heights)?;
         for &m in &masses {
             check("mass", m, m > 0.0, "floor masses > 0 (kg)")?;
         }
@@ -277,15 +283,7 @@ impl ShearBuilding {
         damping_ratio: f64,
     ) -> Result<Self, Error> {
         isolator.check()?;
-        for (name, list) in [("stiffnesses", &stiffnesses), ("heights", &heights)] {
-            if list.len() != masses.len() {
-                return Err(Error::Length {
-                    name,
-                    len: list.len(),
-                    expected: masses.len(),
-                });
-            }
-        }
+        same_lengths(&masses, &stiffnesses, &heights)?;
         check("mass", base_mass, base_mass > 0.0, "floor masses > 0 (kg)")?;
         let weight = isolation::G * (base_mass + masses.iter().sum::<f64>());
         let (k0, law) = isolator.model.storey(weight)?;
