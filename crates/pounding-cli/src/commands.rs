@@ -990,7 +990,7 @@ fn record_spectrum(a: &crate::args::SpectrumArgs) -> Result<(), CliError> {
         fmt_num(100.0 * s.damping)
     );
     println!("  period_s        sd_m   psv_m_per_s  psa_m_per_s2   psa_g");
-    let g = pounding::impact::STANDARD_GRAVITY;
+    let g = pounding::units::STANDARD_GRAVITY;
     for i in 0..s.periods.len() {
         println!(
             "{:>10.4}  {:>10.5e}  {:>12.5e}  {:>12.5e}  {:>6.4}",
@@ -1013,7 +1013,7 @@ fn record_info(a: &RecordArgs) -> Result<(), CliError> {
             r.name()
         )));
     }
-    let g = pounding::impact::STANDARD_GRAVITY;
+    let g = pounding::units::STANDARD_GRAVITY;
     let mut rep = Report::default();
     rep.add("record", r.name(), "")
         .add("npts", r.npts(), "")

@@ -7,8 +7,8 @@ use crate::output::{fmt_num, fmt_sig, fmt_table, render_figures};
 use crate::run_data::RunData;
 use crate::scenario::load;
 use crate::CliError;
-use pounding::analysis::{Bumper, Device, DeviceEnds, Results, Scenario};
-use pounding::element::{DeviceLaw, StoreyLaw};
+use pounding::analysis::{Bumper, Device, DeviceEnds, Results, Scenario, SiteKind};
+use pounding::element::StoreyLaw;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
 use std::path::Path;
@@ -133,7 +133,7 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
         rec.npts(),
         fmt_num(rec.dt()),
         fmt_sig(p.pga, 4),
-        fmt_sig(p.pga / pounding::impact::STANDARD_GRAVITY, 4),
+        fmt_sig(p.pga / pounding::units::STANDARD_GRAVITY, 4),
         fmt_num(p.pga_time)
     );
     println!(
@@ -236,33 +236,37 @@ fn print_setup(s: &Scenario, file: &Path, source: &str, scale: f64) {
             println!("  (modes 7 to {} in summary.json)", st.storeys());
         }
     }
-    for (l, link) in s.links().iter().enumerate() {
-        let floors: Vec<String> = link
-            .floors
-            .iter()
-            .map(|(i, j)| format!("{i}-{j}"))
-            .collect();
-        println!(
-            "\ncontact {}: gap {} m at floors {}, {}",
-            s.link_name(l),
-            fmt_num(link.gap),
-            floors.join(", "),
-            contact_label(link.contact.spec(), link.contact.parameter())
-        );
-        describe_extras(&link.bumper, link.seat);
-    }
-    for w in s.walls() {
-        let floors: Vec<String> = w.floors.iter().map(|f| f.to_string()).collect();
-        println!(
-            "\nwall {}: {} of {}, gap {} m, floors {}, {}",
-            w.name,
-            w.side.name(),
-            s.buildings()[w.building].name,
-            fmt_num(w.gap),
-            floors.join(", "),
-            contact_label(w.contact.spec(), w.contact.parameter())
-        );
-        describe_extras(&w.bumper, w.seat);
+    for site in s.sites() {
+        match site.kind {
+            SiteKind::Between { .. } => {
+                let floors: Vec<String> = site
+                    .levels
+                    .iter()
+                    .map(|l| format!("{}-{}", l.left.unwrap_or(0), l.right.unwrap_or(0)))
+                    .collect();
+                println!(
+                    "\ncontact {}: gap {} m at floors {}, {}",
+                    site.name,
+                    fmt_num(site.gap),
+                    floors.join(", "),
+                    contact_label(site.contact.spec(), site.contact.parameter())
+                );
+            }
+            SiteKind::Wall { building, side } => {
+                let floors: Vec<String> =
+                    site.levels.iter().map(|l| l.floor().to_string()).collect();
+                println!(
+                    "\nwall {}: {} of {}, gap {} m, floors {}, {}",
+                    site.name,
+                    side.name(),
+                    s.buildings()[building].name,
+                    fmt_num(site.gap),
+                    floors.join(", "),
+                    contact_label(site.contact.spec(), site.contact.parameter())
+                );
+            }
+        }
+        describe_extras(&site.bumper, site.seat);
     }
     for d in s.devices() {
         let (a, b) = device_ends(s, d);
@@ -284,34 +288,26 @@ pub(crate) fn device_ends(s: &Scenario, d: &Device) -> (String, String) {
             s.buildings()[left].name.clone(),
             s.buildings()[right].name.clone(),
         ),
-        DeviceEnds::Wall { wall } => {
-            let w = &s.walls()[wall];
-            (s.buildings()[w.building].name.clone(), w.name.clone())
+        DeviceEnds::Wall { site } => {
+            let w = &s.sites()[site];
+            let b = match w.kind {
+                SiteKind::Wall { building, .. } | SiteKind::Between { left: building, .. } => {
+                    building
+                }
+            };
+            (s.buildings()[b].name.clone(), w.name.clone())
         }
     }
 }
 
 /// A device's law in words, with units.
-fn device_label(law: &DeviceLaw) -> String {
-    match *law {
-        DeviceLaw::Spring { stiffness } => format!("spring k {} N/m", fmt_sig(stiffness, 4)),
-        DeviceLaw::Dashpot { damping } => format!("dashpot c {} N s/m", fmt_sig(damping, 4)),
-        DeviceLaw::Kelvin { stiffness, damping } => format!(
-            "kelvin k {} N/m, c {} N s/m",
-            fmt_sig(stiffness, 4),
-            fmt_sig(damping, 4)
-        ),
-        DeviceLaw::Maxwell { stiffness, damping } => format!(
-            "maxwell k {} N/m, c {} N s/m",
-            fmt_sig(stiffness, 4),
-            fmt_sig(damping, 4)
-        ),
-        DeviceLaw::Restrainer { stiffness, slack } => format!(
-            "restrainer k {} N/m, slack {} m (tension only)",
-            fmt_sig(stiffness, 4),
-            fmt_num(slack)
-        ),
-    }
+fn device_label(law: &pounding::element::DeviceLaw) -> String {
+    let params: Vec<String> = law
+        .parameters()
+        .iter()
+        .map(|p| format!("{} {} {}", p.key, fmt_sig(p.value, 4), p.unit))
+        .collect();
+    format!("{} {}", law.name(), params.join(", "))
 }
 
 /// A bumper and a seat, if given.
@@ -413,42 +409,32 @@ fn print_results(s: &Scenario, r: &Results) {
             );
         }
     }
-    if !s.links().is_empty() || !s.walls().is_empty() {
+    if !s.sites().is_empty() {
         println!(
             "\ncontact              impacts  e_asked  e_delivered    peak_force_MN  max_penetration_mm  dissipated_kJ  max_opening_mm"
         );
-        let links = s
-            .links()
+        let rows = s
+            .sites()
             .iter()
-            .zip(&r.links)
+            .zip(&r.sites)
             .enumerate()
-            .map(|(l, (link, lr))| {
+            .map(|(i, (site, lr))| {
+                let name = if site.is_wall() {
+                    format!("wall {}", site.name)
+                } else {
+                    site.name.clone()
+                };
                 (
-                    s.link_name(l),
+                    name,
                     lr,
-                    link.contact.spec().restitution(),
-                    link.seat,
-                    link.bumper.is_some(),
-                    r.delivered_e(Results::at_link(l)),
-                )
-            });
-        let walls = s
-            .walls()
-            .iter()
-            .zip(&r.walls)
-            .enumerate()
-            .map(|(w, (wall, wr))| {
-                (
-                    format!("wall {}", wall.name),
-                    wr,
-                    wall.contact.spec().restitution(),
-                    wall.seat,
-                    wall.bumper.is_some(),
-                    r.delivered_e(Results::at_wall(w)),
+                    site.contact.spec().restitution(),
+                    site.seat,
+                    site.bumper.is_some(),
+                    r.delivered_e(i),
                 )
             });
         let mut spread = false;
-        for (name, lr, e_asked, seat, bumper, delivered) in links.chain(walls) {
+        for (name, lr, e_asked, seat, bumper, delivered) in rows {
             if let Some((lo, hi)) = delivered {
                 spread |= (lo - e_asked).abs() > 0.01 || (hi - e_asked).abs() > 0.01;
             }
@@ -535,14 +521,18 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
             let _ = write!(out, ",{}_floor{f}_displacement_m", b.name);
         }
     }
-    for (l, link) in s.links().iter().enumerate() {
-        for (i, j) in &link.floors {
-            let _ = write!(out, ",{}_floors{i}-{j}_force_N", s.link_name(l));
-        }
-    }
-    for w in s.walls() {
-        for f in &w.floors {
-            let _ = write!(out, ",{}_floor{f}_force_N", w.name);
+    for site in s.sites() {
+        for l in &site.levels {
+            let _ = match site.kind {
+                SiteKind::Between { .. } => write!(
+                    out,
+                    ",{}_floors{}-{}_force_N",
+                    site.name,
+                    l.left.unwrap_or(0),
+                    l.right.unwrap_or(0)
+                ),
+                SiteKind::Wall { .. } => write!(out, ",{}_floor{}_force_N", site.name, l.floor()),
+            };
         }
     }
     for d in s.devices() {
@@ -569,8 +559,7 @@ fn response_csv(s: &Scenario, r: &Results) -> String {
             }
         }
         for group in [
-            &h.force,
-            &h.wall_force,
+            &h.site_force,
             &h.device_force,
             &h.absolute_acceleration,
             &h.storey_shear,
@@ -593,13 +582,13 @@ fn impacts_csv(s: &Scenario, r: &Results) -> String {
     for i in &r.impacts {
         // Blank on a wall's side.
         let floor = |f: Option<usize>| f.map_or(String::new(), |f| f.to_string());
-        let (fl, fr) = s.site_sides(i.site);
-        let (fl, fr) = (floor(fl), floor(fr));
+        let lv = s.sites()[i.site].levels[i.level];
+        let (fl, fr) = (floor(lv.left), floor(lv.right));
         let _ = writeln!(
             out,
             "{:e},{},{},{},{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{}",
             i.time,
-            s.site_name(i.site),
+            s.sites()[i.site].name,
             fl,
             fr,
             i.layer.name(),

@@ -19,11 +19,12 @@ pub fn impact_loops_csv(s: &Scenario, r: &Results) -> String {
         String::from("impact,contact,floor_left,floor_right,stride,t_s,penetration_m,force_N\n");
     for (k, (i, l)) in r.impacts.iter().zip(&r.histories.impact_loops).enumerate() {
         let floor = |f: Option<usize>| f.map_or(String::new(), |f| f.to_string());
-        let (fl, fr) = s.site_sides(i.site);
+        let lv = s.sites()[i.site].levels[i.level];
+        let (fl, fr) = (lv.left, lv.right);
         let head = format!(
             "{},{},{},{},{}",
             k + 1,
-            s.site_name(i.site),
+            s.sites()[i.site].name,
             floor(fl),
             floor(fr),
             l.stride

@@ -89,7 +89,7 @@ fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'p
         "contact",
         r.impacts
             .iter()
-            .map(|i| s.site_name(i.site))
+            .map(|i| s.sites()[i.site].name.clone())
             .collect::<Vec<_>>(),
     )?;
     // The floor on each side; 0 on a wall's side (impacts.csv leaves it blank).
@@ -97,8 +97,8 @@ fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'p
         .impacts
         .iter()
         .map(|i| {
-            let (l, r) = s.site_sides(i.site);
-            (l.unwrap_or(0), r.unwrap_or(0))
+            let lv = s.sites()[i.site].levels[i.level];
+            (lv.left.unwrap_or(0), lv.right.unwrap_or(0))
         })
         .collect();
     d.set_item("floor_left", floors.iter().map(|f| f.0).collect::<Vec<_>>())?;
@@ -150,21 +150,25 @@ fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<
         }
         d.set_item(key, g)?;
     }
-    let f = PyDict::new(py);
-    for (l, cols) in h.force.iter().enumerate() {
-        f.set_item(s.link_name(l), matrix(py, cols, n)?)?;
+    let (f, floors) = (PyDict::new(py), PyDict::new(py));
+    let (wf, wfl) = (PyDict::new(py), PyDict::new(py));
+    for (site, cols) in s.sites().iter().zip(&h.site_force) {
+        if site.is_wall() {
+            wf.set_item(&site.name, matrix(py, cols, n)?)?;
+            let fl: Vec<usize> = site.levels.iter().map(|l| l.floor()).collect();
+            wfl.set_item(&site.name, fl)?;
+        } else {
+            f.set_item(&site.name, matrix(py, cols, n)?)?;
+            let fl: Vec<(usize, usize)> = site
+                .levels
+                .iter()
+                .map(|l| (l.left.unwrap_or(0), l.right.unwrap_or(0)))
+                .collect();
+            floors.set_item(&site.name, fl)?;
+        }
     }
     d.set_item("contact_force", f)?;
-    let floors = PyDict::new(py);
-    for (l, link) in s.links().iter().enumerate() {
-        floors.set_item(s.link_name(l), link.floors.clone())?;
-    }
     d.set_item("contact_floors", floors)?;
-    let (wf, wfl) = (PyDict::new(py), PyDict::new(py));
-    for (w, cols) in s.walls().iter().zip(&h.wall_force) {
-        wf.set_item(&w.name, matrix(py, cols, n)?)?;
-        wfl.set_item(&w.name, w.floors.clone())?;
-    }
     d.set_item("wall_force", wf)?;
     d.set_item("wall_floors", wfl)?;
     let (df, dfl) = (PyDict::new(py), PyDict::new(py));

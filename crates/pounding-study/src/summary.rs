@@ -1,7 +1,7 @@
 //! The summary of a run: what `summary.json`, Python's `result.summary` and a sweep's store hold, built once.
 
 use crate::input::Loaded;
-use pounding::analysis::{Bumper, DeviceEnds, LinkResponse, Results, Scenario, Site};
+use pounding::analysis::{Bumper, DeviceEnds, Results, Scenario, SiteKind, SiteResponse};
 use pounding::contact::PreparedContact;
 use pounding::element::DeviceLaw;
 use serde_json::{json, Value};
@@ -98,41 +98,47 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
         })
         .collect();
     let contacts: Vec<Value> = s
-        .links()
+        .sites()
         .iter()
-        .zip(&r.links)
+        .zip(&r.sites)
         .enumerate()
-        .map(|(l, (link, lr))| {
+        .filter_map(|(l, (link, lr))| {
+            let SiteKind::Between { left, right } = link.kind else {
+                return None;
+            };
             let mut v = json!({
-                "between": [s.buildings()[link.left].name, s.buildings()[link.right].name],
+                "between": [s.buildings()[left].name, s.buildings()[right].name],
                 "gap": num(link.gap),
-                "floors": link.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
+                "floors": link.levels.iter().map(|lv| json!([lv.left, lv.right])).collect::<Vec<_>>(),
             });
             site_totals(&mut v, &link.contact, &link.bumper, link.seat, lr);
-            if let Some(e) = delivered(r, Results::at_link(l)) {
+            if let Some(e) = delivered(r, l) {
                 v["e_delivered"] = e;
             }
-            v
+            Some(v)
         })
         .collect();
     let walls: Vec<Value> = s
-        .walls()
+        .sites()
         .iter()
-        .zip(&r.walls)
+        .zip(&r.sites)
         .enumerate()
-        .map(|(k, (w, wr))| {
+        .filter_map(|(k, (w, wr))| {
+            let SiteKind::Wall { building, side } = w.kind else {
+                return None;
+            };
             let mut v = json!({
                 "name": w.name,
-                "facing": s.buildings()[w.building].name,
-                "side": w.side.name(),
+                "facing": s.buildings()[building].name,
+                "side": side.name(),
                 "gap": num(w.gap),
-                "floors": w.floors,
+                "floors": w.levels.iter().map(|l| l.floor()).collect::<Vec<_>>(),
             });
             site_totals(&mut v, &w.contact, &w.bumper, w.seat, wr);
-            if let Some(e) = delivered(r, Results::at_wall(k)) {
+            if let Some(e) = delivered(r, k) {
                 v["e_delivered"] = e;
             }
-            v
+            Some(v)
         })
         .collect();
     let devices: Vec<Value> = s
@@ -145,22 +151,26 @@ fn summary_value(s: &Scenario, r: &Results, file: &str, source: &str, scale: f64
                     s.buildings()[left].name.clone(),
                     s.buildings()[right].name.clone(),
                 ],
-                DeviceEnds::Wall { wall } => {
-                    let w = &s.walls()[wall];
-                    [s.buildings()[w.building].name.clone(), w.name.clone()]
+                DeviceEnds::Wall { site } => {
+                    let w = &s.sites()[site];
+                    let b = match w.kind {
+                        SiteKind::Wall { building, .. }
+                        | SiteKind::Between { left: building, .. } => building,
+                    };
+                    [s.buildings()[b].name.clone(), w.name.clone()]
                 }
             };
             let mut v = json!({
                 "name": d.name,
                 "between": between,
                 "floors": d.floors.iter().map(|(i, j)| json!([i, j])).collect::<Vec<_>>(),
-                "law": flat_law(d.law.name(), serde_json::to_value(d.law).unwrap_or(Value::Null)),
+                "law": serde_json::to_value(&d.law).unwrap_or(Value::Null),
                 "peak_force": nums(&dr.peak_force),
                 "max_closing": nums(&dr.max_closing),
                 "max_opening": nums(&dr.max_opening),
             });
-            if let DeviceLaw::Restrainer { slack, .. } = d.law {
-                v["slack"] = num(slack);
+            if let DeviceLaw::Restrainer(p) = &d.law {
+                v["slack"] = num(p.slack);
             }
             v
         })
@@ -259,8 +269,8 @@ fn flat_law(name: &str, v: Value) -> Value {
 /// The smallest and largest delivered e of a contact's or wall's ended impacts ([`Results::delivered_e`]),
 /// with a word on why they differ from the e asked of it; `None` without such impacts (the key is left out:
 /// a result file holds no null).
-fn delivered(r: &Results, at: impl Fn(Site) -> bool) -> Option<Value> {
-    let (lo, hi) = r.delivered_e(at)?;
+fn delivered(r: &Results, site: usize) -> Option<Value> {
+    let (lo, hi) = r.delivered_e(site)?;
     Some(json!({
         "min": num(lo),
         "max": num(hi),
@@ -275,7 +285,7 @@ fn site_totals(
     contact: &PreparedContact,
     bumper: &Option<Bumper>,
     seat: Option<f64>,
-    r: &LinkResponse,
+    r: &SiteResponse,
 ) {
     law(v, contact);
     if let Some(b) = bumper {

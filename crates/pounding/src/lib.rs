@@ -45,10 +45,10 @@
 //! let results = scenario.run()?;
 //!
 //! let roof = results.buildings[1].peak_displacement[4]; // m, tall building's roof, relative to the ground
-//! let link = &results.links[0];
-//! println!("roof {roof:.3} m, {} impacts, peak force {:.3e} N", link.impacts, link.peak_force);
-//! assert!(link.impacts > 0 && link.peak_force > 0.0);
-//! assert_eq!(link.impacts, results.impacts.len()); // each impact is listed in `results.impacts`
+//! let site = &results.sites[0]; // the contact between "low" and "tall"
+//! println!("roof {roof:.3} m, {} impacts, peak force {:.3e} N", site.impacts, site.peak_force);
+//! assert!(site.impacts > 0 && site.peak_force > 0.0);
+//! assert_eq!(site.impacts, results.impacts.len()); // each impact is listed in `results.impacts`
 //! assert!(results.energy.relative_error < 1e-4); // input = kinetic + strain + damping + contact
 //! # Ok::<(), pounding::Error>(())
 //! ```
@@ -87,6 +87,7 @@
 pub(crate) mod error;
 
 pub mod analysis;
+pub mod calibration;
 pub mod contact;
 pub mod element;
 pub mod engine;
@@ -100,6 +101,7 @@ pub mod paper;
 pub mod scenario;
 pub mod separation;
 pub mod structure;
+pub mod units;
 pub mod words;
 
 pub use error::Error;

@@ -13,7 +13,7 @@
 //! Eurocode 8 (EN 1998-1, 4.4.2.7) allows a factor of 0.7 where the floors are at the same height; with
 //! `aligned_factor`, each rule's estimate at such a level is multiplied by it.
 
-use crate::analysis::{RunOptions, Scenario};
+use crate::analysis::{RunOptions, Scenario, SiteKind};
 use crate::Error;
 use std::ops::ControlFlow;
 
@@ -96,46 +96,46 @@ pub fn separation(
     };
     let r = free.run_with_options(&options, &mut |_| ControlFlow::Continue(()))?;
     let b = free.buildings();
-    Ok(free
-        .links()
-        .iter()
-        .zip(&r.links)
-        .map(|(link, lr)| {
-            let (sl, sr) = (&b[link.left].structure, &b[link.right].structure);
-            let (wl, wr) = (sl.modes().omega[0], sr.modes().omega[0]);
-            let rho = cqc_correlation(wl, sl.damping_of_mode(0), wr, sr.damping_of_mode(0));
-            let aligned = free.aligned_floors(link.left);
-            let levels = link
-                .floors
-                .iter()
-                .zip(&lr.max_closing)
-                .map(|(&(i, j), &closing)| {
-                    let pl = r.buildings[link.left].peak_displacement[i - 1];
-                    let pr = r.buildings[link.right].peak_displacement[j - 1];
-                    let factor = match aligned_factor {
-                        Some(f) if aligned.contains(&(i, j)) => f,
-                        _ => 1.0,
-                    };
-                    Level {
-                        floors: (i, j),
-                        peak_left: pl,
-                        peak_right: pr,
-                        required_gap: closing.max(0.0),
-                        abs: factor * (pl + pr),
-                        srss: factor * pl.hypot(pr),
-                        ddc: factor * (pl * pl + pr * pr - 2.0 * rho * pl * pr).max(0.0).sqrt(),
-                        rho,
-                        factor,
-                    }
-                })
-                .collect();
-            Pair {
-                left: link.left,
-                right: link.right,
-                levels,
-            }
+    let pairs = free.sites().iter().zip(&r.sites).filter_map(|(site, lr)| {
+        let SiteKind::Between { left, right } = site.kind else {
+            return None;
+        };
+        let (sl, sr) = (&b[left].structure, &b[right].structure);
+        let (wl, wr) = (sl.modes().omega[0], sr.modes().omega[0]);
+        let rho = cqc_correlation(wl, sl.damping_of_mode(0), wr, sr.damping_of_mode(0));
+        let aligned = free.aligned_floors(left);
+        let levels = site
+            .levels
+            .iter()
+            .zip(&lr.max_closing)
+            .map(|(level, &closing)| {
+                let (i, j) = (level.left.unwrap_or(1), level.right.unwrap_or(1));
+                let pl = r.buildings[left].peak_displacement[i - 1];
+                let pr = r.buildings[right].peak_displacement[j - 1];
+                let factor = match aligned_factor {
+                    Some(f) if aligned.contains(&(i, j)) => f,
+                    _ => 1.0,
+                };
+                Level {
+                    floors: (i, j),
+                    peak_left: pl,
+                    peak_right: pr,
+                    required_gap: closing.max(0.0),
+                    abs: factor * (pl + pr),
+                    srss: factor * pl.hypot(pr),
+                    ddc: factor * (pl * pl + pr * pr - 2.0 * rho * pl * pr).max(0.0).sqrt(),
+                    rho,
+                    factor,
+                }
+            })
+            .collect();
+        Some(Pair {
+            left,
+            right,
+            levels,
         })
-        .collect())
+    });
+    Ok(pairs.collect())
 }
 
 #[cfg(test)]

@@ -1,11 +1,11 @@
 //! The row of buildings as a system of the engine: one degree of freedom per floor, one storey element per
 //! storey (and, for an isolated building, one dashpot per floor above the base slab for the
-//! mass-proportional damping of its superstructure), one contact element per floor pair of each link and
-//! per floor of each wall (two with a bumper), and one device element per floor pair of each device.
+//! mass-proportional damping of its superstructure), one contact element per level of each contact site
+//! (two with a bumper), and one device element per floor pair of each device.
 
-use super::{Bumper, DeviceEnds, Layer, Scenario, Side, Site, Wall};
-use crate::contact::PreparedContact;
-use crate::element::{Contact, Device, DeviceLaw, Element, End, Storey};
+use super::{ContactSite, DeviceEnds, Layer, Level, Scenario, SiteKind};
+use crate::element::device::Dashpot;
+use crate::element::{Contact, Element, ElementLaw, End, Scales};
 use crate::engine::{Dof, Ground, System};
 
 /// A contact element and where it stands.
@@ -13,8 +13,10 @@ use crate::engine::{Dof, Ground, System};
 pub(super) struct ContactRef {
     /// Index of the element in the system.
     pub element: usize,
-    /// The link's floor pair or the wall's floor.
-    pub site: Site,
+    /// Its site (index in [`Scenario::sites`]).
+    pub site: usize,
+    /// Its level (index in the site's levels).
+    pub level: usize,
     /// Which law of the site.
     pub layer: Layer,
 }
@@ -37,8 +39,8 @@ pub(super) struct Model<'a> {
     pub first_storey: Vec<usize>,
     /// Element index of the storey under each floor (degree of freedom).
     pub storey_under: Vec<usize>,
-    /// The contact elements: links (floor pair by floor pair), then walls (floor by floor); a bumper's layer
-    /// comes before the hard law behind it.
+    /// The contact elements, site by site, level by level; a bumper's layer comes before the hard law
+    /// behind it.
     pub contacts: Vec<ContactRef>,
     /// The elements of the devices, device by device, floor pair by floor pair.
     pub devices: Vec<DeviceRef>,
@@ -67,11 +69,9 @@ impl<'a> Model<'a> {
                 };
                 storey_under.push(elements.len());
                 // Rayleigh damping on the initial stiffness (OpenSees' betaKinit); an isolator's own.
-                elements.push(Element::storey(
-                    offset + j,
-                    bottom,
-                    Storey::new(k, *law, c[j]),
-                ));
+                elements.push(
+                    Element::new(End::Dof(offset + j), bottom, law.law(k)).with_dashpot(c[j]),
+                );
             }
             let a0_dof = if base.is_some() { 0.0 } else { a0 };
             dofs.extend(st.masses().iter().map(|&mass| Dof { mass, a0: a0_dof }));
@@ -82,83 +82,37 @@ impl<'a> Model<'a> {
             }
         }
         for (i, b, c) in base_dashpots {
-            elements.push(Element::device(
-                End::Dof(i),
-                End::Dof(b),
-                Device::new(DeviceLaw::Dashpot { damping: c }),
-            ));
+            elements.push(Element::new(End::Dof(i), End::Dof(b), Dashpot::new(c)));
         }
         let mut contacts = Vec::new();
-        let mut add = |elements: &mut Vec<Element>,
-                       site: Site,
-                       (a, b): (End, End),
-                       gap: f64,
-                       contact: &PreparedContact,
-                       bumper: &Option<Bumper>,
-                       m_eff: f64| {
-            let mut push = |layer, gap, contact: &PreparedContact| {
-                contacts.push(ContactRef {
-                    element: elements.len(),
-                    site,
-                    layer,
-                });
-                elements.push(Element::contact(
-                    a,
-                    b,
-                    Contact::new(contact.clone(), gap, m_eff, s.min_impact_velocity()),
-                ));
-            };
-            match bumper {
-                None => push(Layer::Direct, gap, contact),
-                Some(bm) => {
-                    let (touch, consumed) = bm.gaps(gap);
-                    push(Layer::Bumper, touch, &bm.contact);
-                    push(Layer::Consumed, consumed, contact);
-                }
-            }
-        };
-        for (li, link) in s.links().iter().enumerate() {
-            for &(fl, fr) in &link.floors {
-                let (left, right) = (offsets[link.left] + fl - 1, offsets[link.right] + fr - 1);
-                let (ml, mr) = (dofs[left].mass, dofs[right].mass);
-                let site = Site::Link {
-                    link: li,
-                    floors: (fl, fr),
-                };
-                let ends = (End::Dof(left), End::Dof(right));
-                let m_eff = ml * mr / (ml + mr);
-                add(
-                    &mut elements,
-                    site,
-                    ends,
-                    link.gap,
-                    &link.contact,
-                    &link.bumper,
-                    m_eff,
-                );
-            }
-        }
-        let wall_ends = |w: &Wall, f: usize| {
-            let i = End::Dof(offsets[w.building] + f - 1);
-            match w.side {
-                Side::Right => (i, End::Ground),
-                Side::Left => (End::Ground, i),
-            }
-        };
-        for (wi, w) in s.walls().iter().enumerate() {
-            for &f in &w.floors {
-                let site = Site::Wall { wall: wi, floor: f };
+        for (si, site) in s.sites().iter().enumerate() {
+            for (li, level) in site.levels.iter().enumerate() {
+                let ends = site_ends(site, level, &offsets);
                 // Against a rigid wall the effective mass is the floor's own.
-                let m = dofs[offsets[w.building] + f - 1].mass;
-                add(
-                    &mut elements,
-                    site,
-                    wall_ends(w, f),
-                    w.gap,
-                    &w.contact,
-                    &w.bumper,
-                    m,
-                );
+                let mass = |e: End| e.dof().map(|i| dofs[i].mass);
+                let m_eff = match (mass(ends.0), mass(ends.1)) {
+                    (Some(ml), Some(mr)) => ml * mr / (ml + mr),
+                    (Some(m), None) | (None, Some(m)) => m,
+                    (None, None) => 0.0,
+                };
+                let mut push = |layer, gap, contact: &crate::contact::PreparedContact| {
+                    contacts.push(ContactRef {
+                        element: elements.len(),
+                        site: si,
+                        level: li,
+                        layer,
+                    });
+                    let law = Contact::new(contact.clone(), gap, m_eff, s.min_impact_velocity());
+                    elements.push(Element::new(ends.0, ends.1, law));
+                };
+                match &site.bumper {
+                    None => push(Layer::Direct, site.gap, &site.contact),
+                    Some(bm) => {
+                        let (touch, consumed) = bm.gaps(site.gap);
+                        push(Layer::Bumper, touch, &bm.contact);
+                        push(Layer::Consumed, consumed, &site.contact);
+                    }
+                }
             }
         }
         let mut devices = Vec::new();
@@ -169,13 +123,24 @@ impl<'a> Model<'a> {
                         End::Dof(offsets[left] + fa - 1),
                         End::Dof(offsets[right] + fb - 1),
                     ),
-                    DeviceEnds::Wall { wall } => wall_ends(&s.walls()[wall], fa),
+                    DeviceEnds::Wall { site } => {
+                        let level = Level {
+                            left: Some(fa),
+                            right: Some(fa),
+                        };
+                        site_ends(&s.sites()[site], &level, &offsets)
+                    }
                 };
                 devices.push(DeviceRef {
                     element: elements.len(),
                     device: di,
                 });
-                elements.push(Element::device(ends.0, ends.1, Device::new(d.law)));
+                // Checked when the device was added.
+                let law = d
+                    .law
+                    .law()
+                    .expect("a device law checked by Scenario::with_device");
+                elements.push(Element::new(ends.0, ends.1, law));
             }
         }
         Self {
@@ -253,34 +218,40 @@ impl<'a> Model<'a> {
             // Ten times the local error allowed in each end's rate (atol + rtol |v|, up to 2 atol).
             let v_res: f64 = ends.iter().flatten().map(|&i| 20.0 * atol[l.v(i)]).sum();
             resolutions.push((e, v_res));
-            match &el.kind {
-                crate::element::Kind::Contact(c) => {
-                    atol[r.start] = rtol * c.effective_mass() * v * v;
-                }
-                crate::element::Kind::Storey(_) => {
-                    // Bouc–Wen: z is dimensionless and of order 1; then the work of its hysteretic part.
-                    if r.len() == 2 {
-                        atol[r.start] = rtol;
-                        atol[r.start + 1] = rtol * e_scale;
-                    }
-                }
-                crate::element::Kind::Device(_) => {
-                    // Maxwell: the dashpot's stroke, as its ends' displacements; the energy it dissipated.
-                    if r.len() == 2 {
-                        let u = ends
-                            .iter()
-                            .flatten()
-                            .map(|&i| u_scale[i])
-                            .fold(0.0, f64::max);
-                        atol[r.start] = rtol * u;
-                        atol[r.start + 1] = rtol * e_scale;
-                    }
-                }
-            }
+            let u = ends
+                .iter()
+                .flatten()
+                .map(|&i| u_scale[i])
+                .fold(0.0, f64::max);
+            let scales = Scales {
+                rtol,
+                displacement: u,
+                velocity: v,
+                energy: e_scale,
+            };
+            el.law.state_tolerances(&scales, &mut atol[r]);
         }
         for (e, v_res) in resolutions {
             self.system.elements_mut()[e].set_rate_resolution(v_res);
         }
         (atol, 1e-3 * 2.0 * std::f64::consts::PI / w_max)
+    }
+}
+
+/// The ends of a site's contact element at `level`: the left floor and the right floor, or a floor and the
+/// ground (a wall on its right is end `b`; on its left, end `a`). For a device to a wall, `level` gives the
+/// building's floor on both sides.
+fn site_ends(site: &ContactSite, level: &Level, offsets: &[usize]) -> (End, End) {
+    let floor = |b: usize, f: Option<usize>| End::Dof(offsets[b] + f.unwrap_or(1) - 1);
+    match site.kind {
+        SiteKind::Between { left, right } => (floor(left, level.left), floor(right, level.right)),
+        SiteKind::Wall {
+            building,
+            side: super::Side::Right,
+        } => (floor(building, level.left), End::Ground),
+        SiteKind::Wall {
+            building,
+            side: super::Side::Left,
+        } => (End::Ground, floor(building, level.right)),
     }
 }

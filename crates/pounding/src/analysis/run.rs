@@ -1,13 +1,15 @@
 //! A pounding run: the row as a system of the engine, its recorders, and the results they kept.
 
+use super::histories::HistoryRecorder;
+use super::impacts::Impacts;
 use super::model::Model;
-use super::record::{DevicePeaks, HistoryRecorder, Impacts, Peak, Peaks, Recorders};
+use super::peaks::{DevicePeaks, Peak, Peaks};
+use super::recorders::Recorders;
 use super::{
-    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Layer, LinkResponse, Results,
-    RunOptions, Scenario, Site, Statistics,
+    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Layer, Results, Scenario,
+    SiteResponse, Statistics,
 };
-use crate::element::Kind;
-use crate::engine::{self, Settings};
+use crate::engine::{self, Outcome, Settings};
 use crate::Error;
 use std::ops::ControlFlow;
 
@@ -22,6 +24,66 @@ pub struct Progress {
     pub impacts: usize,
 }
 
+/// What a run keeps, and how much work it may do.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunOptions {
+    /// Keep the time histories at the output interval (otherwise [`Results::histories`] is empty and a run
+    /// keeps only its peaks, impacts and energies).
+    pub histories: bool,
+    /// Largest work of the run, in integration steps times (states + 8) ([`crate::limits::step_budget`]);
+    /// [`crate::limits::MAX_WORK`] (about 5 s) by default. A study may lower it to skip runs that would
+    /// crawl, or raise it for a run it knows to be long.
+    pub max_work: f64,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        Self {
+            histories: true,
+            max_work: crate::limits::MAX_WORK,
+        }
+    }
+}
+
+impl RunOptions {
+    /// Only peaks, impacts and energies, with the default work budget.
+    pub fn summary_only() -> Self {
+        Self {
+            histories: false,
+            ..Self::default()
+        }
+    }
+}
+
+impl Scenario {
+    /// Runs the analysis, keeping the histories.
+    pub fn run(&self) -> Result<Results, Error> {
+        run(self, &RunOptions::default(), &mut |_| {
+            ControlFlow::Continue(())
+        })
+    }
+
+    /// Runs the analysis, telling `progress` how far it has got (for progress bars); `progress` returns
+    /// `ControlFlow::Break(())` to cancel the run ([`Error::Cancelled`]).
+    pub fn run_with(
+        &self,
+        progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+    ) -> Result<Results, Error> {
+        run(self, &RunOptions::default(), progress)
+    }
+
+    /// Runs the analysis with `options` (for example without histories, for studies of many runs). Every run
+    /// has a step budget ([`crate::limits::step_budget`]): a run that would exceed it is refused before it
+    /// starts, or stopped, with [`Error::StepBudget`].
+    pub fn run_with_options(
+        &self,
+        options: &RunOptions,
+        progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+    ) -> Result<Results, Error> {
+        run(self, options, progress)
+    }
+}
+
 /// The values of `peaks`.
 fn values(peaks: &[Peak]) -> Vec<f64> {
     peaks.iter().map(|p| p.value).collect()
@@ -32,12 +94,9 @@ fn times(peaks: &[Peak]) -> Vec<f64> {
     peaks.iter().map(|p| p.time).collect()
 }
 
-pub(super) fn run(
-    s: &Scenario,
-    opts: &RunOptions,
-    progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
-) -> Result<Results, Error> {
-    if opts.histories && s.output_samples() > crate::limits::MAX_OUTPUT_SAMPLES {
+/// Histories of `s` fit in memory (they are refused before any work otherwise).
+fn check_histories(s: &Scenario) -> Result<(), Error> {
+    if s.output_samples() > crate::limits::MAX_OUTPUT_SAMPLES {
         return Err(Error::Parameter {
             name: "output_dt",
             value: s.output_dt(),
@@ -45,51 +104,25 @@ pub(super) fn run(
         });
     }
     let floors: usize = s.buildings().iter().map(|b| b.structure.storeys()).sum();
-    let contacts: usize = s.links().iter().map(|l| l.floors.len()).sum::<usize>()
-        + s.walls().iter().map(|w| w.floors.len()).sum::<usize>()
+    let contacts: usize = s.sites().iter().map(|l| l.levels.len()).sum::<usize>()
         + s.devices().iter().map(|d| d.floors.len()).sum::<usize>();
     let columns = 2 + 3 * floors + contacts + 6;
-    if opts.histories
-        && s.output_samples().saturating_mul(columns) > crate::limits::MAX_HISTORY_VALUES
-    {
+    if s.output_samples().saturating_mul(columns) > crate::limits::MAX_HISTORY_VALUES {
         return Err(Error::Parameter {
             name: "output_dt",
             value: s.output_dt(),
             allowed: "at most 1e7 history values, output samples times columns (3 per floor, 1 per contact, 8 more) (limits::MAX_HISTORY_VALUES; raise output_dt)",
         });
     }
-    let mut model = Model::new(s);
-    let (atol, h0) = model.tolerances(s, s.tolerance());
+    Ok(())
+}
+
+/// The step budget of a run of `dim` states, checked against what the scenario will need at least: an
+/// explicit step resolves the highest natural frequency, so a run needs at least about `w_max t_end / 3`
+/// steps (Dormand–Prince is stable to `h w` of about 3.3), and every sample of the record ends a step.
+fn budget(s: &Scenario, dim: usize, max_work: f64) -> Result<usize, Error> {
+    let budget = crate::limits::step_budget(dim, max_work);
     let t_end = s.duration();
-    let histories = opts.histories.then(|| {
-        let storeys: Vec<usize> = s
-            .buildings()
-            .iter()
-            .map(|b| b.structure.storeys())
-            .collect();
-        let links: Vec<usize> = s.links().iter().map(|l| l.floors.len()).collect();
-        let walls: Vec<usize> = s.walls().iter().map(|w| w.floors.len()).collect();
-        let devices: Vec<usize> = s.devices().iter().map(|d| d.floors.len()).collect();
-        HistoryRecorder::new(
-            &model,
-            (&storeys, &links, &walls, &devices),
-            s.output_samples(),
-            s.output_dt(),
-            t_end,
-        )
-    });
-    let mut rec = Recorders::new(
-        Peaks::new(&model),
-        Impacts::new(&model, opts.histories),
-        DevicePeaks::new(&model),
-        histories,
-        progress,
-        t_end,
-    );
-    let dim = model.system.layout().dim();
-    // The work is bounded before the run: an explicit step resolves the highest natural frequency, so a run
-    // needs at least about w_max t_end / 3 steps (Dormand–Prince is stable to h w of about 3.3).
-    let budget = crate::limits::step_budget(dim, opts.max_work);
     let w_max = s
         .buildings()
         .iter()
@@ -105,7 +138,6 @@ pub(super) fn run(
             ),
         });
     }
-    // Every sample of the record within the analysis ends a step.
     let samples = (s.record().npts() as f64).min(t_end / s.record().dt());
     if samples > budget as f64 {
         return Err(Error::StepBudget {
@@ -115,6 +147,46 @@ pub(super) fn run(
             ),
         });
     }
+    Ok(budget)
+}
+
+fn run(
+    s: &Scenario,
+    opts: &RunOptions,
+    progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+) -> Result<Results, Error> {
+    if opts.histories {
+        check_histories(s)?;
+    }
+    let mut model = Model::new(s);
+    let (atol, h0) = model.tolerances(s, s.tolerance());
+    let t_end = s.duration();
+    let histories = opts.histories.then(|| {
+        let storeys: Vec<usize> = s
+            .buildings()
+            .iter()
+            .map(|b| b.structure.storeys())
+            .collect();
+        let sites: Vec<usize> = s.sites().iter().map(|l| l.levels.len()).collect();
+        let devices: Vec<usize> = s.devices().iter().map(|d| d.floors.len()).collect();
+        HistoryRecorder::new(
+            &model,
+            (&storeys, &sites, &devices),
+            s.output_samples(),
+            s.output_dt(),
+            t_end,
+        )
+    });
+    let mut rec = Recorders::new(
+        Peaks::new(&model),
+        Impacts::new(&model, opts.histories),
+        DevicePeaks::new(&model),
+        histories,
+        progress,
+        t_end,
+    );
+    let dim = model.system.layout().dim();
+    let budget = budget(s, dim, opts.max_work)?;
     let settings = Settings {
         t_end,
         rtol: s.tolerance(),
@@ -141,95 +213,20 @@ pub(super) fn run(
         engine::Ending::Cancelled => return Err(Error::Cancelled { t: out.t }),
         engine::Ending::Time | engine::Ending::Stopped => {}
     }
+    let results = results(s, &model, rec, &out);
+    match results.first_non_finite() {
+        Some(what) => Err(Error::NotFinite { what }),
+        None => Ok(results),
+    }
+}
+
+/// What the recorders kept, and the state at the end, as results.
+fn results(s: &Scenario, model: &Model, mut rec: Recorders, out: &Outcome) -> Results {
     let sys = &model.system;
     let y = &out.y;
-    let l = sys.layout();
-
-    let peaks = &rec.peaks;
-    let buildings = s
-        .buildings()
-        .iter()
-        .zip(model.offsets.iter().zip(&model.first_storey))
-        .map(|(b, (&o, &s0))| {
-            let r = o..o + b.structure.storeys();
-            let storeys = s0..s0 + b.structure.storeys();
-            let storey = |e: usize| match &sys.elements()[e].kind {
-                Kind::Storey(st) => Some(st),
-                _ => None,
-            };
-            let residual_drift: Vec<f64> =
-                storeys.clone().map(|e| sys.deformation(e, y).0).collect();
-            BuildingResponse {
-                peak_displacement: values(&peaks.displacement[r.clone()]),
-                time_of_peak_displacement: times(&peaks.displacement[r.clone()]),
-                peak_drift: peaks.drift[r.clone()].to_vec(),
-                peak_absolute_acceleration: values(&peaks.acceleration[r.clone()]),
-                time_of_peak_absolute_acceleration: times(&peaks.acceleration[r.clone()]),
-                peak_storey_shear: peaks.shear[r.clone()].to_vec(),
-                residual_displacement: r.clone().map(|i| y[l.u(i)]).collect(),
-                residual_drift,
-                ductility: storeys
-                    .clone()
-                    .zip(&peaks.drift[r.clone()])
-                    .map(|(e, d)| storey(e).and_then(|st| st.yield_drift()).map(|dy| d / dy))
-                    .collect(),
-                hysteretic_energy: storeys
-                    .map(|e| {
-                        let (x, _) = sys.deformation(e, y);
-                        sys.elements()[e].energy(x, &y[l.block(e)]).hysteretic
-                    })
-                    .collect(),
-            }
-        })
-        .collect();
     let (impacts, impact_loops) = rec.impacts.finish(sys, out.t, y);
-    // Totals of a link or a wall: its impacts, the work of its elements, its closings and openings per
-    // site (a bumper's two elements share their site), and its largest force.
-    let totals = |owns: &dyn Fn(Site) -> bool, seat: Option<f64>| {
-        let mine = impacts.iter().filter(|i| owns(i.site));
-        let ks: Vec<usize> = (0..model.contacts.len())
-            .filter(|&k| owns(model.contacts[k].site))
-            .collect();
-        let first: Vec<usize> = ks
-            .iter()
-            .copied()
-            .filter(|&k| model.contacts[k].layer != Layer::Consumed)
-            .collect();
-        let per = |v: &[f64]| first.iter().map(|&k| v[k]).collect::<Vec<f64>>();
-        let max_opening = per(&rec.impacts.max_opening);
-        let pair_peak = ks
-            .iter()
-            .map(|&k| rec.impacts.pair_peak[rec.impacts.pair[k]])
-            .fold(0.0, f64::max);
-        LinkResponse {
-            impacts: mine.clone().filter(|i| i.layer != Layer::Consumed).count(),
-            consumed: mine.clone().filter(|i| i.layer == Layer::Consumed).count(),
-            peak_force: mine.clone().map(|i| i.peak_force).fold(pair_peak, f64::max),
-            dissipated_energy: ks
-                .iter()
-                .map(|&k| y[l.block(model.contacts[k].element).start])
-                .sum(),
-            max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
-            max_closing: per(&rec.impacts.max_closing),
-            unseated: seat.map(|s| max_opening.iter().any(|&o| o > s)),
-            max_opening,
-        }
-    };
-    let links = (0..s.links().len())
-        .map(|li| {
-            totals(
-                &|site| matches!(site, Site::Link { link, .. } if link == li),
-                s.links()[li].seat,
-            )
-        })
-        .collect();
-    let walls = (0..s.walls().len())
-        .map(|wi| {
-            totals(
-                &|site| matches!(site, Site::Wall { wall, .. } if wall == wi),
-                s.walls()[wi].seat,
-            )
-        })
+    let sites = (0..s.sites().len())
+        .map(|site| site_totals(s, model, &rec, &impacts, site, y))
         .collect();
     let devices = (0..s.devices().len())
         .map(|di| {
@@ -245,10 +242,9 @@ pub(super) fn run(
         })
         .collect();
     let balance = &rec.balance;
-    let results = Results {
-        buildings,
-        links,
-        walls,
+    Results {
+        buildings: building_responses(s, model, &rec.peaks, y),
+        sites,
         devices,
         impacts,
         energy: EnergyBalance {
@@ -271,9 +267,93 @@ pub(super) fn run(
             rejected: out.rejected,
             events: out.events,
         },
-    };
-    match results.first_non_finite() {
-        Some(what) => Err(Error::NotFinite { what }),
-        None => Ok(results),
+    }
+}
+
+/// The peak response of every building, and its state at the end `y`.
+fn building_responses(
+    s: &Scenario,
+    model: &Model,
+    peaks: &Peaks,
+    y: &[f64],
+) -> Vec<BuildingResponse> {
+    let sys = &model.system;
+    let l = sys.layout();
+    s.buildings()
+        .iter()
+        .zip(model.offsets.iter().zip(&model.first_storey))
+        .map(|(b, (&o, &s0))| {
+            let st = &b.structure;
+            let r = o..o + st.storeys();
+            let storeys = s0..s0 + st.storeys();
+            let residual_drift: Vec<f64> =
+                storeys.clone().map(|e| sys.deformation(e, y).0).collect();
+            BuildingResponse {
+                peak_displacement: values(&peaks.displacement[r.clone()]),
+                time_of_peak_displacement: times(&peaks.displacement[r.clone()]),
+                peak_drift: peaks.drift[r.clone()].to_vec(),
+                peak_absolute_acceleration: values(&peaks.acceleration[r.clone()]),
+                time_of_peak_absolute_acceleration: times(&peaks.acceleration[r.clone()]),
+                peak_storey_shear: peaks.shear[r.clone()].to_vec(),
+                residual_displacement: r.clone().map(|i| y[l.u(i)]).collect(),
+                residual_drift,
+                ductility: st
+                    .storey_laws()
+                    .iter()
+                    .zip(st.stiffnesses())
+                    .zip(&peaks.drift[r.clone()])
+                    .map(|((law, k), d)| law.yield_force().map(|fy| d / (fy / k)))
+                    .collect(),
+                hysteretic_energy: storeys
+                    .map(|e| {
+                        let (x, _) = sys.deformation(e, y);
+                        sys.elements()[e].energy(x, &y[l.block(e)]).hysteretic
+                    })
+                    .collect(),
+            }
+        })
+        .collect()
+}
+
+/// Totals of contact site `site`: its impacts, the work of its elements, its closings and openings per level
+/// (a bumper's two elements share their level), and its largest force.
+fn site_totals(
+    s: &Scenario,
+    model: &Model,
+    rec: &Recorders,
+    impacts: &[super::Impact],
+    site: usize,
+    y: &[f64],
+) -> SiteResponse {
+    let l = model.system.layout();
+    let mine = impacts.iter().filter(|i| i.site == site);
+    let ks: Vec<usize> = (0..model.contacts.len())
+        .filter(|&k| model.contacts[k].site == site)
+        .collect();
+    let first: Vec<usize> = ks
+        .iter()
+        .copied()
+        .filter(|&k| model.contacts[k].layer != Layer::Consumed)
+        .collect();
+    let per = |v: &[f64]| first.iter().map(|&k| v[k]).collect::<Vec<f64>>();
+    let max_opening = per(&rec.impacts.max_opening);
+    let pair_peak = ks
+        .iter()
+        .map(|&k| rec.impacts.pair_peak[rec.impacts.pair[k]])
+        .fold(0.0, f64::max);
+    SiteResponse {
+        impacts: mine.clone().filter(|i| i.layer != Layer::Consumed).count(),
+        consumed: mine.clone().filter(|i| i.layer == Layer::Consumed).count(),
+        peak_force: mine.clone().map(|i| i.peak_force).fold(pair_peak, f64::max),
+        dissipated_energy: ks
+            .iter()
+            .map(|&k| y[l.block(model.contacts[k].element).start])
+            .sum(),
+        max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
+        max_closing: per(&rec.impacts.max_closing),
+        unseated: s.sites()[site]
+            .seat
+            .map(|seat| max_opening.iter().any(|&o| o > seat)),
+        max_opening,
     }
 }

@@ -1,11 +1,11 @@
-//! Exact calibration: the damping parameter that makes the delivered `e_post` equal the requested `e_pre`
-//! to 1e-10, by root finding on the exact relations of [`crate::impact::exact`] (or on an integrated impact
-//! for Jankowski's law, which has no closed form). All parameters are dimensionless.
+//! Exact calibration from the exact relations ([`super::exact`]): the damping parameter that makes the
+//! delivered `e_post` equal the requested `e_pre` to 1e-10, by root finding. All parameters are
+//! dimensionless. Jankowski's law has no closed form: its calibration integrates impacts
+//! ([`crate::calibration`]).
 
 use super::{
-    bilinear_law, damping, hertz_max_penetration, papi_factors, ForceLaw, Reading, Tension,
+    bilinear_law, damping, exact, hertz_max_penetration, papi_factors, ForceLaw, Reading, Tension,
 };
-use crate::impact::{self, exact, ImpactOptions, ImpactSetup};
 use crate::integrate::brent_root;
 use crate::Error;
 
@@ -13,7 +13,7 @@ use crate::Error;
 pub const E_TOLERANCE: f64 = 1e-10;
 
 /// Root of `e_post(p) = e` for a decreasing `e_post` on `[0, hi]`, widening `hi` while needed.
-fn solve_decreasing(
+pub(crate) fn solve_decreasing(
     what: &'static str,
     e: f64,
     mut hi: f64,
@@ -120,33 +120,6 @@ pub fn papi_alpha(e: f64, reading: Reading) -> Result<f64, Error> {
     };
     let (f0, f1) = (f(0.0)? - e, f(1.0)? - e);
     finish("alpha", e, 0.0, 1.0, f0, f1, f)
-}
-
-/// Delivered `e` of Jankowski's law with damping ratio `xi` and exponent `n`, by an integrated impact
-/// (100 times tighter than the default tolerance), in dimensionless units (`k = m = v_i = 1`).
-pub fn jankowski_e_post(xi: f64, n: f64) -> Result<f64, Error> {
-    let law = ForceLaw::Jankowski {
-        k: 1.0,
-        n,
-        c0: 2.0 * xi,
-    };
-    let opts = ImpactOptions {
-        rtol: 1e-12,
-        history: false,
-    };
-    Ok(impact::simulate(
-        &law,
-        Tension::Clamp,
-        &ImpactSetup::relative(1.0, 1.0),
-        &opts,
-    )?
-    .e_post)
-}
-
-/// Exact Jankowski damping ratio `xi` for exponent `n`.
-pub fn exact_xi(e: f64, n: f64) -> Result<f64, Error> {
-    let start = damping::xi_jankowski(e).max(0.1);
-    solve_decreasing("xi", e, start, |x| jankowski_e_post(x, n))
 }
 
 /// Exact design restitution `e_d` of the bilinear loop: the `e` to put into the dissipated-energy formula so

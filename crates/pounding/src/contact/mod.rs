@@ -19,6 +19,7 @@
 
 pub mod calibrate;
 pub mod damping;
+pub mod exact;
 mod law;
 mod model;
 mod options;
@@ -259,29 +260,24 @@ impl ContactModel {
         self.alpha
     }
 
-    /// Fixes the damping parameter, calibrating it where asked. Calibration is done once here: the
-    /// parameter is dimensionless and the same for every impact (except `impact-material` with a given
-    /// `d_m`, which is calibrated per impact in [`PreparedContact::law`]).
-    pub fn prepare(&self) -> Result<PreparedContact, Error> {
-        let deferred = self.model == Model::ImpactMaterial
+    /// Whether the damping parameter is calibrated per impact (`impact-material` with exact damping and a
+    /// given `d_m`: the ratio of `d_m` to each impact's elastic penetration changes the calibration).
+    pub(crate) fn calibrated_per_impact(&self) -> bool {
+        self.model == Model::ImpactMaterial
             && self.damping == Damping::Exact
-            && self.max_penetration.is_some();
-        let parameter = if deferred {
-            None
-        } else {
-            Some(self.parameter_for(None)?)
-        };
-        Ok(PreparedContact {
-            spec: self.clone(),
-            parameter,
-        })
+            && self.max_penetration.is_some()
     }
 
-    /// The damping parameter; `impact` gives `(m, v_i)` for `impact-material` with a given `d_m`.
-    fn parameter_for(&self, impact: Option<(f64, f64)>) -> Result<DampingParameter, Error> {
+    /// The damping parameter from its formula or a closed-form calibration; `impact` gives `(m, v_i)` for
+    /// `impact-material` with a given `d_m`. `None` when the calibration needs integrated impacts
+    /// (Jankowski's law with exact damping: [`crate::calibration`]).
+    pub(crate) fn closed_form_parameter(
+        &self,
+        impact: Option<(f64, f64)>,
+    ) -> Result<Option<DampingParameter>, Error> {
         let e = self.e;
         let exact = self.damping == Damping::Exact;
-        Ok(match self.model.info().formula {
+        Ok(Some(match self.model.info().formula {
             Formula::None => DampingParameter::None,
             Formula::Zeta(f) => DampingParameter::Zeta(if exact {
                 calibrate::exact_zeta(e, self.model.info().restitution_damped, self.tension)?
@@ -302,11 +298,8 @@ impl ContactModel {
                 let (chi, chi_r) = papi_factors(e, alpha, self.reading);
                 DampingParameter::Papi { alpha, chi, chi_r }
             }
-            Formula::Xi(f) => DampingParameter::Xi(if exact {
-                calibrate::exact_xi(e, self.n)?
-            } else {
-                f(e)
-            }),
+            Formula::Xi(_) if exact => return Ok(None),
+            Formula::Xi(f) => DampingParameter::Xi(f(e)),
             Formula::Bilinear => DampingParameter::EDesign(if exact {
                 let ratio = match impact {
                     Some((m, v_i)) => {
@@ -319,7 +312,7 @@ impl ContactModel {
             } else {
                 e
             }),
-        })
+        }))
     }
 
     fn max_penetration_for(&self, m: f64, v_i: f64) -> f64 {
@@ -410,6 +403,11 @@ pub struct PreparedContact {
 }
 
 impl PreparedContact {
+    /// A prepared contact of `spec` with its damping `parameter` (`None`: calibrated per impact).
+    pub(crate) fn new(spec: ContactModel, parameter: Option<DampingParameter>) -> Self {
+        Self { spec, parameter }
+    }
+
     /// The specification.
     pub fn spec(&self) -> &ContactModel {
         &self.spec
@@ -425,7 +423,14 @@ impl PreparedContact {
     pub fn law(&self, m: f64, v_i: f64) -> Result<(ForceLaw, DampingParameter), Error> {
         let p = match self.parameter {
             Some(p) => p,
-            None => self.spec.parameter_for(Some((m, v_i)))?,
+            None => self
+                .spec
+                .closed_form_parameter(Some((m, v_i)))?
+                .ok_or(Error::Calibration {
+                    what: "damping",
+                    e: self.spec.e,
+                    reason: "a law calibrated per impact has a closed form".into(),
+                })?,
         };
         Ok((self.spec.law_with(p, m, v_i), p))
     }

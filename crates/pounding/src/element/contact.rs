@@ -11,10 +11,20 @@
 //! that, the same impact resumes).
 
 use crate::contact::{ForceLaw, Phase, PreparedContact, Tension, Turn};
-use crate::element::{Event, RateGate, Transition};
-use crate::engine::Piece;
-use crate::integrate::DenseComponent;
+use crate::element::{
+    ElementEnergy, ElementLaw, Event, Notice, RateGate, Scales, Transition, Watch,
+};
+use crate::integrate::{DenseComponent, Piece};
 use crate::Error;
+
+const TOUCH: Event = Event(0);
+const TURN: Event = Event(1);
+const KINK: Event = Event(2);
+const ZERO_FORCE: Event = Event(3);
+const SEPARATION: Event = Event(4);
+const REAPPROACH: Event = Event(5);
+const REARM: Event = Event(6);
+const RESUME: Event = Event(7);
 
 /// What a contact element is doing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -57,8 +67,7 @@ pub enum LawSource {
     /// One given law (a single impact that starts engaged).
     Fixed,
 }
-
-/// A contact element.
+/// A contact element: the impacts of one floor pair (or a floor and a wall), one after another.
 #[derive(Clone, Debug)]
 pub struct Contact {
     gap: f64,
@@ -67,7 +76,7 @@ pub struct Contact {
     source: LawSource,
     stop_at_end: bool,
     state: Engagement,
-    pub(super) gate: RateGate,
+    gate: RateGate,
 }
 
 impl Contact {
@@ -106,19 +115,6 @@ impl Contact {
         }
     }
 
-    /// The state's change-of-direction event function without its slack ([`RateGate`]), m/s: `v` while
-    /// approaching, `-v` otherwise; `None` while open.
-    pub(super) fn rate_event(&self, v: f64) -> Option<f64> {
-        match self.state {
-            Engagement::Open => None,
-            Engagement::Contact {
-                phase: Phase::Approach,
-                ..
-            } => Some(v),
-            _ => Some(-v),
-        }
-    }
-
     /// Gap at rest, m.
     pub fn gap(&self) -> f64 {
         self.gap
@@ -136,89 +132,6 @@ impl Contact {
         self.state
     }
 
-    /// Contact force, N (positive pushes the ends apart), at deformation `x` and rate `v`: the law continued
-    /// smoothly past the end of contact, which is located as an event.
-    #[inline]
-    pub fn force(&self, x: f64, v: f64) -> f64 {
-        match self.state {
-            Engagement::Contact { law, phase, turn } => law.force(x - self.gap, v, phase, &turn),
-            _ => 0.0,
-        }
-    }
-
-    /// The force as reported: never negative for a clamped law, N.
-    #[inline]
-    pub fn reported_force(&self, x: f64, v: f64) -> f64 {
-        let f = self.force(x, v);
-        match self.tension {
-            Tension::Clamp => f.max(0.0),
-            Tension::Allow => f,
-        }
-    }
-
-    /// The events to watch in the current state.
-    pub fn watched(&self) -> &'static [Event] {
-        let kinked = |law: &ForceLaw| law.kink(0.0, Phase::Approach, &Turn::default()).is_some();
-        match self.state {
-            Engagement::Open => &[Event::Touch],
-            Engagement::Contact {
-                law,
-                phase: Phase::Approach,
-                ..
-            } => {
-                if kinked(&law) {
-                    &[Event::Turn, Event::Kink]
-                } else {
-                    &[Event::Turn]
-                }
-            }
-            Engagement::Contact {
-                law,
-                phase: Phase::Restitution,
-                ..
-            } => match (self.tension, kinked(&law)) {
-                (Tension::Clamp, true) => &[
-                    Event::Separation,
-                    Event::ZeroForce,
-                    Event::Reapproach,
-                    Event::Kink,
-                ],
-                (Tension::Clamp, false) => {
-                    &[Event::Separation, Event::ZeroForce, Event::Reapproach]
-                }
-                (Tension::Allow, true) => &[Event::Separation, Event::Reapproach, Event::Kink],
-                (Tension::Allow, false) => &[Event::Separation, Event::Reapproach],
-            },
-            Engagement::Released { .. } | Engagement::Resting => &[Event::Rearm, Event::Resume],
-        }
-    }
-
-    /// Event function of `ev` at deformation `x` and rate `v`: positive before the event, <= 0 after.
-    #[inline]
-    pub fn event_value(&self, ev: Event, x: f64, v: f64) -> f64 {
-        let d = x - self.gap;
-        let (law, phase, turn) = match self.state {
-            Engagement::Contact { law, phase, turn } => (Some(law), phase, turn),
-            Engagement::Released { law, turn } => (Some(law), Phase::Restitution, turn),
-            Engagement::Open | Engagement::Resting => (None, Phase::Approach, Turn::default()),
-        };
-        match ev {
-            Event::Touch => -d,
-            Event::Turn => v + self.gate.slack(),
-            Event::Kink => law.and_then(|l| l.kink(d, phase, &turn)).unwrap_or(1.0),
-            Event::ZeroForce => law.map_or(1.0, |l| l.force(d, v, phase, &turn)),
-            Event::Separation | Event::Rearm => d,
-            // A bilinear law reloads along its unloading line up to the last turning point, where the ends
-            // must still be approaching.
-            Event::Reapproach => match law {
-                Some(ForceLaw::Bilinear { .. }) => (turn.d - d).max(self.gate.slack() - v),
-                _ => self.gate.slack() - v,
-            },
-            Event::Resume => self.gate.slack() - v,
-            _ => 1.0,
-        }
-    }
-
     /// Smallest impact velocity used to build a law, m/s (0 for a fixed law).
     pub fn min_impact_velocity(&self) -> f64 {
         match &self.source {
@@ -227,6 +140,16 @@ impl Contact {
                 ..
             } => *min_impact_velocity,
             LawSource::Fixed => 0.0,
+        }
+    }
+
+    /// Contact force, N (positive pushes the ends apart), at deformation `x` and rate `v`: the law continued
+    /// smoothly past the end of contact, which is located as an event.
+    #[inline]
+    fn law_force(&self, x: f64, v: f64) -> f64 {
+        match self.state {
+            Engagement::Contact { law, phase, turn } => law.force(x - self.gap, v, phase, &turn),
+            _ => 0.0,
         }
     }
 
@@ -250,65 +173,217 @@ impl Contact {
         Ok(Some(law))
     }
 
-    /// Applies `ev` at deformation `x` and rate `v`; `h` is the step the integrator would take next (s).
-    pub fn apply(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
-        let out = self.change(ev, x, v, h)?;
-        self.gate.enter(self.rate_event(v));
-        Ok(out)
-    }
-
+    /// Changes the state for `ev` at deformation `x` and rate `v` (`h`: the integrator's next step, s), and
+    /// says what happened to the impact.
     fn change(&mut self, ev: Event, x: f64, v: f64, h: f64) -> Result<Transition, Error> {
         let d = x - self.gap;
         let mut out = Transition::default();
-        self.state = match (self.state, ev) {
+        let started = Notice::ImpactStarted {
+            resting: v < self.min_impact_velocity(),
+        };
+        let contact = |law, phase, turn| Engagement::Contact { law, phase, turn };
+        let (state, notice) = match (self.state, ev) {
             // A touch while the ends are not closing starts no impact (a grazing touch, or resting contact).
-            (Engagement::Open, Event::Touch) if v <= 0.0 => Engagement::Resting,
-            (Engagement::Open, Event::Touch) | (Engagement::Resting, Event::Resume) => {
+            (Engagement::Open, TOUCH) if v <= 0.0 => (Engagement::Resting, None),
+            (Engagement::Open, TOUCH) | (Engagement::Resting, RESUME) => {
                 match self.impact_law(v, h, &mut out)? {
-                    Some(law) => Engagement::Contact {
-                        law,
-                        phase: Phase::Approach,
-                        turn: Turn::default(),
-                    },
+                    Some(law) => (
+                        contact(law, Phase::Approach, Turn::default()),
+                        Some(started),
+                    ),
                     None => return Ok(out),
                 }
             }
-            (Engagement::Resting, Event::Rearm) => Engagement::Open,
-            (Engagement::Contact { law, .. }, Event::Turn) => Engagement::Contact {
+            (Engagement::Resting, REARM) => (Engagement::Open, Some(Notice::ContactCleared)),
+            (Engagement::Contact { law, .. }, TURN) => {
+                let force = law.force(d, v, Phase::Approach, &Turn::default());
+                (
+                    contact(law, Phase::Restitution, Turn { d, force }),
+                    Some(Notice::ImpactTurned),
+                )
+            }
+            (Engagement::Contact { law, turn, .. }, REAPPROACH) => {
+                (contact(law, Phase::Approach, turn), None)
+            }
+            (Engagement::Contact { law, turn, .. }, ZERO_FORCE) => {
+                out.stop = self.stop_at_end;
+                (
+                    Engagement::Released { law, turn },
+                    Some(Notice::ImpactReleased),
+                )
+            }
+            (Engagement::Contact { .. }, SEPARATION) => {
+                out.stop = self.stop_at_end;
+                (Engagement::Open, Some(Notice::ImpactEnded))
+            }
+            (Engagement::Released { .. }, REARM) => {
+                (Engagement::Open, Some(Notice::ContactCleared))
+            }
+            (Engagement::Released { law, turn }, RESUME) => (
+                contact(law, Phase::Approach, turn),
+                Some(Notice::ImpactResumed),
+            ),
+            (state, _) => (state, None),
+        };
+        self.state = state;
+        out.notice = notice;
+        Ok(out)
+    }
+
+    /// The piece of force history on `span` with the interpolants of the deformation and its rate, if the
+    /// contact is engaged.
+    pub fn piece(
+        &self,
+        span: (f64, f64),
+        x: DenseComponent,
+        v: DenseComponent,
+    ) -> Option<ContactPiece> {
+        match self.state {
+            Engagement::Contact { law, phase, turn } => Some(ContactPiece {
+                span,
+                x,
+                v,
+                law,
+                phase,
+                turn,
+                gap: self.gap,
+                tension: self.tension,
+            }),
+            _ => None,
+        }
+    }
+}
+
+const TURN_W: Watch = Watch::crossing(TURN);
+const KINK_W: Watch = Watch::kink(KINK);
+const SEPARATION_W: Watch = Watch::crossing(SEPARATION);
+const ZERO_FORCE_W: Watch = Watch::crossing(ZERO_FORCE);
+const REAPPROACH_W: Watch = Watch::crossing(REAPPROACH);
+const OPEN_W: &[Watch] = &[Watch::touch(TOUCH)];
+const IDLE_W: &[Watch] = &[Watch::crossing(REARM), Watch::crossing(RESUME)];
+
+impl ElementLaw for Contact {
+    fn name(&self) -> &'static str {
+        "contact"
+    }
+
+    /// The work of the contact force on the relative motion, J.
+    fn states(&self) -> usize {
+        1
+    }
+
+    /// The work is of the order of the kinetic energy of an impact, `m_eff v^2`.
+    fn state_tolerances(&self, scales: &Scales, out: &mut [f64]) {
+        out[0] = scales.rtol * self.m_eff * scales.velocity * scales.velocity;
+    }
+
+    #[inline]
+    fn evaluate(&self, x: f64, v: f64, _s: &[f64], ds: &mut [f64]) -> (f64, f64) {
+        let f = self.law_force(x, v);
+        ds[0] = f * v;
+        (f, 0.0)
+    }
+
+    /// The force as reported: never negative for a clamped law, N.
+    #[inline]
+    fn force(&self, x: f64, v: f64, _s: &[f64]) -> f64 {
+        let f = self.law_force(x, v);
+        match self.tension {
+            Tension::Clamp => f.max(0.0),
+            Tension::Allow => f,
+        }
+    }
+
+    fn energy(&self, _x: f64, s: &[f64]) -> ElementEnergy {
+        ElementEnergy {
+            contact: s[0],
+            ..ElementEnergy::default()
+        }
+    }
+
+    fn watched(&self) -> &'static [Watch] {
+        let kinked = |law: &ForceLaw| law.kink(0.0, Phase::Approach, &Turn::default()).is_some();
+        match self.state {
+            Engagement::Open => OPEN_W,
+            Engagement::Contact {
+                law,
+                phase: Phase::Approach,
+                ..
+            } => {
+                if kinked(&law) {
+                    &[TURN_W, KINK_W]
+                } else {
+                    &[TURN_W]
+                }
+            }
+            Engagement::Contact {
                 law,
                 phase: Phase::Restitution,
-                turn: Turn {
-                    d,
-                    force: law.force(d, v, Phase::Approach, &Turn::default()),
-                },
+                ..
+            } => match (self.tension, kinked(&law)) {
+                (Tension::Clamp, true) => &[SEPARATION_W, ZERO_FORCE_W, REAPPROACH_W, KINK_W],
+                (Tension::Clamp, false) => &[SEPARATION_W, ZERO_FORCE_W, REAPPROACH_W],
+                (Tension::Allow, true) => &[SEPARATION_W, REAPPROACH_W, KINK_W],
+                (Tension::Allow, false) => &[SEPARATION_W, REAPPROACH_W],
             },
-            (Engagement::Contact { law, turn, .. }, Event::Reapproach) => Engagement::Contact {
-                law,
-                phase: Phase::Approach,
-                turn,
-            },
-            (Engagement::Contact { law, turn, .. }, Event::ZeroForce) => {
-                out.stop = self.stop_at_end;
-                Engagement::Released { law, turn }
-            }
-            (Engagement::Contact { .. }, Event::Separation) => {
-                out.stop = self.stop_at_end;
-                Engagement::Open
-            }
-            (Engagement::Released { .. }, Event::Rearm) => Engagement::Open,
-            (Engagement::Released { law, turn }, Event::Resume) => Engagement::Contact {
-                law,
-                phase: Phase::Approach,
-                turn,
-            },
-            (state, _) => state,
+            Engagement::Released { .. } | Engagement::Resting => IDLE_W,
+        }
+    }
+
+    #[inline]
+    fn event_value(&self, ev: Event, x: f64, v: f64, _s: &[f64]) -> f64 {
+        let d = x - self.gap;
+        let (law, phase, turn) = match self.state {
+            Engagement::Contact { law, phase, turn } => (Some(law), phase, turn),
+            Engagement::Released { law, turn } => (Some(law), Phase::Restitution, turn),
+            Engagement::Open | Engagement::Resting => (None, Phase::Approach, Turn::default()),
         };
+        match ev {
+            TOUCH => -d,
+            TURN => v + self.gate.slack(),
+            KINK => law.and_then(|l| l.kink(d, phase, &turn)).unwrap_or(1.0),
+            ZERO_FORCE => law.map_or(1.0, |l| l.force(d, v, phase, &turn)),
+            SEPARATION | REARM => d,
+            // A bilinear law reloads along its unloading line up to the last turning point, where the ends
+            // must still be approaching.
+            REAPPROACH => match law {
+                Some(ForceLaw::Bilinear { .. }) => (turn.d - d).max(self.gate.slack() - v),
+                _ => self.gate.slack() - v,
+            },
+            RESUME => self.gate.slack() - v,
+            _ => 1.0,
+        }
+    }
+
+    fn apply(&mut self, ev: Event, x: f64, v: f64, s: &[f64], h: f64) -> Result<Transition, Error> {
+        let out = self.change(ev, x, v, h)?;
+        self.gate.enter(self.rate_event(x, v, s));
         Ok(out)
+    }
+
+    fn gate(&self) -> Option<&RateGate> {
+        Some(&self.gate)
+    }
+
+    fn gate_mut(&mut self) -> Option<&mut RateGate> {
+        Some(&mut self.gate)
+    }
+
+    /// `v` while approaching, `-v` otherwise; `None` while open.
+    fn rate_event(&self, _x: f64, v: f64, _s: &[f64]) -> Option<f64> {
+        match self.state {
+            Engagement::Open => None,
+            Engagement::Contact {
+                phase: Phase::Approach,
+                ..
+            } => Some(v),
+            _ => Some(-v),
+        }
     }
 }
 
 /// The force of a contact over one segment of a run, kept for locating its peak
-/// ([`crate::engine::PeakTracker`]).
+/// ([`crate::integrate::PeakTracker`]).
 #[derive(Clone, Copy, Debug)]
 pub struct ContactPiece {
     /// Start and end of the segment, s.
@@ -346,31 +421,6 @@ impl Piece for ContactPiece {
     }
 }
 
-impl Contact {
-    /// The piece of force history on `span` with the interpolants of the deformation and its rate, if the
-    /// contact is engaged.
-    pub fn piece(
-        &self,
-        span: (f64, f64),
-        x: DenseComponent,
-        v: DenseComponent,
-    ) -> Option<ContactPiece> {
-        match self.state {
-            Engagement::Contact { law, phase, turn } => Some(ContactPiece {
-                span,
-                x,
-                v,
-                law,
-                phase,
-                turn,
-                gap: self.gap,
-                tension: self.tension,
-            }),
-            _ => None,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -393,22 +443,44 @@ mod tests {
         // k = 1e12 N/m, e = 0.01), and a bilinear law flipped between turn and reload (found by fuzzing).
         for model in [Model::Papi, Model::ImpactMaterial] {
             let mut c = contact(model, 1e12);
-            c.apply(Event::Touch, 1e-9, 0.1, 1e-3).unwrap();
+            c.apply(TOUCH, 1e-9, 0.1, &[], 1e-3).unwrap();
             // Touched at 0.1 m/s: the turn is located at v = 0 exactly.
-            assert_eq!(c.event_value(Event::Turn, 2e-9, 0.0), 0.0);
-            c.apply(Event::Turn, 2e-9, 0.0, 1e-3).unwrap();
+            assert_eq!(c.event_value(TURN, 2e-9, 0.0, &[]), 0.0);
+            c.apply(TURN, 2e-9, 0.0, &[], 1e-3).unwrap();
             // Turned at v = 0: a rate of either sign below the resolution is no new approach.
             for v in [1e-9, -1e-9, 9e-7] {
-                assert!(
-                    c.event_value(Event::Reapproach, 2e-9, v) > 0.0,
-                    "{model} {v}"
-                );
+                assert!(c.event_value(REAPPROACH, 2e-9, v, &[]) > 0.0, "{model} {v}");
             }
-            assert!(c.event_value(Event::Reapproach, 2e-9, 1.1e-6) <= 0.0);
+            assert!(c.event_value(REAPPROACH, 2e-9, 1.1e-6, &[]) <= 0.0);
             // Once the ends part by more than the resolution, a new approach is located at v = 0 (and, for the
             // bilinear law, at the last turning point).
-            c.gate.rearm(c.rate_event(-2e-6));
-            assert_eq!(c.event_value(Event::Reapproach, 2e-9, 0.0), 0.0);
+            c.gate.rearm(c.rate_event(0.0, -2e-6, &[]));
+            assert_eq!(c.event_value(REAPPROACH, 2e-9, 0.0, &[]), 0.0);
         }
+    }
+
+    #[test]
+    fn notices_follow_the_impact() {
+        // Touch, turn, separation of a tension-allowing law: started, turned, ended.
+        let spec = ContactModel::new(Model::KelvinVoigt, 1e9, 0.5).unwrap();
+        let mut c = Contact::new(spec.prepare().unwrap(), 0.0, 1.0e5, 1e-3);
+        let n = |t: Transition| t.notice;
+        assert_eq!(
+            n(c.apply(TOUCH, 0.0, 0.5, &[], 1e-3).unwrap()),
+            Some(Notice::ImpactStarted { resting: false })
+        );
+        assert_eq!(
+            n(c.apply(TURN, 1e-3, 0.0, &[], 1e-3).unwrap()),
+            Some(Notice::ImpactTurned)
+        );
+        assert_eq!(
+            n(c.apply(SEPARATION, 0.0, -0.3, &[], 1e-3).unwrap()),
+            Some(Notice::ImpactEnded)
+        );
+        // A touch slower than the smallest impact velocity is a resting contact.
+        assert_eq!(
+            n(c.apply(TOUCH, 0.0, 5e-4, &[], 1e-3).unwrap()),
+            Some(Notice::ImpactStarted { resting: true })
+        );
     }
 }

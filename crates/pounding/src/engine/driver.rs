@@ -52,11 +52,13 @@ pub struct Outcome {
 
 /// The earliest event of any element in the step `[t0, t1]` (states `y0`, `y1`): `(time, element, event)`.
 /// Every event function is positive before its event and <= 0 after it; the located time is nudged to the far
-/// side, so that a restarted step never finds the same event again.
+/// side, so that a restarted step never finds the same event again. `states` is room for one element's
+/// states on the interpolant.
 fn earliest_event(
     sys: &System,
     dp: &DormandPrince,
     (t0, y0): (f64, &[f64]),
+    states: &mut [f64],
 ) -> Option<(f64, usize, Event)> {
     let (t1, y1, dense) = (dp.t(), dp.y(), dp.dense());
     let mut first: Option<(f64, usize, Event)> = None;
@@ -65,17 +67,23 @@ fn earliest_event(
         if watched.is_empty() {
             continue;
         }
+        let block = sys.layout().block(e);
         let (xa, va) = sys.deformation(e, y0);
         let (xb, vb) = sys.deformation(e, y1);
-        for &ev in watched {
-            let ga = el.event_value(ev, xa, va);
-            if ga <= 0.0 && el.keeps_phase(ev) {
+        for w in watched {
+            let ev = w.event;
+            let ga = el.event_value(ev, xa, va, &y0[block.clone()]);
+            if ga <= 0.0 && w.keeps_phase {
                 continue;
             }
-            let gb = el.event_value(ev, xb, vb);
-            let g = |t: f64| {
+            let gb = el.event_value(ev, xb, vb, &y1[block.clone()]);
+            let s = &mut states[..block.len()];
+            let mut g = |t: f64| {
                 let (x, v) = sys.deformation_at(e, dense, t);
-                el.event_value(ev, x, v)
+                for (k, z) in block.clone().zip(s.iter_mut()) {
+                    *z = dense.component(t, k);
+                }
+                el.event_value(ev, x, v, s)
             };
             // The far end of the bracket: the step end, or, for a touch that comes and goes within one step
             // (the ends turn back inside it), the largest penetration.
@@ -83,7 +91,7 @@ fn earliest_event(
             // function that stays at exactly 0 (a storey at rest: its drift rate is identically 0) is no event.
             let far = if gb < 0.0 || (gb == 0.0 && ga > 0.0) {
                 Some((t1, gb))
-            } else if ev == Event::Touch && va > 0.0 && vb < 0.0 {
+            } else if w.may_graze && va > 0.0 && vb < 0.0 {
                 let (tm, gm) = golden_max(|t| -g(t), t0, t1, 1e-12 * (t1 - t0));
                 (-gm <= 0.0).then_some((tm, -gm))
             } else {
@@ -91,7 +99,7 @@ fn earliest_event(
             };
             let Some((tb, gb)) = far else { continue };
             let xtol = 4.0 * f64::EPSILON * tb.abs() + 1e-300;
-            let mut te = brent_root(&g, t0, tb, ga.max(0.0), gb, xtol).unwrap_or(tb);
+            let mut te = brent_root(&mut g, t0, tb, ga.max(0.0), gb, xtol).unwrap_or(tb);
             let mut nudge = xtol;
             while te < tb && g(te) > 0.0 {
                 te = (te + nudge).min(tb);
@@ -137,6 +145,12 @@ pub fn run(
     // chatters, reported instead of looping.
     let mut stalled = 0usize;
     let mut disarmed: Vec<usize> = Vec::new();
+    // Room for the states of the element with the most (event functions may read them between nodes).
+    let most = (0..sys.elements().len())
+        .map(|e| sys.layout().block(e).len())
+        .max()
+        .unwrap_or(0);
+    let mut states = vec![0.0; most];
     let mut ending = Ending::Time;
     while t0 < t_end {
         while k_bp < bp_count && breakpoint(k_bp) <= t0 {
@@ -149,7 +163,7 @@ pub fn run(
         };
         dp.step_until(&*sys, t_stop)?;
         let t1 = dp.t();
-        let first = earliest_event(sys, &dp, (t0, &y0));
+        let first = earliest_event(sys, &dp, (t0, &y0), &mut states);
         let te = match first {
             Some((te, _, _)) => {
                 dp.dense().eval(te, &mut ye);
@@ -178,8 +192,9 @@ pub fn run(
                 return Err(Error::EventChatter { t: te });
             }
             let (x, v) = sys.deformation(e, &ye);
+            let block = sys.layout().block(e);
             let h = dp.h();
-            let tr = sys.elements_mut()[e].apply(ev, x, v, h)?;
+            let tr = sys.elements_mut()[e].apply(ev, x, v, &ye[block], h)?;
             if !sys.elements()[e].armed() && !disarmed.contains(&e) {
                 disarmed.push(e);
             }
@@ -189,6 +204,7 @@ pub fn run(
                 t: te,
                 element: e,
                 event: ev,
+                notice: tr.notice,
                 y: &ye,
                 rate: dp.dydt(),
             });
@@ -205,8 +221,9 @@ pub fn run(
         // Elements whose next change of direction waits for their rate to clear its resolution.
         if !disarmed.is_empty() {
             disarmed.retain(|&e| {
-                let (_, v) = sys.deformation(e, &ye);
-                sys.elements_mut()[e].rearm(v)
+                let (x, v) = sys.deformation(e, &ye);
+                let block = sys.layout().block(e);
+                sys.elements_mut()[e].rearm(x, v, &ye[block])
             });
         }
         y0.copy_from_slice(&ye);

@@ -18,7 +18,7 @@ mod observe;
 
 pub use driver::{run, Ending, Outcome, Settings};
 pub use layout::Layout;
-pub use observe::{hermite_peak, EventInfo, Hermite, Observer, PeakTracker, Piece, Segment};
+pub use observe::{EventInfo, Observer, Segment};
 
 use crate::element::{Element, End};
 use crate::ground_motion::Record;

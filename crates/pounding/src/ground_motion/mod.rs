@@ -35,7 +35,7 @@ impl Units {
     /// The factor to m/s^2.
     pub fn to_m_per_s2(self) -> f64 {
         match self {
-            Units::G => crate::impact::STANDARD_GRAVITY,
+            Units::G => crate::units::STANDARD_GRAVITY,
             Units::MPerS2 => 1.0,
             Units::CmPerS2 => 0.01,
             Units::MmPerS2 => 0.001,

@@ -6,16 +6,15 @@
 //! or the force reaching 0 in restitution when tension is clamped). Nothing depends on a fixed time step.
 //! [`exact`] holds the closed forms the integration must agree with.
 
-pub mod exact;
 mod simulate;
+
+/// The exact single-impact relations, which live with the force laws ([`crate::contact::exact`]).
+pub use crate::contact::exact;
 
 pub use simulate::simulate;
 
 use crate::error::check;
 use crate::Error;
-
-/// Standard gravity, m/s^2.
-pub const STANDARD_GRAVITY: f64 = 9.80665;
 
 /// The relative motion of one impact: effective mass, impact velocity and the gravity acting along the
 /// approach direction during contact.
@@ -134,7 +133,7 @@ impl BallDrop {
             )?,
             density: check("density", density, density > 0.0, "density > 0 (kg/m^3)")?,
             height: check("height", height, height > 0.0, "height > 0 (m)")?,
-            gravity: STANDARD_GRAVITY,
+            gravity: crate::units::STANDARD_GRAVITY,
         })
     }
 

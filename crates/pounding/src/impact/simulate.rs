@@ -3,8 +3,9 @@
 
 use super::{History, ImpactOptions, ImpactResult, ImpactSetup};
 use crate::contact::{ForceLaw, Tension};
-use crate::element::{Contact, ContactPiece, Element, End, Event, Kind};
-use crate::engine::{self, Dof, Ending, EventInfo, Ground, Observer, PeakTracker, Segment, System};
+use crate::element::{Contact, ContactPiece, Element, ElementLaw, End, Notice};
+use crate::engine::{self, Dof, Ending, EventInfo, Ground, Observer, Segment, System};
+use crate::integrate::PeakTracker;
 use crate::Error;
 
 /// Records the history (if asked), the largest force and the largest penetration of the impact.
@@ -28,20 +29,20 @@ impl Recorder {
 impl Observer for Recorder {
     fn segment(&mut self, seg: &Segment<'_, '_>) {
         let sys = seg.system;
-        let Kind::Contact(c) = &sys.elements()[0].kind else {
+        let Some(c) = sys.elements()[0].law.as_contact() else {
             return;
         };
         let (x, v) = sys.deformation_interpolants(0, seg.dense);
         if let Some(piece) = c.piece((seg.t0, seg.t1), x, v) {
             let (d, rate) = sys.deformation(0, seg.y1);
-            let f = c.reported_force(d, rate);
+            let f = c.force(d, rate, &[]);
             self.peak.push(piece, f);
             self.record(seg.t1, d, rate, f);
         }
     }
 
     fn event(&mut self, ev: &EventInfo<'_, '_>) {
-        if ev.event == Event::Turn {
+        if ev.notice == Some(Notice::ImpactTurned) {
             self.max_penetration = ev.system.deformation(0, ev.y).0;
         }
     }
@@ -90,7 +91,7 @@ pub fn simulate(
     // Gravity pushes the body into the slab: a ground acceleration of -g.
     let mut sys = System::new(
         &[Dof { mass: m, a0: 0.0 }],
-        vec![Element::contact(
+        vec![Element::new(
             End::Dof(0),
             End::Ground,
             Contact::engaged(*law, tension, m),
@@ -106,10 +107,7 @@ pub fn simulate(
     let mut y0 = vec![0.0; layout.dim()];
     y0[layout.v(0)] = v_i;
 
-    let f0 = match &sys.elements()[0].kind {
-        Kind::Contact(c) => c.reported_force(0.0, v_i),
-        _ => 0.0,
-    };
+    let f0 = sys.elements()[0].force(0.0, v_i, &[0.0]);
     let mut rec = Recorder {
         history: opts.history.then(History::default),
         peak: PeakTracker::new(0.0, f0),

@@ -9,8 +9,10 @@
 //!
 //! Units follow the system being integrated; the stepper is unit-agnostic.
 
+mod peaks;
 mod roots;
 
+pub use peaks::{hermite_peak, Hermite, PeakTracker, Piece};
 pub use roots::{brent_root, golden_max};
 
 use crate::Error;

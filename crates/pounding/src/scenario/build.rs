@@ -6,7 +6,7 @@ use super::{
 };
 use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, Side, WallSpec};
 use crate::contact::{AlphaRule, ContactModel, ContactOptions, Damping, Model, Reading, Tension};
-use crate::element::{DeviceLaw, StoreyLaw};
+use crate::element::StoreyLaw;
 use crate::ground_motion::{Format, Record, Units};
 use crate::structure::ShearBuilding;
 use crate::structure::{isolation, Isolator, IsolatorModel};
@@ -565,79 +565,15 @@ fn device(scenario: Scenario, at: &str, d: &DeviceDoc) -> Result<Scenario, Schem
     )?;
     let what = format!(
         "device {:?}",
-        d.name.clone().unwrap_or_else(|| d.model.clone())
+        d.name.clone().unwrap_or_else(|| d.law.name().to_string())
     );
-    let model = word(
-        "model",
-        &format!("{at}.model"),
-        &d.model,
-        &["spring", "dashpot", "kelvin", "maxwell", "restrainer"],
-    )?;
-    let needs = |key: &str, v: Option<f64>, unit: &str| {
-        v.ok_or_else(|| {
-            SchemaError::new(
-                format!("{at}.{key}"),
-                format!("{what}: {model} needs {key} ({unit})"),
-            )
-        })
-    };
-    let uses = |key: &str, given: bool, applies: bool| {
-        if given && !applies {
-            Err(SchemaError::new(
-                format!("{at}.{key}"),
-                format!("{what}: {key} does not apply to a {model}"),
-            ))
-        } else {
-            Ok(())
-        }
-    };
-    uses("stiffness", d.stiffness.is_some(), model != "dashpot")?;
-    uses(
-        "damping_coefficient",
-        d.damping_coefficient.is_some(),
-        ["dashpot", "kelvin", "maxwell"].contains(&model),
-    )?;
-    uses("slack", d.slack.is_some(), model == "restrainer")?;
-    let k = || needs("stiffness", d.stiffness, "N/m");
-    let c = || needs("damping_coefficient", d.damping_coefficient, "N s/m");
-    let law = match model {
-        "spring" => DeviceLaw::Spring { stiffness: k()? },
-        "dashpot" => DeviceLaw::Dashpot { damping: c()? },
-        "kelvin" => DeviceLaw::Kelvin {
-            stiffness: k()?,
-            damping: c()?,
-        },
-        "maxwell" => DeviceLaw::Maxwell {
-            stiffness: k()?,
-            damping: c()?,
-        },
-        _ => DeviceLaw::Restrainer {
-            stiffness: k()?,
-            slack: d.slack.unwrap_or(0.0),
-        },
-    };
     let spec = DeviceSpec {
         name: d.name.clone(),
         between,
         floors: pairs(at, &d.floors)?,
-        law,
+        law: d.law.clone(),
     };
-    scenario.with_device(spec).map_err(|e| {
-        let e = match e {
-            // The law's own keys are named as in the file.
-            crate::Error::Parameter {
-                name: "damping",
-                value,
-                ..
-            } => crate::Error::Parameter {
-                name: "damping_coefficient",
-                value,
-                allowed: "damping_coefficient > 0 (N s/m)",
-            },
-            e => e,
-        };
-        lib(at, &what, e)
-    })
+    scenario.with_device(spec).map_err(|e| lib(at, &what, e))
 }
 
 /// The isolator of a building entry at `at`.

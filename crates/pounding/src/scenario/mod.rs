@@ -17,13 +17,14 @@
 //!   "contact": [{"between": ["A", "B"], "gap": 0.01, "stiffness": 1e9, "stiffness_unit": "N/m"}]
 //! }"#).unwrap();
 //! let scenario = doc.build(Record::el_centro_1940()).unwrap();
-//! assert_eq!(scenario.links()[0].gap, 0.01);
+//! assert_eq!(scenario.sites()[0].gap, 0.01);
 //! ```
 
 mod build;
 
 pub use build::RecordSpec;
 
+use crate::element::DeviceLaw;
 use serde::{Deserialize, Serialize};
 
 /// A scenario: the ground motion, the analysis settings, the buildings left to right and the contacts
@@ -369,30 +370,24 @@ pub struct IsolatorDoc {
     pub clearance: Option<f64>,
 }
 
-/// `[[device]]`: a permanent device between floors of two neighbours, or of a building and a wall.
+/// `[[device]]`: a permanent device between floors of two neighbours, or of a building and a wall: its name,
+/// ends and floors, and its `model` with that model's keys ([`DeviceLaw`], one per model of
+/// `element/registry.rs`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
 pub struct DeviceDoc {
     /// Name, unique among devices (default: the model and its number, `restrainer1`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
     /// Two neighbouring buildings, or a building and a wall beside it.
     pub between: Vec<String>,
-    /// `spring`, `dashpot`, `kelvin`, `maxwell` or `restrainer`.
-    pub model: String,
-    /// Stiffness, N/m (spring, kelvin, maxwell, restrainer).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub stiffness: Option<f64>,
-    /// Damping coefficient, N s/m (dashpot, kelvin, maxwell).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub damping_coefficient: Option<f64>,
-    /// Slack of a restrainer, m (default 0).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub slack: Option<f64>,
     /// Floor pairs (to a wall: `[floor, floor]`), from 1 (default: floors at the same height; floor 1 to a
     /// wall).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub floors: Option<Vec<Vec<usize>>>,
+    /// `model = "..."` and its keys (SI units): `spring` (stiffness), `dashpot` (damping_coefficient),
+    /// `kelvin` and `maxwell` (both), `restrainer` (stiffness, slack).
+    #[serde(flatten)]
+    pub law: DeviceLaw,
 }
 
 fn one() -> f64 {

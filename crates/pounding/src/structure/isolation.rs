@@ -14,9 +14,6 @@ use crate::element::StoreyLaw;
 use crate::error::check;
 use crate::Error;
 
-/// Standard gravity, m/s^2 (the weight a friction pendulum carries).
-pub const G: f64 = 9.80665;
-
 /// The force–displacement law of an isolator.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]

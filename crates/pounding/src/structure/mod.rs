@@ -285,7 +285,7 @@ impl ShearBuilding {
         isolator.check()?;
         same_lengths(&masses, &stiffnesses, &heights)?;
         check("mass", base_mass, base_mass > 0.0, "floor masses > 0 (kg)")?;
-        let weight = isolation::G * (base_mass + masses.iter().sum::<f64>());
+        let weight = crate::units::STANDARD_GRAVITY * (base_mass + masses.iter().sum::<f64>());
         let (k0, law) = isolator.model.storey(weight)?;
         let above = (masses.clone(), stiffnesses.clone());
         let all = |first: f64, rest: Vec<f64>| std::iter::once(first).chain(rest).collect();

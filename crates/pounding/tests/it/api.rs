@@ -1,7 +1,7 @@
 //! The named forms of the library's entry points: `ShearBuilding::builder` and `Scenario::with_contact`
 //! build what their positional forms build, and their errors name the parameter.
 
-use pounding::analysis::{Building, Bumper, LinkSpec, Scenario};
+use pounding::analysis::{Building, Bumper, Level, LinkSpec, Scenario, SiteKind};
 use pounding::contact::{ContactModel, Model};
 use pounding::ground_motion::Record;
 use pounding::structure::{Isolator, IsolatorModel, ShearBuilding};
@@ -128,14 +128,19 @@ fn with_contact_is_with_link_with_names() {
         .unwrap()
         .with_link_seat("a", "b", 0.3)
         .unwrap();
-    let (l, p) = (&named.links()[0], &positional.links()[0]);
+    let (l, p) = (&named.sites()[0], &positional.sites()[0]);
+    let level = Level {
+        left: Some(1),
+        right: Some(1),
+    };
+    let kind = SiteKind::Between { left: 0, right: 1 };
     assert_eq!(
-        (l.left, l.right, l.gap, &l.floors, l.seat),
-        (0, 1, 0.01, &vec![(1, 1)], Some(0.3))
+        (l.kind, l.gap, &l.levels, l.seat, l.name.as_str()),
+        (kind, 0.01, &vec![level], Some(0.3), "a|b")
     );
     assert_eq!(
-        (p.left, p.right, p.gap, &p.floors, p.seat),
-        (0, 1, 0.01, &vec![(1, 1)], Some(0.3))
+        (p.kind, p.gap, &p.levels, p.seat, p.name.as_str()),
+        (kind, 0.01, &vec![level], Some(0.3), "a|b")
     );
     assert!(l.bumper.is_some() && p.bumper.is_some());
     // The same scenario: the same run, impact for impact.

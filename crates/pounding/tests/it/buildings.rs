@@ -244,7 +244,7 @@ fn isolated_impact_delivers_the_single_impact_e() {
             imp.dissipated_energy
         );
         if spec.tension() == Tension::Clamp {
-            assert!(r.histories.force[0][0].iter().all(|f| *f >= 0.0));
+            assert!(r.histories.site_force[0][0].iter().all(|f| *f >= 0.0));
         }
     }
 }

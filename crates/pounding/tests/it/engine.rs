@@ -2,18 +2,18 @@
 //! wall) delivers the single-impact restitution with the floor's own mass.
 
 use pounding::contact::{ContactModel, Model};
-use pounding::element::{Contact, Element, End, Event};
+use pounding::element::{Contact, Element, End, Notice};
 use pounding::engine::{self, Dof, EventInfo, Ground, Observer, Segment, Settings, System};
 use pounding::impact::exact;
 
-/// Velocities of the floor at touch and at the end of the impact, m/s.
+/// What each event said, and the velocity of the floor there, m/s.
 #[derive(Default)]
-struct Velocities(Vec<(Event, f64)>);
+struct Velocities(Vec<(Option<Notice>, f64)>);
 
 impl Observer for Velocities {
     fn segment(&mut self, _seg: &Segment<'_, '_>) {}
     fn event(&mut self, ev: &EventInfo<'_, '_>) {
-        self.0.push((ev.event, ev.y[ev.system.layout().v(0)]));
+        self.0.push((ev.notice, ev.y[ev.system.layout().v(0)]));
     }
 }
 
@@ -39,7 +39,7 @@ fn a_floor_against_a_rigid_wall_delivers_the_single_impact_e() {
             };
             let mut sys = System::new(
                 &[Dof { mass: m, a0: 0.0 }],
-                vec![Element::contact(a, b, contact)],
+                vec![Element::new(a, b, contact)],
                 Ground::Constant(0.0),
             );
             let l = sys.layout().clone();
@@ -58,11 +58,16 @@ fn a_floor_against_a_rigid_wall_delivers_the_single_impact_e() {
             };
             let mut obs = Velocities::default();
             engine::run(&mut sys, (0.0, &y0), &settings, &mut obs).unwrap();
-            let touch = obs.0.iter().find(|e| e.0 == Event::Touch).unwrap().1;
+            let touch = obs
+                .0
+                .iter()
+                .find(|e| matches!(e.0, Some(Notice::ImpactStarted { .. })))
+                .unwrap()
+                .1;
             let end = obs
                 .0
                 .iter()
-                .find(|e| matches!(e.0, Event::Separation | Event::ZeroForce))
+                .find(|e| matches!(e.0, Some(Notice::ImpactEnded | Notice::ImpactReleased)))
                 .unwrap()
                 .1;
             let law = spec.prepare().unwrap().law(m, v0.abs()).unwrap().0;

@@ -62,8 +62,11 @@ fn jankowski_reference_values_by_integration() {
     let e_pre = [0.1, 0.35, 0.5, 0.65, 0.9];
     let expect = [0.093324, 0.342286, 0.494588, 0.647029, 0.899723];
     for (e, x) in e_pre.iter().zip(expect) {
-        let got =
-            calibrate::jankowski_e_post(pounding::contact::damping::xi_jankowski(*e), 1.5).unwrap();
+        let got = pounding::calibration::jankowski_e_post(
+            pounding::contact::damping::xi_jankowski(*e),
+            1.5,
+        )
+        .unwrap();
         assert!((got - x).abs() < 1e-6, "e={e}: {got} vs {x}");
     }
 }

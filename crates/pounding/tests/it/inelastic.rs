@@ -5,7 +5,7 @@
 use crate::buildings::building;
 use pounding::analysis::Scenario;
 use pounding::contact::{ContactModel, Model};
-use pounding::element::{Element, End, Storey, StoreyLaw};
+use pounding::element::{Element, End, StoreyLaw};
 use pounding::engine::{self, Dof, Ground, Observer, Segment, Settings, System};
 use pounding::ground_motion::Record;
 
@@ -42,7 +42,7 @@ fn oscillator(law: StoreyLaw, record: &Record) -> Vec<(f64, f64, f64, Vec<f64>)>
     let c = 2.0 * 0.02 * (k * m).sqrt();
     let mut sys = System::new(
         &[Dof { mass: m, a0: 0.0 }],
-        vec![Element::storey(0, End::Ground, Storey::new(k, law, c))],
+        vec![Element::new(End::Dof(0), End::Ground, law.law(k)).with_dashpot(c)],
         Ground::Record(record),
     );
     let l = sys.layout().clone();

@@ -4,10 +4,11 @@
 //! superstructure on a fixed base; every element keeps the energy balance.
 
 use super::buildings::{building, pulse};
-use pounding::analysis::{
-    Building, Bumper, DeviceSpec, Layer, Results, Scenario, Side, Site, WallSpec,
-};
+use pounding::analysis::{Building, Bumper, DeviceSpec, Layer, Results, Scenario, Side, WallSpec};
 use pounding::contact::{ContactModel, Model, Tension};
+use pounding::element::device::{
+    DashpotParams, KelvinParams, MaxwellParams, RestrainerParams, SpringParams,
+};
 use pounding::element::DeviceLaw;
 use pounding::ground_motion::Record;
 use pounding::impact::{simulate, ImpactOptions, ImpactSetup};
@@ -60,9 +61,9 @@ fn a_block_striking_a_rigid_wall_delivers_the_single_impact_e_with_its_own_mass(
         ] {
             let spec = ContactModel::new(model, k, 0.65).unwrap();
             let (r, eps) = block_against(wall("block", side, 0.05, &spec));
-            assert_eq!(r.walls[0].impacts, r.impacts.len());
+            assert_eq!(r.sites[0].impacts, r.impacts.len());
             let imp = &r.impacts[0];
-            assert_eq!(imp.site, Site::Wall { wall: 0, floor: 1 });
+            assert_eq!((imp.site, imp.level), (0, 0));
             assert_eq!(imp.layer, Layer::Direct);
             // The effective mass of an impact on a rigid wall is the block's mass.
             let law = spec.prepare().unwrap().law(M, imp.v_i).unwrap().0;
@@ -93,10 +94,10 @@ fn a_block_striking_a_rigid_wall_delivers_the_single_impact_e_with_its_own_mass(
             );
             // The block rebounds at e v_i, away from the wall.
             let toward = if side == Side::Right { 1.0 } else { -1.0 };
-            assert!((r.walls[0].max_closing[0] - 0.05 - imp.max_penetration).abs() < 1e-9);
+            assert!((r.sites[0].max_closing[0] - 0.05 - imp.max_penetration).abs() < 1e-9);
             assert!(toward * r.buildings[0].residual_displacement[0] < 0.05);
             if spec.tension() == Tension::Clamp {
-                assert!(r.histories.wall_force[0][0].iter().all(|f| *f >= 0.0));
+                assert!(r.histories.site_force[0][0].iter().all(|f| *f >= 0.0));
             }
         }
     }
@@ -112,7 +113,7 @@ fn a_bumper_never_consumed_is_its_soft_law_alone() {
     with.bumper = Some(Bumper::new(t, 0.95, &soft).unwrap());
     let (rb, _) = block_against(with);
     let (rs, _) = block_against(wall("block", Side::Right, gap - t, &soft));
-    assert_eq!(rb.walls[0].consumed, 0);
+    assert_eq!(rb.sites[0].consumed, 0);
     assert_eq!(rb.impacts.len(), rs.impacts.len());
     for (a, b) in rb.impacts.iter().zip(&rs.impacts) {
         assert_eq!(a.layer, Layer::Bumper);
@@ -158,7 +159,7 @@ fn a_consumed_bumper_of_two_springs_stores_the_impact_energy_in_both() {
         .iter()
         .find(|i| i.layer == Layer::Consumed)
         .unwrap();
-    assert_eq!(r.walls[0].consumed, 1);
+    assert_eq!(r.sites[0].consumed, 1);
     let v = layer.v_i;
     let l = strain * t;
     // k1 d^2 + k2 (d - l)^2 = M v^2, the root beyond l.
@@ -174,9 +175,9 @@ fn a_consumed_bumper_of_two_springs_stores_the_impact_energy_in_both() {
     // The force on the wall at that instant: k1 d + k2 (d - l), the sum of both elements.
     let f = k1 * d + k2 * (d - l);
     assert!(
-        (r.walls[0].peak_force / f - 1.0).abs() < 1e-6,
+        (r.sites[0].peak_force / f - 1.0).abs() < 1e-6,
         "{} vs {f}",
-        r.walls[0].peak_force
+        r.sites[0].peak_force
     );
     assert!((layer.e_post.unwrap() - 1.0).abs() <= 2.0 * eps + 1e-8);
 }
@@ -198,7 +199,9 @@ fn restrained(law: DeviceLaw) -> Results {
         .unwrap()
         .with_device(device(law))
         .unwrap()
-        .with_device(device(DeviceLaw::Dashpot { damping: 4.0e6 }))
+        .with_device(device(DeviceLaw::Dashpot(DashpotParams {
+            damping_coefficient: 4.0e6,
+        })))
         .unwrap()
         .with_duration(18.0)
         .unwrap()
@@ -213,11 +216,11 @@ fn a_restrainer_never_slack_is_a_spring() {
     // The block moves right, away from the wall, without overshoot (damping ratio (c_s + 4e6) /
     // (2 sqrt((k + k_r) m)) = 2.6): a restrainer without slack is taut all along and pulls as a spring.
     let k_r = 2.0e6;
-    let r = restrained(DeviceLaw::Restrainer {
+    let r = restrained(DeviceLaw::Restrainer(RestrainerParams {
         stiffness: k_r,
         slack: 0.0,
-    });
-    let s = restrained(DeviceLaw::Spring { stiffness: k_r });
+    }));
+    let s = restrained(DeviceLaw::Spring(SpringParams { stiffness: k_r }));
     // Static answer: u = M a / (k + k_r) = 1e5 / 6e6.
     let u_static = 1.0e5 / 6.0e6;
     assert!(
@@ -250,10 +253,10 @@ fn a_restrainer_never_slack_is_a_spring() {
         );
     }
     // With slack beyond the motion the restrainer never pulls: the block on its storey alone.
-    let slack = restrained(DeviceLaw::Restrainer {
+    let slack = restrained(DeviceLaw::Restrainer(RestrainerParams {
         stiffness: k_r,
         slack: 0.1,
-    });
+    }));
     assert_eq!(slack.devices[0].peak_force[0], 0.0);
     assert!((slack.buildings[0].residual_displacement[0] / (1.0e5 / 4.0e6) - 1.0).abs() < 1e-6);
 }
@@ -326,20 +329,22 @@ fn every_element_keeps_the_energy_balance_at_the_default_tolerance() {
     let papi = ContactModel::new(Model::Papi, 1.0e9, 0.6).unwrap();
     let rubber = ContactModel::new(Model::Hertzdamp, 2.0e8, 0.5).unwrap();
     let devices = [
-        DeviceLaw::Spring { stiffness: 1.0e6 },
-        DeviceLaw::Dashpot { damping: 2.0e5 },
-        DeviceLaw::Kelvin {
+        DeviceLaw::Spring(SpringParams { stiffness: 1.0e6 }),
+        DeviceLaw::Dashpot(DashpotParams {
+            damping_coefficient: 2.0e5,
+        }),
+        DeviceLaw::Kelvin(KelvinParams {
             stiffness: 1.0e6,
-            damping: 1.0e5,
-        },
-        DeviceLaw::Maxwell {
+            damping_coefficient: 1.0e5,
+        }),
+        DeviceLaw::Maxwell(MaxwellParams {
             stiffness: 5.0e6,
-            damping: 5.0e5,
-        },
-        DeviceLaw::Restrainer {
+            damping_coefficient: 5.0e5,
+        }),
+        DeviceLaw::Restrainer(RestrainerParams {
             stiffness: 2.0e7,
             slack: 0.01,
-        },
+        }),
     ];
     let mut s = Scenario::new(
         vec![
@@ -412,13 +417,9 @@ fn every_element_keeps_the_energy_balance_at_the_default_tolerance() {
     );
     assert!(r.energy.end.hysteretic > 0.0 && r.energy.end.contact > 0.0);
     eprintln!(
-        "impacts {} (links {:?}, walls {:?}), balance {:e}, steps {}",
+        "impacts {} (sites {:?}), balance {:e}, steps {}",
         r.impacts.len(),
-        r.links
-            .iter()
-            .map(|l| (l.impacts, l.consumed))
-            .collect::<Vec<_>>(),
-        r.walls
+        r.sites
             .iter()
             .map(|l| (l.impacts, l.consumed))
             .collect::<Vec<_>>(),

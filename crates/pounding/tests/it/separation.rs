@@ -76,9 +76,9 @@ fn a_gap_just_above_the_required_one_never_closes_and_one_just_below_does() {
         .map(|l| l.required_gap)
         .fold(0.0, f64::max);
     let above = pair(3.7e7, required * 1.001).run().unwrap();
-    assert_eq!(above.links[0].impacts, 0);
+    assert_eq!(above.sites[0].impacts, 0);
     let below = pair(3.7e7, required * 0.999).run().unwrap();
-    assert!(below.links[0].impacts >= 1);
+    assert!(below.sites[0].impacts >= 1);
 }
 
 #[test]

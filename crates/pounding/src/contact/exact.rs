@@ -2,7 +2,7 @@
 //! restitution an ideal impact delivers, in closed form or by solving one scalar equation. All are
 //! independent of stiffness, mass and impact velocity (and, for Hunt–Crossley laws, of the exponent).
 
-use crate::contact::{ForceLaw, Tension};
+use super::{ForceLaw, Tension};
 use std::f64::consts::PI;
 
 /// `(chi - ln(1 + chi)) / chi^2`: the approach-phase energy integral of a Hunt–Crossley law, in units of

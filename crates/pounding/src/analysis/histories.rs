@@ -1,0 +1,114 @@
+//! Histories at the output interval, as an observer of the engine: the state is interpolated at every
+//! output time that a step passes.
+
+use super::model::{ContactRef, DeviceRef, Model};
+use super::peaks::total_force;
+use super::Histories;
+use crate::engine::{Observer, Segment};
+use crate::integrate::OdeSystem;
+
+/// Histories at the output interval.
+pub(super) struct HistoryRecorder {
+    pub hist: Histories,
+    times: Vec<f64>,
+    next: usize,
+    offsets: Vec<usize>,
+    first_storey: Vec<usize>,
+    contacts: Vec<ContactRef>,
+    devices: Vec<DeviceRef>,
+    ys: Vec<f64>,
+    rate: Vec<f64>,
+    ds: Vec<f64>,
+}
+
+impl HistoryRecorder {
+    /// Samples at `k dt` (the last one at `t_end`), `n_out` of them. `storeys` per building, levels per
+    /// site, pairs per device.
+    pub fn new(
+        m: &Model,
+        (storeys, sites, devices): (&[usize], &[usize], &[usize]),
+        n_out: usize,
+        dt: f64,
+        t_end: f64,
+    ) -> Self {
+        let dim = m.system.layout().dim();
+        let per = |counts: &[usize]| -> Vec<Vec<Vec<f64>>> {
+            counts
+                .iter()
+                .map(|&c| vec![Vec::with_capacity(n_out); c])
+                .collect()
+        };
+        Self {
+            hist: Histories {
+                t: Vec::with_capacity(n_out),
+                ground_acceleration: Vec::with_capacity(n_out),
+                displacement: per(storeys),
+                absolute_acceleration: per(storeys),
+                storey_shear: per(storeys),
+                site_force: per(sites),
+                device_force: per(devices),
+                energy: std::array::from_fn(|_| Vec::with_capacity(n_out)),
+                impact_loops: Vec::new(),
+            },
+            times: (0..n_out).map(|k| (k as f64 * dt).min(t_end)).collect(),
+            next: 0,
+            offsets: m.offsets.clone(),
+            first_storey: m.first_storey.clone(),
+            contacts: m.contacts.clone(),
+            devices: m.devices.clone(),
+            ys: vec![0.0; dim],
+            rate: vec![0.0; dim],
+            ds: vec![0.0; dim],
+        }
+    }
+}
+
+impl Observer for HistoryRecorder {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let sys = seg.system;
+        let l = sys.layout();
+        while let Some(&t) = self.times.get(self.next) {
+            if t > seg.t1 {
+                break;
+            }
+            seg.dense.eval(t.max(seg.t0), &mut self.ys);
+            sys.rhs(t, &self.ys, &mut self.rate);
+            let ag = sys.ground().at(t);
+            let h = &mut self.hist;
+            h.t.push(t);
+            h.ground_acceleration.push(ag);
+            for (b, (&o, &s0)) in self.offsets.iter().zip(&self.first_storey).enumerate() {
+                for (f, col) in h.displacement[b].iter_mut().enumerate() {
+                    col.push(self.ys[l.u(o + f)]);
+                }
+                for (f, col) in h.absolute_acceleration[b].iter_mut().enumerate() {
+                    col.push(self.rate[l.v(o + f)] + ag);
+                }
+                for (j, col) in h.storey_shear[b].iter_mut().enumerate() {
+                    col.push(sys.element_force(s0 + j, &self.ys));
+                }
+            }
+            for col in h.site_force.iter_mut().flatten() {
+                col.push(0.0);
+            }
+            // A bumper's layer and the hard law behind it add up on their level.
+            for c in &self.contacts {
+                let f = sys.element_force(c.element, &self.ys);
+                *h.site_force[c.site][c.level].last_mut().expect("a sample") += f;
+            }
+            let mut prev = usize::MAX;
+            let mut j = 0;
+            for d in &self.devices {
+                j = if d.device == prev { j + 1 } else { 0 };
+                prev = d.device;
+                let f = total_force(sys, d.element, &self.ys, &mut self.ds);
+                h.device_force[d.device][j].push(f);
+            }
+            let e = sys.energies(&self.ys);
+            for (col, x) in h.energy.iter_mut().zip(e.terms()) {
+                col.push(x);
+            }
+            self.next += 1;
+        }
+    }
+}

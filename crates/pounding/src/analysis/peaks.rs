@@ -1,0 +1,163 @@
+//! Peaks a run keeps, as observers of the engine: of every floor and storey, of every device, and the worst
+//! energy imbalance.
+
+use super::model::{DeviceRef, Model};
+use crate::engine::{EventInfo, Observer, Segment, System};
+use crate::integrate::{hermite_peak, Hermite};
+
+/// A largest value and its time, s.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Peak {
+    pub value: f64,
+    pub time: f64,
+}
+
+impl Peak {
+    fn offer(&mut self, value: f64, time: f64) {
+        if value > self.value {
+            *self = Peak { value, time };
+        }
+    }
+}
+
+/// Room for the states of the element with the most.
+fn room(m: &Model) -> Vec<f64> {
+    let l = m.system.layout();
+    let most = (0..m.system.elements().len())
+        .map(|e| l.block(e).len())
+        .max()
+        .unwrap_or(0);
+    vec![0.0; most]
+}
+
+/// Peaks of every floor (degree of freedom) and every storey (indexed by the degree of freedom of its top
+/// floor).
+pub(super) struct Peaks {
+    /// Element index of the storey under each floor.
+    storey: Vec<usize>,
+    pub displacement: Vec<Peak>,
+    pub acceleration: Vec<Peak>,
+    pub drift: Vec<f64>,
+    pub shear: Vec<f64>,
+    /// A storey's states between nodes.
+    states: Vec<f64>,
+}
+
+impl Peaks {
+    pub fn new(m: &Model) -> Self {
+        let n = m.system.layout().dofs();
+        Self {
+            storey: m.storey_under.clone(),
+            displacement: vec![Peak::default(); n],
+            acceleration: vec![Peak::default(); n],
+            drift: vec![0.0; n],
+            shear: vec![0.0; n],
+            states: room(m),
+        }
+    }
+
+    fn accelerations(&mut self, sys: &System, t: f64, rate: &[f64]) {
+        let ag = sys.ground().at(t);
+        let l = sys.layout();
+        for (i, p) in self.acceleration.iter_mut().enumerate() {
+            p.offer((rate[l.v(i)] + ag).abs(), t);
+        }
+    }
+}
+
+impl Observer for Peaks {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let sys = seg.system;
+        let l = sys.layout();
+        let (y0, y1) = (seg.y0, seg.y1);
+        let h = seg.t1 - seg.t0;
+        for i in 0..l.dofs() {
+            let (s, u) = hermite_peak(y0[l.u(i)], y1[l.u(i)], y0[l.v(i)], y1[l.v(i)], h);
+            self.displacement[i].offer(u, seg.t0 + s * h);
+            // The storey under floor i: its drift, and its force at the drift's extrema and at the end.
+            let e = self.storey[i];
+            let el = &sys.elements()[e];
+            let ((xa, va), (xb, vb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
+            let drift = Hermite::new(xa, xb, va, vb, h);
+            self.drift[i] = self.drift[i].max(hermite_peak(xa, xb, va, vb, h).1);
+            let block = l.block(e);
+            let mut shear = el.force(xb, vb, &y1[block.clone()]).abs();
+            for s in drift.extrema() {
+                if s.is_nan() {
+                    continue;
+                }
+                let t = seg.t0 + s * h;
+                let states = &mut self.states[..block.len()];
+                for (k, z) in block.clone().zip(states.iter_mut()) {
+                    *z = seg.dense.component(t, k);
+                }
+                shear = shear.max(el.force(drift.at(s), 0.0, states).abs());
+            }
+            self.shear[i] = self.shear[i].max(shear);
+        }
+        self.accelerations(sys, seg.t1, seg.rate1);
+    }
+
+    fn event(&mut self, ev: &EventInfo<'_, '_>) {
+        // The acceleration just after the event (a contact force may jump at touch).
+        self.accelerations(ev.system, ev.t, ev.rate);
+    }
+}
+
+/// The force of element `e` in state `y`, elastic and viscous, N; `ds` is room for the rates of its states.
+pub(super) fn total_force(sys: &System, e: usize, y: &[f64], ds: &mut [f64]) -> f64 {
+    let (x, v) = sys.deformation(e, y);
+    let r = sys.layout().block(e);
+    let (f, fv) = sys.elements()[e].evaluate(x, v, &y[r.clone()], &mut ds[..r.len()]);
+    f + fv
+}
+
+/// Peaks of every device element.
+pub(super) struct DevicePeaks {
+    devices: Vec<DeviceRef>,
+    pub force: Vec<f64>,
+    pub closing: Vec<f64>,
+    pub opening: Vec<f64>,
+    /// Room for the rates of a device's states.
+    rates: Vec<f64>,
+}
+
+impl DevicePeaks {
+    pub fn new(m: &Model) -> Self {
+        let n = m.devices.len();
+        Self {
+            devices: m.devices.clone(),
+            force: vec![0.0; n],
+            closing: vec![0.0; n],
+            opening: vec![0.0; n],
+            rates: room(m),
+        }
+    }
+}
+
+impl Observer for DevicePeaks {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        for (k, d) in self.devices.iter().enumerate() {
+            let (x, _) = seg.system.deformation(d.element, seg.y1);
+            let f = total_force(seg.system, d.element, seg.y1, &mut self.rates);
+            self.force[k] = self.force[k].max(f.abs());
+            self.closing[k] = self.closing[k].max(x);
+            self.opening[k] = self.opening[k].max(-x);
+        }
+    }
+}
+
+/// The worst energy imbalance over the run, at every node.
+#[derive(Default)]
+pub(super) struct Balance {
+    pub worst: f64,
+    pub scale: f64,
+}
+
+impl Observer for Balance {
+    fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let e = seg.system.energies(seg.y1);
+        self.worst = self.worst.max(e.imbalance().abs());
+        self.scale = self.scale.max(e.scale());
+    }
+}

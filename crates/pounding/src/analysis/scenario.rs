@@ -1,0 +1,228 @@
+//! A pounding analysis: buildings in a row, the contact sites between them and beside them, devices, the
+//! ground motion and the settings ([`Scenario`]).
+
+use super::{ContactSite, Device};
+use crate::error::check;
+use crate::ground_motion::Record;
+use crate::structure::ShearBuilding;
+use crate::Error;
+
+/// A building of the row, with its name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Building {
+    /// Name, unique in the scenario.
+    pub name: String,
+    /// The structure.
+    pub structure: ShearBuilding,
+}
+
+/// A pounding analysis: buildings, contact sites, devices, ground motion and settings.
+///
+/// Buildings are listed left to right; contacts between neighbours ([`Scenario::with_contact`]) and walls
+/// beside them ([`Scenario::with_wall`]) are its contact sites ([`Scenario::sites`]), devices join floors for
+/// good ([`Scenario::with_device`]); [`Scenario::run`] integrates the motion and returns the
+/// [`super::Results`]. A comparison run without contact ([`Scenario::without_contact`]) gives the gap each
+/// floor pair needed.
+///
+/// ```
+/// use pounding::analysis::{Building, LinkSpec, Scenario};
+/// use pounding::contact::{ContactModel, Model};
+/// use pounding::ground_motion::Record;
+/// use pounding::structure::ShearBuilding;
+///
+/// // Two one-storey buildings, T = 0.5 s and 1.0 s (k = 4 pi^2 m / T^2), 10 mm apart.
+/// let storey = |k: f64| ShearBuilding::builder().masses([5.0e5]).stiffnesses([k]).heights([3.0]).build();
+/// let buildings = vec![
+///     Building { name: "stiff".into(), structure: storey(7.8957e7)? },
+///     Building { name: "flexible".into(), structure: storey(1.9739e7)? },
+/// ];
+/// let scenario = Scenario::new(buildings, Record::el_centro_1940())?
+///     .with_duration(4.0)? // s: the strong motion's first seconds
+///     .with_contact(LinkSpec {
+///         between: ["stiff".into(), "flexible".into()],
+///         gap: 0.01, // m
+///         floors: None, // the floors at the same height: (1, 1)
+///         contact: ContactModel::new(Model::Papi, 2.0e9, 0.65)?, // k in N/m, e
+///         bumper: None,
+///         seat: None,
+///     })?;
+/// let results = scenario.run()?;
+/// let site = &results.sites[0];
+/// assert!(site.impacts > 0 && site.peak_force > 0.0); // N
+/// // Without contact, the floors close by more than the gap: that is why they pound.
+/// let free = scenario.without_contact().run()?;
+/// assert!(free.sites[0].max_closing[0] > 0.01); // m
+/// # Ok::<(), pounding::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Scenario {
+    pub(super) buildings: Vec<Building>,
+    /// Contacts between neighbours (left to right), then walls (in the order added).
+    pub(super) sites: Vec<ContactSite>,
+    pub(super) devices: Vec<Device>,
+    pub(super) record: Record,
+    pub(super) duration: f64,
+    pub(super) output_dt: f64,
+    pub(super) tolerance: f64,
+    pub(super) min_impact_velocity: f64,
+}
+
+/// Default floor of the impact velocity used to build a contact law, m/s (see
+/// [`Scenario::with_min_impact_velocity`]).
+pub const DEFAULT_MIN_IMPACT_VELOCITY: f64 = 1e-3;
+
+/// Default relative tolerance of the integration (see `docs/verification.md` for the convergence study).
+pub const DEFAULT_TOLERANCE: f64 = 1e-7;
+
+/// Default interval of the output histories, s.
+pub const DEFAULT_OUTPUT_DT: f64 = 0.005;
+
+impl Scenario {
+    /// A scenario with the buildings (left to right; at least one, unique names) under `record`, for the
+    /// record's duration, output every [`DEFAULT_OUTPUT_DT`], at [`DEFAULT_TOLERANCE`].
+    pub fn new(buildings: Vec<Building>, record: Record) -> Result<Self, Error> {
+        let floors: Vec<usize> = buildings.iter().map(|b| b.structure.storeys()).collect();
+        crate::limits::check_row(&floors)?;
+        for (i, b) in buildings.iter().enumerate() {
+            if buildings[..i].iter().any(|o| o.name == b.name) {
+                return Err(Error::Choice {
+                    name: "name",
+                    value: format!("{:?}", b.name),
+                    allowed: "a name used by one building only".into(),
+                });
+            }
+        }
+        let duration = record.duration();
+        Ok(Self {
+            buildings,
+            sites: Vec::new(),
+            devices: Vec::new(),
+            record,
+            duration,
+            output_dt: DEFAULT_OUTPUT_DT,
+            tolerance: DEFAULT_TOLERANCE,
+            min_impact_velocity: DEFAULT_MIN_IMPACT_VELOCITY,
+        })
+    }
+
+    /// Index of the building called `name`.
+    pub fn building_index(&self, name: &str) -> Result<usize, Error> {
+        self.buildings
+            .iter()
+            .position(|b| b.name == name)
+            .ok_or_else(|| Error::Choice {
+                name: "between",
+                value: format!("{name:?}"),
+                allowed: self.names(),
+            })
+    }
+
+    /// "one of the buildings: ..." for messages.
+    pub(super) fn names(&self) -> String {
+        format!(
+            "one of the buildings: {}",
+            self.buildings
+                .iter()
+                .map(|b| format!("{:?}", b.name))
+                .collect::<Vec<_>>()
+                .join(", ")
+        )
+    }
+
+    /// The floor pairs of buildings `left` and `left + 1` at the same height (within 1 mm), from 1.
+    pub fn aligned_floors(&self, left: usize) -> Vec<(usize, usize)> {
+        let zl = self.buildings[left].structure.elevations();
+        let zr = self.buildings[left + 1].structure.elevations();
+        zl.iter()
+            .enumerate()
+            .filter_map(|(i, z)| {
+                zr.iter()
+                    .position(|w| (w - z).abs() <= 1e-3)
+                    .map(|j| (i + 1, j + 1))
+            })
+            .collect()
+    }
+
+    /// Sets the analysed duration, s (> 0; may exceed the record, which is followed by free vibration).
+    pub fn with_duration(mut self, duration: f64) -> Result<Self, Error> {
+        self.duration = check("duration", duration, duration > 0.0, "duration > 0 (s)")?;
+        Ok(self)
+    }
+
+    /// Sets the interval of the output histories, s (> 0).
+    pub fn with_output_dt(mut self, dt: f64) -> Result<Self, Error> {
+        self.output_dt = check("output_dt", dt, dt > 0.0, "output_dt > 0 (s)")?;
+        Ok(self)
+    }
+
+    /// Sets the relative tolerance of the integration, in `[1e-12, 1e-3]`.
+    pub fn with_tolerance(mut self, rtol: f64) -> Result<Self, Error> {
+        self.tolerance = check(
+            "tolerance",
+            rtol,
+            (1e-12..=1e-3).contains(&rtol),
+            "1e-12 <= tolerance <= 1e-3",
+        )?;
+        Ok(self)
+    }
+
+    /// Sets the smallest impact velocity used to build a contact law, m/s (> 0). Slower impacts (a touch at
+    /// a turning point of the relative motion, or the last bounces before floors come to rest against each
+    /// other) build their law with this velocity. Hunt–Crossley-type laws divide their damping by `v_i`, so
+    /// without a floor a touch at `v_i -> 0` makes the damping unbounded and the equations infinitely
+    /// stiff. Impacts below 1 mm/s carry a millionth of the energy of a 1 m/s impact. The reported `v_i`
+    /// and `e_post` are always the measured ones.
+    pub fn with_min_impact_velocity(mut self, v: f64) -> Result<Self, Error> {
+        self.min_impact_velocity = check(
+            "min_impact_velocity",
+            v,
+            v > 0.0,
+            "min_impact_velocity > 0 (m/s)",
+        )?;
+        Ok(self)
+    }
+
+    /// Smallest impact velocity used to build a contact law, m/s.
+    pub fn min_impact_velocity(&self) -> f64 {
+        self.min_impact_velocity
+    }
+    /// The buildings, left to right.
+    pub fn buildings(&self) -> &[Building] {
+        &self.buildings
+    }
+    /// The contact sites: contacts between neighbours, left to right, then walls, in the order added. The
+    /// results of a run list theirs in the same order ([`super::Results::sites`]).
+    pub fn sites(&self) -> &[ContactSite] {
+        &self.sites
+    }
+    /// The devices.
+    pub fn devices(&self) -> &[Device] {
+        &self.devices
+    }
+    /// The ground motion.
+    pub fn record(&self) -> &Record {
+        &self.record
+    }
+    /// Analysed duration, s.
+    pub fn duration(&self) -> f64 {
+        self.duration
+    }
+    /// Output interval, s.
+    pub fn output_dt(&self) -> f64 {
+        self.output_dt
+    }
+    /// Relative tolerance of the integration.
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+    /// Number of output samples in the histories.
+    /// (Saturates at `usize::MAX` instead of wrapping: compare with [`crate::limits::MAX_OUTPUT_SAMPLES`].)
+    pub fn output_samples(&self) -> usize {
+        let n = (self.duration / self.output_dt * (1.0 + 1e-12)).floor() + 1.0;
+        if n < 1e15 {
+            n as usize
+        } else {
+            usize::MAX
+        }
+    }
+}

@@ -1,0 +1,130 @@
+//! An element: a law between two ends, each a degree of freedom or the ground.
+
+use super::{ElementEnergy, ElementLaw, Event, Law, Transition, Watch};
+use crate::Error;
+
+/// One end of an element: a degree of freedom (its index in the structure) or the ground.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End {
+    /// The (moving) ground: displacement 0 relative to itself.
+    Ground,
+    /// Degree of freedom `i`.
+    Dof(usize),
+}
+
+impl End {
+    /// The degree of freedom, if the end is not the ground.
+    pub fn dof(self) -> Option<usize> {
+        match self {
+            End::Ground => None,
+            End::Dof(i) => Some(i),
+        }
+    }
+}
+
+/// An element: two ends, a law, and a linear dashpot in parallel with it. Its deformation is
+/// `x = u_a - u_b` (m); its force resists a growing `x`: it acts as `-f` on end `a` and `+f` on end `b`.
+#[derive(Clone, Debug)]
+pub struct Element {
+    /// End `a` (deformation `x = u_a - u_b`).
+    pub a: End,
+    /// End `b`.
+    pub b: End,
+    /// The element's law, with its phase.
+    pub law: Law,
+    /// Coefficient of a linear dashpot in parallel with the law, N s/m: a storey's Rayleigh damping on its
+    /// initial stiffness (`a1 k`), an isolator's own damping; 0 for most elements.
+    pub c: f64,
+}
+
+impl Element {
+    /// An element of `law` between `a` and `b`, without a parallel dashpot.
+    pub fn new(a: End, b: End, law: impl Into<Law>) -> Self {
+        Self {
+            a,
+            b,
+            law: law.into(),
+            c: 0.0,
+        }
+    }
+
+    /// The same element with a linear dashpot of `c` (N s/m) in parallel.
+    pub fn with_dashpot(mut self, c: f64) -> Self {
+        self.c = c;
+        self
+    }
+
+    /// Number of extra ODE states the element carries.
+    pub fn states(&self) -> usize {
+        self.law.states()
+    }
+
+    /// The element's forces at deformation `x` (m), rate `v` (m/s) and states `s`: `(f, f_viscous)`, N, the
+    /// force of its law and the viscous force of the law and the parallel dashpot; the rates of its states
+    /// go to `ds`.
+    #[inline]
+    pub fn evaluate(&self, x: f64, v: f64, s: &[f64], ds: &mut [f64]) -> (f64, f64) {
+        let (f, fv) = self.law.evaluate(x, v, s, ds);
+        (f, fv + self.c * v)
+    }
+
+    /// The force of the element's law as reported (without viscous forces), N.
+    #[inline]
+    pub fn force(&self, x: f64, v: f64, s: &[f64]) -> f64 {
+        self.law.force(x, v, s)
+    }
+
+    /// Energy held or dissipated by the element's law, J (the viscous forces' is integrated by the engine).
+    pub fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
+        self.law.energy(x, s)
+    }
+
+    /// The events watched in the current phase.
+    pub fn watched(&self) -> &'static [Watch] {
+        self.law.watched()
+    }
+
+    /// Event function of `ev`: positive before the event, <= 0 at and after it.
+    #[inline]
+    pub fn event_value(&self, ev: Event, x: f64, v: f64, s: &[f64]) -> f64 {
+        self.law.event_value(ev, x, v, s)
+    }
+
+    /// Applies `ev` at deformation `x`, rate `v` and states `s`; `h` is the integrator's next step, s.
+    pub fn apply(
+        &mut self,
+        ev: Event,
+        x: f64,
+        v: f64,
+        s: &[f64],
+        h: f64,
+    ) -> Result<Transition, Error> {
+        self.law.apply(ev, x, v, s, h)
+    }
+
+    /// Sets the resolution of the deformation rate, m/s ([`super::RateGate`]).
+    pub fn set_rate_resolution(&mut self, v_res: f64) {
+        if let Some(g) = self.law.gate_mut() {
+            g.set_resolution(v_res);
+        }
+    }
+
+    /// Arms the next change of direction once its rate is clear of 0, at deformation `x` (m), rate `v`
+    /// (m/s) and states `s` (called after every step while disarmed); returns whether it is still disarmed.
+    #[inline]
+    pub fn rearm(&mut self, x: f64, v: f64, s: &[f64]) -> bool {
+        let g = self.law.rate_event(x, v, s);
+        match self.law.gate_mut() {
+            Some(gate) => {
+                gate.rearm(g);
+                !gate.armed()
+            }
+            None => false,
+        }
+    }
+
+    /// Whether the next change of direction is located at a rate of exactly 0 ([`super::RateGate`]).
+    pub fn armed(&self) -> bool {
+        self.law.gate().is_none_or(|g| g.armed())
+    }
+}

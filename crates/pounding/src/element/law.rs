@@ -1,0 +1,208 @@
+//! The one interface of an element's law ([`ElementLaw`]), and the words the engine and the recorders share
+//! with it: events ([`Event`], [`Watch`]), what happens when one fires ([`Transition`], [`Notice`]), energies
+//! ([`ElementEnergy`]) and the scales of its states ([`Scales`]).
+
+use super::RateGate;
+use crate::Error;
+
+/// An event a law watches, numbered by the law itself: what it means is the law's business. The driver
+/// locates the time at which the law's event function reaches 0 from above and hands the event back to
+/// the law ([`ElementLaw::apply`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Event(pub u8);
+
+/// A watched event and how the driver treats its event function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Watch {
+    /// The event.
+    pub event: Event,
+    /// The event leaves the phase as it is (a kink of the law): once past, its function stays <= 0, so it
+    /// is watched only from a positive start.
+    pub keeps_phase: bool,
+    /// The event function is a distance that closes and may open again within one step (a touch): where
+    /// the deformation rate turns from closing to opening inside a step, the driver searches the step for
+    /// the function's smallest value rather than trusting its ends.
+    pub may_graze: bool,
+}
+
+impl Watch {
+    /// An event that changes the phase where its function crosses 0.
+    pub const fn crossing(event: Event) -> Self {
+        Self {
+            event,
+            keeps_phase: false,
+            may_graze: false,
+        }
+    }
+
+    /// A kink of the law: the phase stays, the integration restarts there.
+    pub const fn kink(event: Event) -> Self {
+        Self {
+            event,
+            keeps_phase: true,
+            may_graze: false,
+        }
+    }
+
+    /// A touch: a closing distance that may come and go within one step.
+    pub const fn touch(event: Event) -> Self {
+        Self {
+            event,
+            keeps_phase: false,
+            may_graze: true,
+        }
+    }
+}
+
+/// What a law says happened when one of its events fired: recorders listen to notices instead of
+/// re-deriving them from the sequence of events.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Notice {
+    /// An impact began: a touch while closing, or closing again from rest. `resting`: it closed slower
+    /// than the smallest impact velocity a contact builds its law with.
+    ImpactStarted {
+        /// Closing slower than the contact's smallest impact velocity.
+        resting: bool,
+    },
+    /// The impact reached its largest penetration (the turning point).
+    ImpactTurned,
+    /// A clamped force reached 0 with the ends still overlapping: the impact is over, unless the ends
+    /// close again before they part ([`Notice::ImpactResumed`]).
+    ImpactReleased,
+    /// A released impact goes on: the ends closed again before they parted.
+    ImpactResumed,
+    /// The ends parted: the impact is over.
+    ImpactEnded,
+    /// A released or resting contact's penetration returned to 0: nothing is pending.
+    ContactCleared,
+    /// A hysteretic law left its elastic range.
+    Yielded,
+    /// A hysteretic law's deformation rate changed sign (a reversal of the loading direction).
+    Reversed,
+    /// A tension-only law became taut.
+    Taut,
+    /// A tension-only law became slack.
+    Slack,
+    /// A damper's velocity changed sign.
+    DamperReversed,
+}
+
+/// What the engine should do after an element changed phase, and what it says happened.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Transition {
+    /// Largest next trial step, s (an impact starts with a step well inside its time scale).
+    pub h_max: Option<f64>,
+    /// Stop the run here (a single impact ends with its contact).
+    pub stop: bool,
+    /// What happened, for the recorders.
+    pub notice: Option<Notice>,
+}
+
+impl Transition {
+    /// A transition that only says `notice`.
+    pub fn notice(notice: Notice) -> Self {
+        Self {
+            notice: Some(notice),
+            ..Self::default()
+        }
+    }
+}
+
+/// What an element holds at one instant, J, split by where the energy went.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ElementEnergy {
+    /// Recoverable strain energy, J.
+    pub strain: f64,
+    /// Energy dissipated by hysteresis, J.
+    pub hysteretic: f64,
+    /// Work of a contact force on the relative motion, J.
+    pub contact: f64,
+    /// Energy dissipated by a viscous part that is an ODE state (a Maxwell unit's dashpot), J.
+    pub damping: f64,
+}
+
+/// Scales of the motion of an element's ends, from which a law sets the absolute tolerances of its own
+/// states for the integrator's error control: the relative tolerance times the state's scale.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Scales {
+    /// The relative tolerance of the integration (dimensionless).
+    pub rtol: f64,
+    /// Displacement the ends can reach, m.
+    pub displacement: f64,
+    /// Velocity that goes with it, m/s.
+    pub velocity: f64,
+    /// Energy the structure can take in, J.
+    pub energy: f64,
+}
+
+/// The law of an element: its force as a function of the deformation `x = u_a - u_b` (m), its rate
+/// `x'` (m/s) and its own ODE states; the events it watches and what they change; the energy it holds and
+/// dissipates. The law and its phase are one value: a law is always in a phase of its own.
+///
+/// Every law of the library is a variant of [`crate::element::Law`], the one list (`element/registry.rs`);
+/// the engine and the recorders see a law only through this interface.
+pub trait ElementLaw {
+    /// The law's name (`bilinear`, `contact`, `restrainer`, ...).
+    fn name(&self) -> &'static str;
+
+    /// Number of extra ODE states the law carries (Bouc–Wen's `z`, a contact's work).
+    fn states(&self) -> usize {
+        0
+    }
+
+    /// The absolute tolerance of each of its states, in its unit: the relative tolerance times the state's
+    /// scale, from the scales of its ends' motion; written to `out` (one per state).
+    fn state_tolerances(&self, _scales: &Scales, _out: &mut [f64]) {}
+
+    /// The force of the law and the viscous force it adds (N, resisting a growing `x`) at deformation `x`
+    /// (m), rate `v` (m/s) and states `s`; the rates of its states go to `ds`. The viscous part is counted
+    /// as viscous damping in the energy balance.
+    fn evaluate(&self, x: f64, v: f64, s: &[f64], ds: &mut [f64]) -> (f64, f64);
+
+    /// The force of the law as reported (a storey's shear, a contact's force, never tensile for a clamped
+    /// contact), N, without a viscous part.
+    fn force(&self, x: f64, v: f64, s: &[f64]) -> f64;
+
+    /// The energy the law holds and has dissipated at deformation `x` (m) with states `s`, J.
+    fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy;
+
+    /// The events watched in the current phase.
+    fn watched(&self) -> &'static [Watch] {
+        &[]
+    }
+
+    /// The event function of `ev` at deformation `x` (m), rate `v` (m/s) and states `s`: positive before
+    /// the event, <= 0 at and after it.
+    fn event_value(&self, _ev: Event, _x: f64, _v: f64, _s: &[f64]) -> f64 {
+        1.0
+    }
+
+    /// Applies `ev`, located at deformation `x`, rate `v` and states `s`; `h` is the step the integrator
+    /// would take next (s).
+    fn apply(
+        &mut self,
+        _ev: Event,
+        _x: f64,
+        _v: f64,
+        _s: &[f64],
+        _h: f64,
+    ) -> Result<Transition, Error> {
+        Ok(Transition::default())
+    }
+
+    /// The law's rate gate, if its changes of direction are gated ([`RateGate`]).
+    fn gate(&self) -> Option<&RateGate> {
+        None
+    }
+
+    /// The law's rate gate, to change.
+    fn gate_mut(&mut self) -> Option<&mut RateGate> {
+        None
+    }
+
+    /// The change-of-direction event function of the current phase without its slack (m/s): what the rate
+    /// gate waits on; `None` if the phase has none.
+    fn rate_event(&self, _x: f64, _v: f64, _s: &[f64]) -> Option<f64> {
+        None
+    }
+}
