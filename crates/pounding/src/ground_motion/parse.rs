@@ -2,7 +2,7 @@
 //! converts. Errors carry the 1-based line number. [`looks_like_at2`] and [`at2_units`] read what an AT2
 //! header says about the text: its layout and its units.
 
-use super::{ParseError, Units};
+use super::{Format, ParseError, Units};
 
 fn err(line: usize, message: impl Into<String>) -> ParseError {
     ParseError {
@@ -291,4 +291,31 @@ pub fn values(text: &str) -> Result<Vec<f64>, ParseError> {
         return Err(err(1, "no values"));
     }
     Ok(out)
+}
+
+impl Format {
+    /// The format of a record's `text` when none is given: [`Format::At2`] if the text has the layout of a
+    /// PEER AT2 record ([`looks_like_at2`]: a header line holding NPTS and DT, line 4 of a PEER file,
+    /// before any line of numbers), whatever the file is called; else `At2` if `file_name` ends in `.at2`
+    /// (any case), so that a damaged AT2 file gets the AT2 reader's message; else [`Format::TimeAcc`].
+    /// `Values` needs a time step, so it is never detected.
+    ///
+    /// ```
+    /// use pounding::ground_motion::Format;
+    /// let at2 = "PEER NGA STRONG MOTION DATABASE RECORD\nTitle\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    3, DT=   .0100 SEC\n.1 .2 .3\n";
+    /// assert_eq!(Format::detect(at2, Some("renamed.txt")), Format::At2);
+    /// assert_eq!(Format::detect("0.0, 0.1\n0.01, 0.2\n", Some("record.csv")), Format::TimeAcc);
+    /// ```
+    pub fn detect(text: &str, file_name: Option<&str>) -> Format {
+        let at2_name = file_name.is_some_and(|n| {
+            n.len() >= 4
+                && n.is_char_boundary(n.len() - 4)
+                && n[n.len() - 4..].eq_ignore_ascii_case(".at2")
+        });
+        if at2_name || looks_like_at2(text) {
+            Format::At2
+        } else {
+            Format::TimeAcc
+        }
+    }
 }
