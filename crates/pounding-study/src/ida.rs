@@ -17,9 +17,10 @@
 
 use crate::input::{read_record, read_text_file, ScenarioFile, SCENARIO_FILE_LIMIT};
 use crate::study::{record_sources, set_record};
-use crate::summary::num;
+use crate::summary::{BuildingSummary, RunSummary, SiteSummary};
 use crate::InputError;
 use pounding::fragility::{fit_ida, fit_stripes, Fragility};
+use serde::Serialize;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 
@@ -41,31 +42,24 @@ pub enum Edp {
 }
 
 impl Edp {
-    /// The EDP's value in a run's summary.
-    pub fn value(&self, s: &Value) -> f64 {
-        let buildings = s["buildings"].as_array().cloned().unwrap_or_default();
-        let of = |name: &Option<String>, key: &str| {
-            buildings
+    /// The EDP's value in a run's summary. Forces, penetrations and impacts count every contact site,
+    /// contacts between neighbours and walls alike.
+    pub fn value(&self, s: &RunSummary) -> f64 {
+        let of = |name: &Option<String>, key: fn(&BuildingSummary) -> &[f64]| {
+            s.buildings
                 .iter()
-                .filter(|b| name.as_ref().is_none_or(|n| b["name"] == n.as_str()))
-                .flat_map(|b| b[key].as_array().cloned().unwrap_or_default())
-                .filter_map(|v| v.as_f64())
-                .fold(0.0f64, f64::max)
+                .filter(|b| name.as_ref().is_none_or(|n| b.name == *n))
+                .flat_map(key)
+                .fold(0.0f64, |a, &x| a.max(x))
         };
-        let contacts = s["contacts"].as_array().cloned().unwrap_or_default();
-        let cmax = |key: &str| {
-            contacts
-                .iter()
-                .filter_map(|c| c[key].as_f64())
-                .fold(0.0f64, f64::max)
-        };
+        let sites = |key: fn(&SiteSummary) -> f64| s.sites.iter().map(key).fold(0.0f64, f64::max);
         match self {
-            Edp::DriftRatio(b) => of(b, "peak_drift_ratio"),
-            Edp::Acceleration(b) => of(b, "peak_absolute_acceleration"),
-            Edp::Displacement(b) => of(b, "peak_displacement"),
-            Edp::PeakForce => cmax("peak_force"),
-            Edp::Penetration => cmax("max_penetration"),
-            Edp::Pounding => f64::from(u8::from(cmax("impacts") > 0.0)),
+            Edp::DriftRatio(b) => of(b, |b| &b.peak_drift_ratio),
+            Edp::Acceleration(b) => of(b, |b| &b.peak_absolute_acceleration),
+            Edp::Displacement(b) => of(b, |b| &b.peak_displacement),
+            Edp::PeakForce => sites(|c| c.peak_force),
+            Edp::Penetration => sites(|c| c.max_penetration),
+            Edp::Pounding => f64::from(u8::from(s.impacts() > 0)),
         }
     }
 }
@@ -395,7 +389,7 @@ impl Ida {
 
     /// Fits every limit state from the runs' summaries (`None` for a failed run), laid out record by record,
     /// level by level.
-    pub fn fit(&self, summaries: &[Option<Value>]) -> Vec<Fit> {
+    pub fn fit(&self, summaries: &[Option<RunSummary>]) -> Vec<Fit> {
         let nl = self.levels.len();
         self.limit_states
             .iter()
@@ -465,24 +459,87 @@ pub fn edp_columns(names: &[String]) -> Vec<(String, Edp)> {
     cols
 }
 
-/// The fragility table as JSON rows.
-pub fn fragility_json(fits: &[Fit]) -> Value {
-    let one = |r: &Result<Fragility, String>| match r {
-        Ok(f) => json!({"median": num(f.median), "beta": num(f.beta)}),
-        Err(m) => json!({"error": m}),
-    };
-    Value::Array(
-        fits.iter()
-            .map(|f| {
-                json!({
-                    "limit_state": f.limit_state,
-                    "stripes": one(&f.stripes),
-                    "ida": one(&f.ida),
-                    "exceedances": f.exceedances.iter().map(|(n, z)| json!([z, n])).collect::<Vec<_>>(),
-                })
-            })
-            .collect(),
-    )
+/// One fit of a limit state, as the JSON result gives it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum FitJson {
+    /// The fitted curve: median (m/s^2 of the measure) and logarithmic standard deviation.
+    Fitted {
+        /// Median, m/s^2.
+        median: f64,
+        /// Dispersion (dimensionless).
+        beta: f64,
+    },
+    /// Why there is none.
+    Failed {
+        /// The reason.
+        error: String,
+    },
+}
+
+impl FitJson {
+    fn of(r: &Result<Fragility, String>) -> Self {
+        match r {
+            Ok(f) => FitJson::Fitted {
+                median: f.median,
+                beta: f.beta,
+            },
+            Err(m) => FitJson::Failed { error: m.clone() },
+        }
+    }
+}
+
+/// The fits of one limit state, as the JSON result gives them.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FragilityJson {
+    /// The limit state, as written.
+    pub limit_state: String,
+    /// From the stripes.
+    pub stripes: FitJson,
+    /// From each record's first exceedance.
+    pub ida: FitJson,
+    /// `[exceeding, runs]` at each level.
+    pub exceedances: Vec<[usize; 2]>,
+}
+
+/// The fragility fits as JSON rows.
+pub fn fragility_json(fits: &[Fit]) -> Vec<FragilityJson> {
+    fits.iter()
+        .map(|f| FragilityJson {
+            limit_state: f.limit_state.clone(),
+            stripes: FitJson::of(&f.stripes),
+            ida: FitJson::of(&f.ida),
+            exceedances: f.exceedances.iter().map(|&(n, z)| [z, n]).collect(),
+        })
+        .collect()
+}
+
+/// A record of the suite and its intensity at scale 1.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RecordIntensity {
+    /// The record's source.
+    pub record: String,
+    /// Its intensity measure at scale 1, m/s^2.
+    pub intensity: f64,
+}
+
+/// What `pounding ida --json` prints.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct IdaReport {
+    /// The intensity measure, in words.
+    pub measure: String,
+    /// Its levels, m/s^2.
+    pub levels: Vec<f64>,
+    /// The records and their intensities.
+    pub records: Vec<RecordIntensity>,
+    /// Number of runs.
+    pub runs: usize,
+    /// Runs that failed.
+    pub failed: usize,
+    /// The fits of every limit state.
+    pub fragility: Vec<FragilityJson>,
+    /// The unit of each quantity.
+    pub units: serde_json::Map<String, Value>,
 }
 
 /// What an IDA wrote and found.
@@ -491,10 +548,10 @@ pub struct IdaOutput {
     pub runs_csv: String,
     /// fragility.csv, as written.
     pub fragility_csv: String,
-    /// The whole result as JSON: measure, levels, records, the fits.
-    pub json: Value,
+    /// The whole result: measure, levels, records, the fits.
+    pub json: IdaReport,
     /// Each run's summary (`None` for a failed run), record by record, level by level.
-    pub summaries: Vec<Option<Value>>,
+    pub summaries: Vec<Option<RunSummary>>,
 }
 
 /// How an IDA ended early.
@@ -542,83 +599,114 @@ pub fn run(
         progress,
     )
     .map_err(|e| IdaError::Io(e.to_string()))?;
-    let summaries: Vec<Option<Value>> = outcomes
-        .iter()
-        .map(|o| o.as_ref().ok().and_then(|s| serde_json::from_str(s).ok()))
-        .collect();
-    // runs.csv
-    let cols = edp_columns(&ida.buildings);
-    let mut runs = String::from("record,intensity_m_per_s2,record_intensity_m_per_s2,scale,status");
-    for (c, _) in &cols {
-        runs.push(',');
-        runs.push_str(c);
-    }
-    runs.push_str(",impacts,error\n");
-    for (((i, j, scale), _), (o, s)) in variants.iter().zip(outcomes.iter().zip(&summaries)) {
-        runs.push_str(&format!(
-            "{},{},{},{},{}",
-            crate::headline::csv_field(&ida.records[*i]),
-            ida.levels[*j],
-            ims[*i],
-            scale,
-            if o.is_ok() { "ok" } else { "error" }
-        ));
-        for (_, e) in &cols {
-            runs.push(',');
-            if let Some(s) = s {
-                runs.push_str(&e.value(s).to_string());
-            }
-        }
-        runs.push(',');
-        if let Some(s) = s {
-            let impacts: u64 = s["contacts"]
-                .as_array()
-                .into_iter()
-                .flatten()
-                .filter_map(|c| c["impacts"].as_u64())
-                .sum();
-            runs.push_str(&impacts.to_string());
-        }
-        runs.push(',');
-        if let Err(e) = o {
-            runs.push_str(&crate::headline::csv_field(e));
-        }
-        runs.push('\n');
-    }
-    // fragility.csv
+    let summaries: Vec<Option<RunSummary>> =
+        outcomes.iter().map(|o| o.as_ref().ok().cloned()).collect();
+    let runs = runs_csv(ida, &variants, &ims, &outcomes).map_err(IdaError::Io)?;
     let fits = ida.fit(&summaries);
-    let mut frag = String::from("limit_state,method,median_m_per_s2,beta,note\n");
-    for f in &fits {
-        let name = &f.limit_state;
-        for (method, r) in [("stripes", &f.stripes), ("ida", &f.ida)] {
-            let (m, b, note) = match r {
-                Ok(f) => (f.median.to_string(), f.beta.to_string(), String::new()),
-                Err(e) => (String::new(), String::new(), e.clone()),
-            };
-            frag.push_str(&format!(
-                "{},{method},{m},{b},{}\n",
-                crate::headline::csv_field(name),
-                crate::headline::csv_field(&note)
-            ));
-        }
-    }
+    let frag = fragility_csv(&fits).map_err(IdaError::Io)?;
     for (name, text) in [("runs.csv", &runs), ("fragility.csv", &frag)] {
         crate::input::write_atomic(&out.join(name), text.as_bytes())
             .map_err(|e| IdaError::Io(format!("cannot write {}: {e}", out.join(name).display())))?;
     }
-    let json = json!({
-        "measure": ida.measure_name(),
-        "levels": ida.levels,
-        "records": ida.records.iter().zip(&ims).map(|(r, im)| json!({"record": r, "intensity": num(*im)})).collect::<Vec<_>>(),
-        "runs": outcomes.len(),
-        "failed": outcomes.iter().filter(|o| o.is_err()).count(),
-        "fragility": fragility_json(&fits),
-        "units": {"levels": "m/s^2", "intensity": "m/s^2 at scale 1", "median": "m/s^2 (of the measure)", "beta": "logarithmic standard deviation", "exceedances": "[exceeding, runs] per level"},
-    });
+    let units = serde_json::json!({"levels": "m/s^2", "intensity": "m/s^2 at scale 1", "median": "m/s^2 (of the measure)", "beta": "logarithmic standard deviation", "exceedances": "[exceeding, runs] per level"});
+    let json = IdaReport {
+        measure: ida.measure_name(),
+        levels: ida.levels.clone(),
+        records: ida
+            .records
+            .iter()
+            .zip(&ims)
+            .map(|(r, &intensity)| RecordIntensity {
+                record: r.clone(),
+                intensity,
+            })
+            .collect(),
+        runs: outcomes.len(),
+        failed: outcomes.iter().filter(|o| o.is_err()).count(),
+        fragility: fragility_json(&fits),
+        units: match units {
+            Value::Object(m) => m,
+            _ => unreachable!("a JSON object"),
+        },
+    };
     Ok(IdaOutput {
         runs_csv: runs,
         fragility_csv: frag,
         json,
         summaries,
     })
+}
+
+/// `runs.csv` of an IDA: each run's record, intensity and scale, its status, its EDPs, its impacts and its
+/// error.
+fn runs_csv(
+    ida: &Ida,
+    variants: &[((usize, usize, f64), Value)],
+    ims: &[f64],
+    outcomes: &[Result<RunSummary, String>],
+) -> Result<String, String> {
+    let cols = edp_columns(&ida.buildings);
+    let mut wtr = csv::Writer::from_writer(Vec::new());
+    let fail = |e: csv::Error| format!("cannot write runs.csv: {e}");
+    let mut header = vec![
+        "record",
+        "intensity_m_per_s2",
+        "record_intensity_m_per_s2",
+        "scale",
+        "status",
+    ];
+    header.extend(cols.iter().map(|(c, _)| c.as_str()));
+    header.extend(["impacts", "error"]);
+    wtr.write_record(&header).map_err(fail)?;
+    let mut buf = ryu::Buffer::new();
+    for ((ijs, _), o) in variants.iter().zip(outcomes) {
+        let (i, j, scale) = *ijs;
+        let mut row: Vec<String> = vec![
+            ida.records[i].clone(),
+            buf.format(ida.levels[j]).to_string(),
+            buf.format(ims[i]).to_string(),
+            buf.format(scale).to_string(),
+            if o.is_ok() { "ok" } else { "error" }.to_string(),
+        ];
+        match o {
+            Ok(s) => {
+                row.extend(cols.iter().map(|(_, e)| buf.format(e.value(s)).to_string()));
+                row.push(s.impacts().to_string());
+                row.push(String::new());
+            }
+            Err(e) => {
+                row.extend(cols.iter().map(|_| String::new()));
+                row.push(String::new());
+                row.push(e.clone());
+            }
+        }
+        wtr.write_record(&row).map_err(fail)?;
+    }
+    let bytes = wtr.into_inner().map_err(|e| e.to_string())?;
+    String::from_utf8(bytes).map_err(|e| e.to_string())
+}
+
+/// `fragility.csv`: for each limit state and method, the fitted median and dispersion, or why there is none.
+fn fragility_csv(fits: &[Fit]) -> Result<String, String> {
+    let mut wtr = csv::Writer::from_writer(Vec::new());
+    let fail = |e: csv::Error| format!("cannot write fragility.csv: {e}");
+    wtr.write_record(["limit_state", "method", "median_m_per_s2", "beta", "note"])
+        .map_err(fail)?;
+    let mut buf = ryu::Buffer::new();
+    for f in fits {
+        for (method, r) in [("stripes", &f.stripes), ("ida", &f.ida)] {
+            let (m, b, note) = match r {
+                Ok(f) => (
+                    buf.format(f.median).to_string(),
+                    buf.format(f.beta).to_string(),
+                    String::new(),
+                ),
+                Err(e) => (String::new(), String::new(), e.clone()),
+            };
+            wtr.write_record([f.limit_state.as_str(), method, &m, &b, &note])
+                .map_err(fail)?;
+        }
+    }
+    let bytes = wtr.into_inner().map_err(|e| e.to_string())?;
+    String::from_utf8(bytes).map_err(|e| e.to_string())
 }

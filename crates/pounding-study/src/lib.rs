@@ -13,6 +13,7 @@ pub mod store;
 pub mod study;
 pub mod summary;
 pub mod sweep;
+pub mod tables;
 
 /// Bad input: one line that names the file and line (or the key's dotted path), the value and what is allowed.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -157,14 +157,15 @@ impl Store {
         keys
     }
 
-    /// Commits `runs` in one transaction (a run already stored is left as it is).
+    /// Commits `runs` in one transaction (a run stored again, after its stored summary was found damaged,
+    /// replaces it).
     pub fn commit(&mut self, runs: &[Finished]) -> Result<(), StoreError> {
         let err = |e: rusqlite::Error| StoreError::Io(format!("study store: {e}"));
         let tx = self.conn.transaction().map_err(err)?;
         {
             let mut st = tx
                 .prepare_cached(
-                    "INSERT OR IGNORE INTO runs (key, idx, status, summary, error, seconds, finished)
+                    "INSERT OR REPLACE INTO runs (key, idx, status, summary, error, seconds, finished)
                      VALUES (?1, ?2, ?3, ?4, ?5, ?6, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))",
                 )
                 .map_err(err)?;

@@ -5,6 +5,7 @@
 use crate::input::{self, dict_message, Loaded};
 use crate::key::{fnv1a_128, key_of};
 use crate::store::{Finished, Store, StoreError};
+use crate::summary::RunSummary;
 use pounding::analysis::RunOptions;
 use pounding::ground_motion::Record;
 use pounding::scenario::{RecordSpec, ScenarioDoc};
@@ -153,8 +154,12 @@ pub fn study_id(prepared: &[Prepared]) -> String {
     format!("{:032x}", fnv1a_128(keys.join("\n").as_bytes()))
 }
 
-/// Runs one prepared scenario: the summary as JSON text, or the one-line message.
-pub fn run_one(p: &Prepared, options: &RunOptions, cancel: &AtomicBool) -> Result<String, String> {
+/// Runs one prepared scenario: its summary, or the one-line message.
+pub fn run_one(
+    p: &Prepared,
+    options: &RunOptions,
+    cancel: &AtomicBool,
+) -> Result<RunSummary, String> {
     let job = p.job.as_ref().map_err(Clone::clone)?;
     let record = (*job.record)
         .clone()
@@ -172,8 +177,7 @@ pub fn run_one(p: &Prepared, options: &RunOptions, cancel: &AtomicBool) -> Resul
             }
         })
         .map_err(|e| format!("analysis failed: {e}"))?;
-    let s = crate::summary::summary(&loaded, &results)?;
-    Ok(s.to_string())
+    RunSummary::new(&loaded, &results)
 }
 
 /// Where a sweep stands, given to the progress callback.
@@ -185,6 +189,8 @@ pub struct Progress {
     pub todo: usize,
     /// Runs found finished in the store and not run again.
     pub skipped: usize,
+    /// Runs found in the store with a summary that does not read as one (damaged), run again.
+    pub damaged: usize,
     /// Runs that ended with an error so far.
     pub failed: usize,
     /// Wall time since the runs began, s.
@@ -210,23 +216,34 @@ impl std::fmt::Display for SweepError {
 }
 
 /// Runs every prepared scenario not already in `store`, on `workers` threads, and returns every run's outcome
-/// in input order (the summary's JSON text or the error message; runs of equal key share one outcome).
-/// `progress` is called on this thread at least every 0.2 s; returning `Break` cancels the sweep.
+/// in input order (its summary or the error message; runs of equal key share one outcome). A stored summary
+/// that does not read back as one is not trusted: that run is run again and stored anew. `progress` is
+/// called on this thread at least every 0.2 s; returning `Break` cancels the sweep.
 pub fn run(
     prepared: &[Prepared],
     workers: usize,
     options: &RunOptions,
     mut store: Option<&mut Store>,
     progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
-) -> Result<Vec<Result<String, String>>, SweepError> {
-    let mut outcomes: HashMap<&str, Result<String, String>> = HashMap::new();
+) -> Result<Vec<Result<RunSummary, String>>, SweepError> {
+    let mut outcomes: HashMap<&str, Result<RunSummary, String>> = HashMap::new();
+    let mut damaged = 0;
     if let Some(st) = store.as_deref() {
         // The study's own key strings (borrowed from `prepared`), found by value.
         let keys: std::collections::HashSet<&str> =
             prepared.iter().map(|p| p.key.as_str()).collect();
         for (k, o) in st.all().map_err(SweepError::Store)? {
-            if let Some(key) = keys.get(k.as_str()) {
-                outcomes.insert(*key, o);
+            let Some(key) = keys.get(k.as_str()) else {
+                continue;
+            };
+            match o.map(|text| RunSummary::from_json(&text)) {
+                Ok(Ok(summary)) => {
+                    outcomes.insert(*key, Ok(summary));
+                }
+                Ok(Err(_)) => damaged += 1,
+                Err(e) => {
+                    outcomes.insert(*key, Err(e));
+                }
             }
         }
     }
@@ -247,6 +264,7 @@ pub fn run(
         done: 0,
         todo: todo.len(),
         skipped,
+        damaged,
         failed: 0,
         elapsed: 0.0,
     };
@@ -271,7 +289,7 @@ pub fn run(
                 let f = Finished {
                     key: prepared[i].key.clone(),
                     index: i,
-                    outcome,
+                    outcome: outcome.map(|s| s.to_value().to_string()),
                     seconds: t0.elapsed().as_secs_f64(),
                 };
                 if tx.send(f).is_err() {
@@ -303,7 +321,8 @@ pub fn run(
                 for f in batch.drain(..) {
                     state.done += 1;
                     state.failed += usize::from(f.outcome.is_err());
-                    outcomes.insert(prepared[f.index].key.as_str(), f.outcome);
+                    let outcome = f.outcome.and_then(|text| RunSummary::from_json(&text));
+                    outcomes.insert(prepared[f.index].key.as_str(), outcome);
                 }
             }
             if last.elapsed() >= Duration::from_millis(100) || !open {

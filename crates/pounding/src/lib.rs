@@ -96,6 +96,7 @@ pub mod ground_motion;
 pub mod impact;
 pub mod integrate;
 pub mod limits;
+pub mod names;
 pub mod paper;
 #[cfg(feature = "serde")]
 pub mod scenario;

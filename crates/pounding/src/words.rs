@@ -51,6 +51,15 @@ pub fn did_you_mean<'a>(given: &str, allowed: impl IntoIterator<Item = &'a str>)
     closest(given, allowed).map_or(String::new(), |n| format!(" (did you mean {n:?}?)"))
 }
 
+/// `s` quoted as Rust writes strings, cut after `max` characters with an ellipsis: a name echoed in a
+/// message stays short whatever was given.
+pub fn quoted(s: &str, max: usize) -> String {
+    match s.char_indices().nth(max) {
+        Some((i, _)) => format!("{:?}...", &s[..i]),
+        None => format!("{s:?}"),
+    }
+}
+
 /// `n` and its noun, singular for one: `1 storey`, `3 storeys`, `0 impacts`. `plural` is the noun's plural
 /// when it is not `singular` + `s`.
 pub fn count(n: usize, singular: &str, plural: Option<&str>) -> String {

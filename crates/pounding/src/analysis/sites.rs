@@ -22,32 +22,13 @@ use crate::contact::{ContactModel, PreparedContact};
 use crate::error::check;
 use crate::Error;
 
-/// Which side of a building a wall stands on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Side {
-    /// Towards negative displacements.
-    Left,
-    /// Towards positive displacements.
-    Right,
-}
-
-impl Side {
-    /// Every side's name, as a scenario's `side = "..."` takes it.
-    pub const NAMES: &'static [&'static str] = &["left", "right"];
-
-    /// `left` or `right`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Side::Left => "left",
-            Side::Right => "right",
-        }
-    }
-
-    /// The side called `name`.
-    pub fn from_name(name: &str) -> Option<Side> {
-        [Side::Left, Side::Right]
-            .into_iter()
-            .find(|s| s.name() == name)
+crate::named! {
+    /// Which side of a building a wall stands on.
+    pub enum Side: "side" {
+        /// Towards negative displacements.
+        Left = "left",
+        /// Towards positive displacements.
+        Right = "right",
     }
 }
 
@@ -155,35 +136,15 @@ impl ContactSite {
     }
 }
 
-/// Which law of a site an impact is of.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Layer {
-    /// The site's law, without a bumper.
-    Direct,
-    /// A bumper's soft layer.
-    Bumper,
-    /// The hard law behind a bumper whose layer was consumed.
-    Consumed,
-}
-
-impl Layer {
-    /// Every layer's name, as impact tables write it.
-    pub const NAMES: &'static [&'static str] = &["direct", "bumper", "consumed"];
-
-    /// `direct`, `bumper` or `consumed`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Layer::Direct => "direct",
-            Layer::Bumper => "bumper",
-            Layer::Consumed => "consumed",
-        }
-    }
-
-    /// The layer called `name`.
-    pub fn from_name(name: &str) -> Option<Layer> {
-        [Layer::Direct, Layer::Bumper, Layer::Consumed]
-            .into_iter()
-            .find(|l| l.name() == name)
+crate::named! {
+    /// Which law of a site an impact is of.
+    pub enum Layer: "layer" {
+        /// The site's law, without a bumper.
+        Direct = "direct",
+        /// A bumper's soft layer.
+        Bumper = "bumper",
+        /// The hard law behind a bumper whose layer was consumed.
+        Consumed = "consumed",
     }
 }
 

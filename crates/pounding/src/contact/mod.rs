@@ -31,46 +31,44 @@ pub use options::{ContactOptions, OptionError};
 use crate::error::check;
 use crate::Error;
 
-/// May the contact force become tensile (attractive) late in restitution?
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize),
-    serde(rename_all = "kebab-case")
-)]
-pub enum Tension {
-    /// The force follows the law into tension; the contact ends when the penetration returns to 0.
-    Allow,
-    /// The force is clamped at 0: the contact ends when it first reaches 0 in restitution.
-    Clamp,
+crate::named! {
+    /// May the contact force become tensile (attractive) late in restitution?
+    pub enum Tension: "tension" {
+        /// The force follows the law into tension; the contact ends when the penetration returns to 0.
+        Allow = "allow",
+        /// The force is clamped at 0: the contact ends when it first reaches 0 in restitution.
+        Clamp = "clamp",
+    }
 }
 
-/// The two readings of the force law of Papi & Toopchi-Nezhad (2022) (docs/contact-models.md).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize),
-    serde(rename_all = "kebab-case")
-)]
-pub enum Reading {
-    /// Restitution damping `chi_r = (alpha / e) chi`: restitution dissipates `alpha` times the approach.
-    EnergySplit,
-    /// The same `chi` in both phases; `alpha` enters only through eq (7).
-    SameDamping,
+crate::named! {
+    /// The two readings of the force law of Papi & Toopchi-Nezhad (2022) (docs/contact-models.md).
+    pub enum Reading: "reading" {
+        /// Restitution damping `chi_r = (alpha / e) chi`: restitution dissipates `alpha` times the approach.
+        EnergySplit = "energy-split",
+        /// The same `chi` in both phases; `alpha` enters only through eq (7).
+        SameDamping = "same-damping",
+    }
 }
 
-/// How the damping parameter is chosen.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize),
-    serde(rename_all = "kebab-case")
-)]
-pub enum Damping {
-    /// The model's published formula.
-    Formula,
-    /// The value that makes the delivered `e_post` equal `e_pre` (to 1e-10).
-    Exact,
+crate::named! {
+    /// How the damping parameter is chosen.
+    pub enum Damping: "damping" {
+        /// The model's published formula.
+        Formula = "formula",
+        /// The value that makes the delivered `e_post` equal `e_pre` (to 1e-10).
+        Exact = "exact",
+    }
+}
+
+crate::named! {
+    /// How `alpha` of the `papi` model is chosen, when it is not given as a number.
+    pub enum AlphaWord: "alpha" {
+        /// Papi & Toopchi-Nezhad (2022) eq (8) as printed ([`AlphaRule::Eq8`]).
+        Eq8 = "eq8",
+        /// Calibrated exactly ([`AlphaRule::Calibrate`]).
+        Calibrate = "calibrate",
+    }
 }
 
 /// How `alpha` of the `papi` model is chosen.
@@ -139,8 +137,9 @@ pub struct ContactModel {
 
 impl ContactModel {
     /// A contact of `model` with stiffness `k` (N/m^n, > 0) and requested restitution `e` (in (0, 1]);
-    /// the model's default exponent and tension rule, published damping formula, `alpha` calibrated and
-    /// the energy-split reading (for `papi`), yield ratio `a = 0.1` (for `impact-material`).
+    /// the model's default exponent and tension rule, and the defaults of [`ContactOptions::default`]
+    /// (published damping formula, `alpha` calibrated and the energy-split reading for `papi`, yield ratio
+    /// `a = 0.1` for `impact-material`).
     ///
     /// **Choosing the stiffness.** `k` is a property of what strikes what, not a numerical knob: for a
     /// linear law, usually the axial stiffness `E A / L` (N/m) of the floor slab that is struck; for a
@@ -150,17 +149,18 @@ impl ContactModel {
     /// stiffer contact needs more integration steps. See `docs/contact-models.md#5-choosing-the-contact-stiffness`.
     pub fn new(model: Model, k: f64, e: f64) -> Result<Self, Error> {
         let info = model.info();
+        let d = ContactOptions::default();
         Ok(Self {
             model,
             k: check("k", k, k > 0.0, "k > 0 (N/m^n)")?,
             n: info.default_n,
             e: check("e", e, e > 0.0 && e <= 1.0, "0 < e <= 1")?,
-            damping: Damping::Formula,
+            damping: d.damping,
             alpha: AlphaRule::Calibrate,
-            reading: Reading::EnergySplit,
+            reading: d.reading,
             tension: info.tension,
-            max_penetration: None,
-            yield_ratio: 0.1,
+            max_penetration: d.max_penetration,
+            yield_ratio: d.yield_ratio,
         })
     }
 

@@ -323,11 +323,26 @@ impl Model {
     }
 }
 
-impl std::fmt::Display for Model {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
+/// Every model, in catalogue order.
+const ALL_MODELS: [Model; MODELS.len()] = {
+    let mut out = [Model::Hooke; MODELS.len()];
+    let mut i = 0;
+    while i < MODELS.len() {
+        out[i] = MODELS[i].model;
+        i += 1;
+    }
+    out
+};
+
+impl crate::names::Named for Model {
+    const WHAT: &'static str = "model";
+    const ALL: &'static [Self] = &ALL_MODELS;
+    fn name(self) -> &'static str {
+        self.info().name
     }
 }
+
+crate::named_impls!(Model);
 
 #[cfg(test)]
 mod tests {

@@ -27,13 +27,15 @@ pub struct ContactOptions {
     pub yield_ratio: f64,
 }
 
-impl ContactOptions {
-    /// The defaults of model `model` with restitution `e`: formula damping, the energy-split reading, the
-    /// model's own exponent and tension, yield ratio 0.1.
-    pub fn new(model: Model, e: f64) -> Self {
+impl Default for ContactOptions {
+    /// The one place of a contact's defaults: `papi` at `e = 0.65` (concrete on concrete), the published
+    /// damping formula, `alpha` calibrated and the energy-split reading (for `papi`), the model's own
+    /// exponent and tension rule, the elastic Hertz penetration and a yield ratio of 0.1 (for
+    /// `impact-material`).
+    fn default() -> Self {
         ContactOptions {
-            model,
-            e,
+            model: Model::Papi,
+            e: 0.65,
             exponent: None,
             damping: Damping::Formula,
             alpha: None,
@@ -41,6 +43,17 @@ impl ContactOptions {
             tension: None,
             max_penetration: None,
             yield_ratio: 0.1,
+        }
+    }
+}
+
+impl ContactOptions {
+    /// The defaults ([`ContactOptions::default`]) of model `model` with restitution `e`.
+    pub fn new(model: Model, e: f64) -> Self {
+        ContactOptions {
+            model,
+            e,
+            ..Self::default()
         }
     }
 
@@ -132,6 +145,21 @@ impl From<Error> for OptionError {
 }
 
 impl OptionError {
+    /// The option the error concerns (`max-penetration`, `e`), if it names one.
+    pub fn key(&self) -> Option<&'static str> {
+        match self {
+            OptionError::NotFor { option, .. } | OptionError::Conflict { option, .. } => {
+                Some(option)
+            }
+            OptionError::Value(
+                Error::Parameter { name, .. }
+                | Error::Choice { name, .. }
+                | Error::Length { name, .. },
+            ) => Some(name),
+            OptionError::Value(_) => None,
+        }
+    }
+
     /// The message, with option names spelled by `name` (for example `|k| format!("--{k}")`).
     pub fn message(&self, name: impl Fn(&str) -> String) -> String {
         match self {

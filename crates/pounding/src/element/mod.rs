@@ -32,4 +32,4 @@ pub use ends::{Element, End};
 pub use gate::RateGate;
 pub use law::{ElementEnergy, ElementLaw, Event, Notice, Scales, Transition, Watch};
 pub use registry::{DeviceLaw, Law};
-pub use storey::StoreyLaw;
+pub use storey::{BoucWenShape, StoreyLaw, StoreyModel};

@@ -106,3 +106,19 @@ pub enum Format {
         dt: f64,
     },
 }
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Units {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+/// Units are read by [`Units::parse`], whatever spelling a file uses (`gal`, `m/s^2`, ...).
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for Units {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let s = <std::borrow::Cow<'de, str> as serde::Deserialize>::deserialize(d)?;
+        Units::parse(&s).map_err(serde::de::Error::custom)
+    }
+}

@@ -21,6 +21,16 @@ use crate::error::check;
 use crate::ground_motion::spectrum::Step;
 use crate::Error;
 
+crate::named! {
+    /// The filters of a synthetic motion, by name.
+    pub enum FilterKind: "filter" {
+        /// Kanai–Tajimi ([`Filter::KanaiTajimi`]).
+        KanaiTajimi = "kanai-tajimi",
+        /// Clough–Penzien ([`Filter::CloughPenzien`]).
+        CloughPenzien = "clough-penzien",
+    }
+}
+
 /// The filters of a synthetic motion.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Filter {
@@ -69,19 +79,89 @@ pub struct Synthetic {
 
 impl Default for Synthetic {
     fn default() -> Self {
-        Synthetic {
-            filter: Filter::CloughPenzien {
-                wg: 15.6,
-                zg: 0.6,
-                wf: 1.56,
-                zf: 0.6,
-            },
+        SyntheticParams::default().synthetic()
+    }
+}
+
+impl Filter {
+    /// Its kind.
+    pub fn kind(&self) -> FilterKind {
+        match self {
+            Filter::KanaiTajimi { .. } => FilterKind::KanaiTajimi,
+            Filter::CloughPenzien { .. } => FilterKind::CloughPenzien,
+        }
+    }
+}
+
+/// The parameters of a synthetic record as a user gives them (`pounding record synth`, Python's
+/// `synthetic`), each with its default: firm soil, 20 s at 0.01 s, envelope 2 s / 10 s / 0.3 per s, PGA
+/// 3 m/s^2. The defaults of [`Synthetic::default`] are these.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
+pub struct SyntheticParams {
+    /// The filter (default `clough-penzien`).
+    pub filter: FilterKind,
+    /// Circular frequency of the soil filter, rad/s (default 15.6).
+    pub wg: f64,
+    /// Damping ratio of the soil filter (default 0.6).
+    pub zg: f64,
+    /// Circular frequency of the Clough–Penzien high-pass filter, rad/s (default 1.56).
+    pub wf: f64,
+    /// Its damping ratio (default 0.6).
+    pub zf: f64,
+    /// Duration, s (default 20).
+    pub duration: f64,
+    /// Time step, s (default 0.01).
+    pub dt: f64,
+    /// End of the envelope's rise, s (default 2).
+    pub t1: f64,
+    /// End of its strong phase, s (default 10).
+    pub t2: f64,
+    /// Decay rate after `t2`, 1/s (default 0.3).
+    pub decay: f64,
+    /// Peak ground acceleration the record is scaled to, m/s^2 (default 3).
+    pub pga: f64,
+}
+
+impl Default for SyntheticParams {
+    fn default() -> Self {
+        Self {
+            filter: FilterKind::CloughPenzien,
+            wg: 15.6,
+            zg: 0.6,
+            wf: 1.56,
+            zf: 0.6,
             duration: 20.0,
             dt: 0.01,
             t1: 2.0,
             t2: 10.0,
             decay: 0.3,
-            pga: Some(3.0),
+            pga: 3.0,
+        }
+    }
+}
+
+impl SyntheticParams {
+    /// The motion they describe (under its envelope, scaled to the PGA).
+    pub fn synthetic(&self) -> Synthetic {
+        let (wg, zg) = (self.wg, self.zg);
+        Synthetic {
+            filter: match self.filter {
+                FilterKind::KanaiTajimi => Filter::KanaiTajimi { wg, zg },
+                FilterKind::CloughPenzien => Filter::CloughPenzien {
+                    wg,
+                    zg,
+                    wf: self.wf,
+                    zf: self.zf,
+                },
+            },
+            duration: self.duration,
+            dt: self.dt,
+            t1: self.t1,
+            t2: self.t2,
+            decay: self.decay,
+            pga: Some(self.pga),
             envelope: true,
         }
     }

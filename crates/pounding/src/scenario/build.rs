@@ -1,15 +1,16 @@
 //! Validation of a [`ScenarioDoc`] into the library's types, once, with one-line messages that name the key.
 
 use super::{
-    AlphaDoc, BuildingDoc, ContactDoc, DeviceDoc, GroundMotionDoc, IsolatorDoc, LawDoc, LawKeys,
-    ScenarioDoc, SchemaError, WallDoc,
+    AlphaDoc, BuildingDoc, ContactDoc, DeviceDoc, FormatName, GroundMotionDoc, IsolatorDoc, LawDoc,
+    LawKeys, ScenarioDoc, SchemaError, WallDoc,
 };
-use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, Side, WallSpec};
-use crate::contact::{AlphaRule, ContactModel, ContactOptions, Damping, Model, Reading, Tension};
-use crate::element::StoreyLaw;
+use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, WallSpec};
+use crate::contact::{AlphaRule, AlphaWord, ContactModel, ContactOptions};
+use crate::element::{StoreyLaw, StoreyModel};
 use crate::ground_motion::{Format, Record, Units};
+use crate::names::Named;
 use crate::structure::ShearBuilding;
-use crate::structure::{isolation, Isolator, IsolatorModel};
+use crate::structure::{isolation, Isolator, IsolatorKind, IsolatorModel};
 use crate::Error;
 
 /// The record a scenario needs, checked: a built-in (`file == None`) or a file, how to read it, and the scale.
@@ -26,22 +27,6 @@ pub struct RecordSpec {
     pub units: Option<Units>,
     /// Scale factor on the accelerations (dimensionless).
     pub scale: f64,
-}
-
-/// `key = "word"` must be one of `allowed`.
-fn word<'a>(key: &str, path: &str, v: &'a str, allowed: &[&str]) -> Result<&'a str, SchemaError> {
-    if allowed.contains(&v) {
-        Ok(v)
-    } else {
-        Err(SchemaError::new(
-            path,
-            format!(
-                "{key} = {v:?} is not allowed: one of {}{}",
-                allowed.join(", "),
-                crate::words::did_you_mean(v, allowed.iter().copied())
-            ),
-        ))
-    }
 }
 
 /// A library error in a scenario's words, about the entry at `entry` (`what: ` before it if not empty).
@@ -89,28 +74,19 @@ impl GroundMotionDoc {
                 ));
             }
         }
-        let format = match self.format.as_deref() {
+        let format = match self.format {
             None => None,
-            Some(f) => Some(
-                match word(
-                    "format",
-                    "ground_motion.format",
-                    f,
-                    &["at2", "time-acc", "values"],
-                )? {
-                    "at2" => Format::At2,
-                    "time-acc" => Format::TimeAcc,
-                    _ => match self.dt {
-                        Some(dt) => Format::Values { dt },
-                        None => {
-                            return Err(SchemaError::new(
-                                "ground_motion.format",
-                                "[ground_motion] format = values needs dt (the time step, s)",
-                            ))
-                        }
-                    },
-                },
-            ),
+            Some(FormatName::At2) => Some(Format::At2),
+            Some(FormatName::TimeAcc) => Some(Format::TimeAcc),
+            Some(FormatName::Values) => match self.dt {
+                Some(dt) => Some(Format::Values { dt }),
+                None => {
+                    return Err(SchemaError::new(
+                        "ground_motion.format",
+                        "[ground_motion] format = values needs dt (the time step, s)",
+                    ))
+                }
+            },
         };
         if self.dt.is_some() && !matches!(format, Some(Format::Values { .. })) {
             return Err(SchemaError::new(
@@ -118,11 +94,7 @@ impl GroundMotionDoc {
                 "[ground_motion] dt applies to format = values only (other formats carry their time step)",
             ));
         }
-        let units = match self.units.as_deref().map(Units::parse) {
-            None => None,
-            Some(Ok(u)) => Some(u),
-            Some(Err(e)) => return Err(SchemaError::new("ground_motion.units", e.to_string())),
-        };
+        let units = self.units;
         Ok(RecordSpec {
             source,
             is_file,
@@ -262,20 +234,16 @@ fn storey_laws(at: &str, what: &str, b: &BuildingDoc) -> Result<Vec<StoreyLaw>, 
             ),
         )
     };
-    let models = match &b.storey_model {
-        None => vec!["linear".to_string(); storeys],
+    let names = match &b.storey_model {
+        None => vec![StoreyModel::Linear.name().to_string(); storeys],
         Some(m) => m.per_storey(storeys).map_err(|n| list("storey_model", n))?,
     };
-    for m in &models {
-        if !["linear", "bilinear", "bouc-wen"].contains(&m.as_str()) {
-            return Err(err(
-                "storey_model",
-                format!("storey_model = {m:?} is not allowed: one of linear, bilinear, bouc-wen"),
-            ));
-        }
-    }
-    let inelastic = models.iter().any(|m| m != "linear");
-    let bouc_wen = models.iter().any(|m| m == "bouc-wen");
+    let models = names
+        .iter()
+        .map(|m| StoreyModel::parse_name(m).map_err(|e| err("storey_model", e)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let inelastic = models.iter().any(|m| *m != StoreyModel::Linear);
+    let bouc_wen = models.contains(&StoreyModel::BoucWen);
     for (key, given) in [
         ("yield_forces", b.yield_forces.is_some()),
         ("post_yield_ratio", b.post_yield_ratio.is_some()),
@@ -311,18 +279,17 @@ fn storey_laws(at: &str, what: &str, b: &BuildingDoc) -> Result<Vec<StoreyLaw>, 
             .per_storey(storeys)
             .map_err(|n| list("post_yield_ratio", n))?,
     };
-    let bw = b
-        .bouc_wen
-        .as_ref()
-        .map_or((1.0, 0.5, 0.5), |p| (p.n, p.beta, p.gamma));
+    let bw = b.bouc_wen.unwrap_or_default();
     models
         .iter()
         .enumerate()
         .map(|(j, m)| {
-            match m.as_str() {
-                "bilinear" => StoreyLaw::bilinear(fy[j], ratio[j]),
-                "bouc-wen" => StoreyLaw::bouc_wen(fy[j], ratio[j], bw.0, bw.1, bw.2),
-                _ => Ok(StoreyLaw::Linear),
+            match m {
+                StoreyModel::Linear => Ok(StoreyLaw::Linear),
+                StoreyModel::Bilinear => StoreyLaw::bilinear(fy[j], ratio[j]),
+                StoreyModel::BoucWen => {
+                    StoreyLaw::bouc_wen(fy[j], ratio[j], bw.n, bw.beta, bw.gamma)
+                }
             }
             .map_err(|e| lib(at, &format!("{what}, storey {}", j + 1), e))
         })
@@ -351,81 +318,32 @@ fn unit_for(n: f64) -> String {
     }
 }
 
-/// The contact options of an entry, its words checked.
-fn options(at: &str, c: &LawDoc) -> Result<ContactOptions, SchemaError> {
-    let model = Model::from_name(c.model).ok_or_else(|| {
-        let names: Vec<_> = Model::all().map(Model::name).collect();
-        SchemaError::new(
-            format!("{at}.model"),
-            format!(
-                "model = {:?}: unknown model{}; allowed: {}",
-                c.model,
-                crate::words::did_you_mean(c.model, names.iter().copied()),
-                names.join(", ")
-            ),
-        )
-    })?;
-    let key = |k: &str| format!("{at}.{k}");
-    let alpha = match &c.alpha {
-        None => None,
-        Some(AlphaDoc::Number(x)) => Some(AlphaRule::Given(*x)),
-        Some(AlphaDoc::Word(w)) => Some(match w.as_str() {
-            "eq8" => AlphaRule::Eq8,
-            "calibrate" => AlphaRule::Calibrate,
-            _ => {
-                return Err(SchemaError::new(
-                    key("alpha"),
-                    format!("alpha = {w:?}: allowed: a number >= 0, eq8 or calibrate"),
-                ))
-            }
-        }),
-    };
-    let damping = match c.damping {
-        None => Damping::Formula,
-        Some(d) => match word("damping", &key("damping"), d, &["formula", "exact"])? {
-            "formula" => Damping::Formula,
-            _ => Damping::Exact,
-        },
-    };
-    let reading = match c.reading {
-        None => Reading::EnergySplit,
-        Some(r) => match word(
-            "reading",
-            &key("reading"),
-            r,
-            &["energy-split", "same-damping"],
-        )? {
-            "energy-split" => Reading::EnergySplit,
-            _ => Reading::SameDamping,
-        },
-    };
-    let tension = match c.tension {
-        None => None,
-        Some(t) => Some(
-            match word("tension", &key("tension"), t, &["allow", "clamp"])? {
-                "allow" => Tension::Allow,
-                _ => Tension::Clamp,
-            },
-        ),
-    };
-    Ok(ContactOptions {
-        model,
+/// The contact options of an entry.
+fn options(c: &LawDoc) -> ContactOptions {
+    ContactOptions {
+        model: c.model,
         e: c.e,
         exponent: c.exponent,
-        damping,
-        alpha,
-        reading,
-        tension,
+        damping: c.damping.unwrap_or(ContactOptions::default().damping),
+        alpha: c.alpha.map(|a| match a {
+            AlphaDoc::Number(x) => AlphaRule::Given(*x),
+            AlphaDoc::Word(AlphaWord::Eq8) => AlphaRule::Eq8,
+            AlphaDoc::Word(AlphaWord::Calibrate) => AlphaRule::Calibrate,
+        }),
+        reading: c.reading.unwrap_or(ContactOptions::default().reading),
+        tension: c.tension,
         max_penetration: c.max_penetration,
-        yield_ratio: c.yield_ratio.unwrap_or(0.1),
-    })
+        yield_ratio: c
+            .yield_ratio
+            .unwrap_or(ContactOptions::default().yield_ratio),
+    }
 }
 
 /// The contact law of an entry at `at` (`pair` names it in messages): its options, and a stiffness that
 /// states its unit.
 fn contact_law(at: &str, pair: &str, c: &LawDoc) -> Result<ContactModel, SchemaError> {
     let key = |k: &str| format!("{at}.{k}");
-    let opts = options(at, c)?;
+    let opts = options(c);
     // The stiffness states its unit, so that changing the model cannot silently change what it means.
     let n = opts.exponent();
     match c.stiffness_unit {
@@ -459,10 +377,10 @@ fn contact_law(at: &str, pair: &str, c: &LawDoc) -> Result<ContactModel, SchemaE
         }
     }
     opts.build(c.stiffness).map_err(|e| {
-        // Messages start with the key (`e = 1.5 is not allowed ...`): name it.
         let m = e.message(|k| k.replace('-', "_"));
-        let k = m.split([' ', '=']).next().unwrap_or("");
-        let path = if k.is_empty() { at.to_string() } else { key(k) };
+        let path = e
+            .key()
+            .map_or(at.to_string(), |k| key(&k.replace('-', "_")));
         SchemaError::new(path, format!("{pair}: {m}"))
     })
 }
@@ -539,10 +457,7 @@ fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, Sch
 /// Adds the wall entry `w` (at `at`) to `scenario`.
 fn wall(scenario: Scenario, at: &str, w: &WallDoc) -> Result<Scenario, SchemaError> {
     let what = format!("wall {:?}", w.name);
-    let side = match word("side", &format!("{at}.side"), &w.side, &["left", "right"])? {
-        "left" => Side::Left,
-        _ => Side::Right,
-    };
+    let side = w.side;
     let spec = WallSpec {
         name: w.name.clone(),
         facing: w.facing.clone(),
@@ -578,21 +493,20 @@ fn device(scenario: Scenario, at: &str, d: &DeviceDoc) -> Result<Scenario, Schem
 
 /// The isolator of a building entry at `at`.
 fn isolator(at: &str, what: &str, d: &IsolatorDoc) -> Result<Isolator, SchemaError> {
-    let model = word(
-        "model",
-        &format!("{at}.model"),
-        &d.model,
-        &["linear", "bilinear", "bouc-wen", "friction-pendulum"],
-    )?;
+    let model = d.model;
     let err =
         |key: &str, msg: String| SchemaError::new(format!("{at}.{key}"), format!("{what}: {msg}"));
-    let fp = model == "friction-pendulum";
-    let hysteretic = ["bilinear", "bouc-wen"].contains(&model);
+    let fp = model == IsolatorKind::FrictionPendulum;
+    let hysteretic = [IsolatorKind::Bilinear, IsolatorKind::BoucWen].contains(&model);
     for (key, given, applies) in [
         ("stiffness", d.stiffness.is_some(), !fp),
         ("yield_force", d.yield_force.is_some(), hysteretic),
         ("post_yield_ratio", d.post_yield_ratio.is_some(), hysteretic),
-        ("bouc_wen", d.bouc_wen.is_some(), model == "bouc-wen"),
+        (
+            "bouc_wen",
+            d.bouc_wen.is_some(),
+            model == IsolatorKind::BoucWen,
+        ),
         ("radius", d.radius.is_some(), fp),
         ("mu", d.mu.is_some(), fp),
         ("yield_displacement", d.yield_displacement.is_some(), fp),
@@ -611,27 +525,24 @@ fn isolator(at: &str, what: &str, d: &IsolatorDoc) -> Result<Isolator, SchemaErr
     let fy = || needs("yield_force", d.yield_force, "N");
     let a = d.post_yield_ratio.unwrap_or(0.0);
     let m = match model {
-        "linear" => IsolatorModel::Linear { stiffness: k()? },
-        "bilinear" => IsolatorModel::Bilinear {
+        IsolatorKind::Linear => IsolatorModel::Linear { stiffness: k()? },
+        IsolatorKind::Bilinear => IsolatorModel::Bilinear {
             stiffness: k()?,
             yield_force: fy()?,
             post_yield_ratio: a,
         },
-        "bouc-wen" => {
-            let bw = d
-                .bouc_wen
-                .as_ref()
-                .map_or((1.0, 0.5, 0.5), |p| (p.n, p.beta, p.gamma));
+        IsolatorKind::BoucWen => {
+            let bw = d.bouc_wen.unwrap_or_default();
             IsolatorModel::BoucWen {
                 stiffness: k()?,
                 yield_force: fy()?,
                 post_yield_ratio: a,
-                n: bw.0,
-                beta: bw.1,
-                gamma: bw.2,
+                n: bw.n,
+                beta: bw.beta,
+                gamma: bw.gamma,
             }
         }
-        _ => IsolatorModel::FrictionPendulum {
+        IsolatorKind::FrictionPendulum => IsolatorModel::FrictionPendulum {
             radius: needs("radius", d.radius, "m")?,
             mu: needs("mu", d.mu, "dimensionless")?,
             yield_displacement: d

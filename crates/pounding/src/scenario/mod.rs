@@ -24,7 +24,11 @@ mod build;
 
 pub use build::RecordSpec;
 
-use crate::element::DeviceLaw;
+use crate::analysis::Side;
+use crate::contact::{AlphaWord, ContactOptions, Damping, Model, Reading, Tension};
+use crate::element::{BoucWenShape, DeviceLaw};
+use crate::ground_motion::Units;
+use crate::structure::IsolatorKind;
 use serde::{Deserialize, Serialize};
 
 /// A scenario: the ground motion, the analysis settings, the buildings left to right and the contacts
@@ -65,7 +69,7 @@ pub struct GroundMotionDoc {
     /// `at2` for a text with the PEER AT2 header, a line holding NPTS and DT, whatever the file's name, or
     /// for a `*.at2` file; `time-acc` otherwise).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub format: Option<String>,
+    pub format: Option<FormatName>,
     /// Time step of a `values` file, s.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dt: Option<f64>,
@@ -74,7 +78,7 @@ pub struct GroundMotionDoc {
     /// AT2 header states (`... IN UNITS OF G`), else g. Units given that contradict an AT2 header are an
     /// error.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub units: Option<String>,
+    pub units: Option<Units>,
     /// Scale factor on the accelerations (dimensionless).
     #[serde(default = "one")]
     pub scale: f64,
@@ -112,7 +116,7 @@ pub struct BuildingDoc {
     /// Storey heights, m.
     pub heights: Vec<f64>,
     /// Rayleigh damping ratio of modes 1 and 2 (dimensionless, default 0.05).
-    #[serde(default = "five_percent")]
+    #[serde(default = "default_damping_ratio")]
     pub damping_ratio: f64,
     /// `linear`, `bilinear` or `bouc-wen`: one for every storey or one per storey (default linear).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -125,7 +129,7 @@ pub struct BuildingDoc {
     pub post_yield_ratio: Option<OneOrMany<f64>>,
     /// Bouc–Wen shape parameters.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bouc_wen: Option<BoucWenDoc>,
+    pub bouc_wen: Option<BoucWenShape>,
     /// The isolator under the base slab, for a building isolated at its base.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub isolator: Option<IsolatorDoc>,
@@ -155,21 +159,6 @@ impl<T: Clone> OneOrMany<T> {
     }
 }
 
-/// `bouc_wen`: the shape parameters of the Bouc–Wen law (dimensionless).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BoucWenDoc {
-    /// Sharpness of the transition (default 1).
-    #[serde(default = "one")]
-    pub n: f64,
-    /// beta (default 0.5).
-    #[serde(default = "half")]
-    pub beta: f64,
-    /// gamma (default 0.5).
-    #[serde(default = "half")]
-    pub gamma: f64,
-}
-
 /// `alpha` of `papi`: a number, or `eq8` / `calibrate`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(
@@ -180,7 +169,7 @@ pub enum AlphaDoc {
     /// A given value (dimensionless).
     Number(f64),
     /// `eq8` or `calibrate`.
-    Word(String),
+    Word(AlphaWord),
 }
 
 /// Declares a schema entry that carries a contact law: its own fields, then the law's keys (the same on a
@@ -192,11 +181,11 @@ macro_rules! with_contact_law {
         #[serde(deny_unknown_fields)]
         pub struct $name {
             $($(#[$fm])* pub $field: $ty,)*
-            /// Contact model (default `papi`).
-            #[serde(default = "papi")]
-            pub model: String,
-            /// Requested coefficient of restitution (dimensionless, default 0.65).
-            #[serde(default = "concrete_e")]
+            /// Contact model (default `papi`, [`ContactOptions::default`]).
+            #[serde(default = "default_model")]
+            pub model: Model,
+            /// Requested coefficient of restitution (dimensionless, default 0.65, [`ContactOptions::default`]).
+            #[serde(default = "default_e")]
             pub e: f64,
             /// Stiffness, in `stiffness_unit`.
             pub stiffness: f64,
@@ -208,16 +197,16 @@ macro_rules! with_contact_law {
             pub exponent: Option<f64>,
             /// `formula` (default) or `exact`.
             #[serde(default, skip_serializing_if = "Option::is_none")]
-            pub damping: Option<String>,
+            pub damping: Option<Damping>,
             /// `alpha` of `papi`.
             #[serde(default, skip_serializing_if = "Option::is_none")]
             pub alpha: Option<AlphaDoc>,
             /// `energy-split` (default) or `same-damping`.
             #[serde(default, skip_serializing_if = "Option::is_none")]
-            pub reading: Option<String>,
+            pub reading: Option<Reading>,
             /// `allow` or `clamp` (default: the model's).
             #[serde(default, skip_serializing_if = "Option::is_none")]
-            pub tension: Option<String>,
+            pub tension: Option<Tension>,
             /// `impact-material`: expected maximum penetration, m.
             #[serde(default, skip_serializing_if = "Option::is_none")]
             pub max_penetration: Option<f64>,
@@ -229,15 +218,15 @@ macro_rules! with_contact_law {
         impl LawKeys for $name {
             fn law(&self) -> LawDoc<'_> {
                 LawDoc {
-                    model: &self.model,
+                    model: self.model,
                     e: self.e,
                     stiffness: self.stiffness,
                     stiffness_unit: self.stiffness_unit.as_deref(),
                     exponent: self.exponent,
-                    damping: self.damping.as_deref(),
+                    damping: self.damping,
                     alpha: self.alpha.as_ref(),
-                    reading: self.reading.as_deref(),
-                    tension: self.tension.as_deref(),
+                    reading: self.reading,
+                    tension: self.tension,
                     max_penetration: self.max_penetration,
                     yield_ratio: self.yield_ratio,
                 }
@@ -249,8 +238,8 @@ macro_rules! with_contact_law {
 /// The contact-law keys of an entry, borrowed.
 #[derive(Clone, Copy, Debug)]
 pub struct LawDoc<'a> {
-    /// Model name.
-    pub model: &'a str,
+    /// The model.
+    pub model: Model,
     /// Requested coefficient of restitution.
     pub e: f64,
     /// Stiffness, in `stiffness_unit`.
@@ -260,13 +249,13 @@ pub struct LawDoc<'a> {
     /// Exponent.
     pub exponent: Option<f64>,
     /// `formula` or `exact`.
-    pub damping: Option<&'a str>,
+    pub damping: Option<Damping>,
     /// `alpha` of `papi`.
     pub alpha: Option<&'a AlphaDoc>,
     /// Reading of `papi`.
-    pub reading: Option<&'a str>,
+    pub reading: Option<Reading>,
     /// Tension rule.
-    pub tension: Option<&'a str>,
+    pub tension: Option<Tension>,
     /// `impact-material`: expected maximum penetration, m.
     pub max_penetration: Option<f64>,
     /// `impact-material`: yield ratio.
@@ -306,7 +295,7 @@ with_contact_law! {
         /// The building it stands beside.
         pub facing: String,
         /// `left` or `right` of that building.
-        pub side: String,
+        pub side: Side,
         /// Clear distance at rest, m.
         pub gap: f64,
         /// Floors that can strike it, from 1 (default `[1]`).
@@ -337,7 +326,7 @@ with_contact_law! {
 #[serde(deny_unknown_fields)]
 pub struct IsolatorDoc {
     /// `linear`, `bilinear`, `bouc-wen` or `friction-pendulum`.
-    pub model: String,
+    pub model: IsolatorKind,
     /// Initial stiffness, N/m (linear, bilinear, bouc-wen).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stiffness: Option<f64>,
@@ -349,7 +338,7 @@ pub struct IsolatorDoc {
     pub post_yield_ratio: Option<f64>,
     /// Bouc–Wen shape parameters (bouc-wen).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bouc_wen: Option<BoucWenDoc>,
+    pub bouc_wen: Option<BoucWenShape>,
     /// Radius of curvature, m (friction-pendulum).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub radius: Option<f64>,
@@ -393,17 +382,26 @@ pub struct DeviceDoc {
 fn one() -> f64 {
     1.0
 }
-fn half() -> f64 {
-    0.5
+fn default_damping_ratio() -> f64 {
+    crate::structure::DEFAULT_DAMPING_RATIO
 }
-fn five_percent() -> f64 {
-    0.05
+fn default_model() -> Model {
+    ContactOptions::default().model
 }
-fn papi() -> String {
-    "papi".into()
+fn default_e() -> f64 {
+    ContactOptions::default().e
 }
-fn concrete_e() -> f64 {
-    0.65
+
+crate::named! {
+    /// The formats of a record file, by name.
+    pub enum FormatName: "format" {
+        /// PEER AT2.
+        At2 = "at2",
+        /// Two columns: time (s) and acceleration.
+        TimeAcc = "time-acc",
+        /// One acceleration per line, with `dt` given.
+        Values = "values",
+    }
 }
 
 /// A scenario that does not validate: the key it concerns and a one-line message.

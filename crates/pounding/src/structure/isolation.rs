@@ -14,9 +14,25 @@ use crate::element::StoreyLaw;
 use crate::error::check;
 use crate::Error;
 
-/// The force–displacement law of an isolator.
+crate::named! {
+    /// The isolator laws, by name (an isolator's `model`).
+    pub enum IsolatorKind: "model" {
+        /// A linear bearing ([`IsolatorModel::Linear`]).
+        Linear = "linear",
+        /// A bilinear bearing ([`IsolatorModel::Bilinear`]).
+        Bilinear = "bilinear",
+        /// A Bouc–Wen bearing ([`IsolatorModel::BoucWen`]).
+        BoucWen = "bouc-wen",
+        /// A friction pendulum ([`IsolatorModel::FrictionPendulum`]).
+        FrictionPendulum = "friction-pendulum",
+    }
+}
+
+/// The force–displacement law of an isolator (serialised as `{"model": name, its parameters}`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(tag = "model", rename_all = "kebab-case"))]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub enum IsolatorModel {
     /// A linear (elastomeric) bearing: `F = k d`.
     Linear {
@@ -69,14 +85,19 @@ pub enum IsolatorModel {
 pub const FRICTION_YIELD_DISPLACEMENT: f64 = 2.5e-4;
 
 impl IsolatorModel {
+    /// Its kind.
+    pub fn kind(&self) -> IsolatorKind {
+        match self {
+            IsolatorModel::Linear { .. } => IsolatorKind::Linear,
+            IsolatorModel::Bilinear { .. } => IsolatorKind::Bilinear,
+            IsolatorModel::BoucWen { .. } => IsolatorKind::BoucWen,
+            IsolatorModel::FrictionPendulum { .. } => IsolatorKind::FrictionPendulum,
+        }
+    }
+
     /// Short name: `linear`, `bilinear`, `bouc-wen`, `friction-pendulum`.
     pub fn name(&self) -> &'static str {
-        match self {
-            IsolatorModel::Linear { .. } => "linear",
-            IsolatorModel::Bilinear { .. } => "bilinear",
-            IsolatorModel::BoucWen { .. } => "bouc-wen",
-            IsolatorModel::FrictionPendulum { .. } => "friction-pendulum",
-        }
+        self.kind().name()
     }
 
     /// The initial stiffness (N/m) and storey law of the isolator carrying the weight `weight` (N).

@@ -11,7 +11,7 @@
 mod eigen;
 pub mod isolation;
 
-pub use isolation::{Isolator, IsolatorModel};
+pub use isolation::{Isolator, IsolatorKind, IsolatorModel};
 
 use crate::element::StoreyLaw;
 use crate::error::check;
@@ -38,7 +38,6 @@ use crate::Error;
 /// # Ok::<(), pounding::Error>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ShearBuilding {
     masses: Vec<f64>,
     stiffnesses: Vec<f64>,
@@ -50,8 +49,7 @@ pub struct ShearBuilding {
     storey_laws: Vec<StoreyLaw>,
     /// The isolator under floor 1 (the base slab), if the building is isolated at its base.
     isolator: Option<Isolator>,
-    /// Natural modes, computed once at construction (derived data: not serialised).
-    #[cfg_attr(feature = "serde", serde(skip))]
+    /// Natural modes, computed once at construction.
     modes: Modes,
 }
 
@@ -117,13 +115,17 @@ pub struct ShearBuildingBuilder {
     base: Option<(f64, Isolator)>,
 }
 
+/// Default damping ratio of a building's modes 1 and 2 (Rayleigh), dimensionless: 5 %, the ratio design
+/// spectra assume.
+pub const DEFAULT_DAMPING_RATIO: f64 = 0.05;
+
 impl Default for ShearBuildingBuilder {
     fn default() -> Self {
         Self {
             masses: Vec::new(),
             stiffnesses: Vec::new(),
             heights: Vec::new(),
-            damping_ratio: 0.05,
+            damping_ratio: DEFAULT_DAMPING_RATIO,
             base: None,
         }
     }

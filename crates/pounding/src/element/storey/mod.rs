@@ -17,9 +17,46 @@ use crate::element::Law;
 use crate::error::check;
 use crate::Error;
 
+crate::named! {
+    /// The storey laws, by name (a building's `storey_model`).
+    pub enum StoreyModel: "storey_model" {
+        /// `F = k x`.
+        Linear = "linear",
+        /// Bilinear with kinematic hardening ([`StoreyLaw::Bilinear`]).
+        Bilinear = "bilinear",
+        /// Bouc–Wen ([`StoreyLaw::BoucWen`]).
+        BoucWen = "bouc-wen",
+    }
+}
+
+/// The shape parameters of the Bouc–Wen law (dimensionless): `n`, `beta`, `gamma`. Defaults `n = 1`,
+/// `beta = gamma = 0.5` (a smooth transition; `beta + gamma = 1` makes `F_y` the asymptotic hysteretic
+/// force).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct BoucWenShape {
+    /// Sharpness of the transition, >= 1 (default 1).
+    pub n: f64,
+    /// `beta` (default 0.5).
+    pub beta: f64,
+    /// `gamma` (default 0.5).
+    pub gamma: f64,
+}
+
+impl Default for BoucWenShape {
+    fn default() -> Self {
+        Self {
+            n: 1.0,
+            beta: 0.5,
+            gamma: 0.5,
+        }
+    }
+}
+
 /// The force–drift law of one storey.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub enum StoreyLaw {
     /// `F = k x`.
     Linear,
@@ -135,13 +172,18 @@ impl StoreyLaw {
         }
     }
 
+    /// Its model.
+    pub fn model(&self) -> StoreyModel {
+        match self {
+            StoreyLaw::Linear => StoreyModel::Linear,
+            StoreyLaw::Bilinear { .. } => StoreyModel::Bilinear,
+            StoreyLaw::BoucWen { .. } => StoreyModel::BoucWen,
+        }
+    }
+
     /// Short name: `linear`, `bilinear`, `bouc-wen`.
     pub fn name(&self) -> &'static str {
-        match self {
-            StoreyLaw::Linear => "linear",
-            StoreyLaw::Bilinear { .. } => "bilinear",
-            StoreyLaw::BoucWen { .. } => "bouc-wen",
-        }
+        self.model().name()
     }
 }
 

@@ -1,0 +1,164 @@
+//! The summary of a building: its modes and its peak response.
+
+use pounding::analysis::{Building, BuildingResponse};
+use pounding::element::StoreyModel;
+use pounding::structure::{IsolatorKind, IsolatorModel};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// The isolator under a base-isolated building's slab, and its demand.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct IsolatorSummary {
+    /// Its model.
+    pub model: IsolatorKind,
+    /// Its law and parameters (stiffness N/m, yield force N, radius m, ...).
+    pub law: IsolatorModel,
+    /// Height of the isolation storey, m.
+    pub height: f64,
+    /// Its own viscous coefficient, N s/m.
+    pub damping_coefficient: f64,
+    /// Its displacement capacity, m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub clearance: Option<f64>,
+    /// Peak displacement of the isolator (|drift| of storey 1), m.
+    pub peak_displacement: f64,
+    /// Whether the peak displacement exceeded the clearance.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub exceeds_clearance: Option<bool>,
+    /// Displacement of the isolator at the end of the analysis, m (signed).
+    pub residual_displacement: f64,
+}
+
+/// A building: its modes and peak response. Lists run floor 1 (or storey 1) upwards.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct BuildingSummary {
+    /// Its name.
+    pub name: String,
+    /// Number of storeys (floors).
+    pub storeys: usize,
+    /// Height of each storey, m (with an isolator, storey 1 is the isolation storey).
+    pub heights: Vec<f64>,
+    /// Natural periods, s.
+    pub periods: Vec<f64>,
+    /// Damping ratio of each mode, `phi^T C phi / 2w` (dimensionless).
+    pub modal_damping_ratios: Vec<f64>,
+    /// Mode shapes, largest component 1, top floor positive (dimensionless).
+    pub mode_shapes: Vec<Vec<f64>>,
+    /// Effective modal mass of each mode over the building's mass (dimensionless).
+    pub effective_modal_mass_ratios: Vec<f64>,
+    /// Largest |displacement| of each floor relative to the ground, m.
+    pub peak_displacement: Vec<f64>,
+    /// Time of each, s.
+    pub time_of_peak_displacement: Vec<f64>,
+    /// Largest |drift| of each storey, m.
+    pub peak_drift: Vec<f64>,
+    /// Largest |drift| over the storey's height (dimensionless).
+    pub peak_drift_ratio: Vec<f64>,
+    /// The law of each storey.
+    pub storey_models: Vec<StoreyModel>,
+    /// Largest |absolute acceleration| of each floor, m/s^2.
+    pub peak_absolute_acceleration: Vec<f64>,
+    /// Time of each, s.
+    pub time_of_peak_absolute_acceleration: Vec<f64>,
+    /// Largest |restoring force| of each storey (without Rayleigh damping), N.
+    pub peak_storey_shear: Vec<f64>,
+    /// Displacement of each floor at the end of the analysis, m (signed).
+    pub residual_displacement: Vec<f64>,
+    /// Drift of each storey at the end of the analysis, m (signed).
+    pub residual_drift: Vec<f64>,
+    /// The isolator, if the building is isolated at its base.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub isolator: Option<IsolatorSummary>,
+    /// The inelastic storeys, numbered from 1 (the lists below follow them).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub inelastic_storeys: Vec<usize>,
+    /// Yield force of each inelastic storey, N.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub yield_forces: Vec<f64>,
+    /// Peak drift over yield drift of each inelastic storey (dimensionless).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub ductility: Vec<f64>,
+    /// Energy dissipated by the hysteresis of each inelastic storey, J.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub hysteretic_energy: Vec<f64>,
+}
+
+impl BuildingSummary {
+    /// Building `b` and its response `resp`.
+    pub fn of(b: &Building, resp: &BuildingResponse) -> Self {
+        let st = &b.structure;
+        let modes = st.modes();
+        let part = modes.participation(st.masses());
+        let laws = st.storey_laws();
+        let isolator = st.isolator().map(|iso| IsolatorSummary {
+            model: iso.model.kind(),
+            law: iso.model,
+            height: iso.height,
+            damping_coefficient: iso.damping,
+            clearance: iso.clearance,
+            peak_displacement: resp.peak_drift[0],
+            exceeds_clearance: iso.clearance.map(|c| resp.peak_drift[0] > c),
+            residual_displacement: resp.residual_drift[0],
+        });
+        // Ductility and hysteretic energy exist for inelastic storeys only: listed with their numbers.
+        let inelastic: Vec<usize> = (0..st.storeys())
+            .filter(|&j| laws[j].is_inelastic())
+            .collect();
+        Self {
+            name: b.name.clone(),
+            storeys: st.storeys(),
+            heights: st.heights().to_vec(),
+            periods: modes.periods(),
+            modal_damping_ratios: (0..modes.omega.len())
+                .map(|r| st.damping_of_mode(r))
+                .collect(),
+            mode_shapes: modes.shapes_normalised(),
+            effective_modal_mass_ratios: part.iter().map(|p| p.1 / st.total_mass()).collect(),
+            peak_displacement: resp.peak_displacement.clone(),
+            time_of_peak_displacement: resp.time_of_peak_displacement.clone(),
+            peak_drift: resp.peak_drift.clone(),
+            peak_drift_ratio: resp
+                .peak_drift
+                .iter()
+                .zip(st.heights())
+                .map(|(d, h)| d / h)
+                .collect(),
+            storey_models: laws.iter().map(|l| l.model()).collect(),
+            peak_absolute_acceleration: resp.peak_absolute_acceleration.clone(),
+            time_of_peak_absolute_acceleration: resp.time_of_peak_absolute_acceleration.clone(),
+            peak_storey_shear: resp.peak_storey_shear.clone(),
+            residual_displacement: resp.residual_displacement.clone(),
+            residual_drift: resp.residual_drift.clone(),
+            isolator,
+            yield_forces: inelastic
+                .iter()
+                .map(|&j| laws[j].yield_force().unwrap_or(0.0))
+                .collect(),
+            ductility: inelastic
+                .iter()
+                .map(|&j| resp.ductility[j].unwrap_or(0.0))
+                .collect(),
+            hysteretic_energy: inelastic
+                .iter()
+                .map(|&j| resp.hysteretic_energy[j])
+                .collect(),
+            inelastic_storeys: inelastic.iter().map(|j| j + 1).collect(),
+        }
+    }
+
+    /// Elevation of each floor above the ground, m.
+    pub fn elevations(&self) -> Vec<f64> {
+        self.heights
+            .iter()
+            .scan(0.0, |z, h| {
+                *z += h;
+                Some(*z)
+            })
+            .collect()
+    }
+
+    /// Whether any storey yields (bilinear or Bouc–Wen).
+    pub fn is_inelastic(&self) -> bool {
+        !self.inelastic_storeys.is_empty()
+    }
+}

@@ -1,0 +1,221 @@
+//! The summary of a run ([`RunSummary`]): what `summary.json`, Python's `result.summary` and a sweep's
+//! store hold, built once from the library's results. `summary.json` is its serde form, and reading one
+//! back is deserialisation: a field that is renamed is a compile error, not a silent default. Its JSON
+//! Schema ([`RunSummary::json_schema`]) is `docs/summary.schema.json`.
+
+mod building;
+mod device;
+mod site;
+mod units;
+
+pub use building::{BuildingSummary, IsolatorSummary};
+pub use device::DeviceSummary;
+pub use site::{
+    BumperSummary, ContactLawSummary, DampingSummary, DeliveredE, LevelSummary, SitePlace,
+    SiteSummary, DELIVERED_E_NOTE,
+};
+
+use crate::input::Loaded;
+use pounding::analysis::Results;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// Largest energy balance error accepted without a warning.
+pub const BALANCE_WARNING: f64 = 1e-4;
+
+/// The record a run was under.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct RecordSummary {
+    /// A built-in record's name, or the file's path as given.
+    pub source: String,
+    /// The scale factor applied to it (dimensionless).
+    pub scale: f64,
+    /// Number of samples.
+    pub npts: usize,
+    /// Time step, s.
+    pub dt: f64,
+    /// Peak ground acceleration after scaling, m/s^2.
+    pub pga: f64,
+}
+
+/// The energies at the end of the analysis, J.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct EnergySummary {
+    /// Input energy `-int a_g 1^T M u' dt`, J.
+    pub input: f64,
+    /// Kinetic energy of the relative motion, J.
+    pub kinetic: f64,
+    /// Recoverable strain energy, J.
+    pub strain: f64,
+    /// Energy dissipated by viscous damping (structure and devices), J.
+    pub structural_damping: f64,
+    /// Energy dissipated by the storeys' hysteresis, J.
+    pub hysteretic: f64,
+    /// Work of the contact forces, J.
+    pub contact: f64,
+}
+
+/// The counts of the integration.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct StatisticsSummary {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected_steps: usize,
+    /// Events located and applied.
+    pub events: usize,
+}
+
+/// The summary of one run: the record, the settings, each building's modes and peak response, each contact
+/// site (contacts between neighbours and walls, in one list with their kind) with its law and totals, each
+/// device, the energy at the end and its balance error, the integration counts, and what the run says
+/// about its own accuracy. SI units throughout (`units` names them).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct RunSummary {
+    /// Where the scenario came from (its file, or a study's run).
+    pub scenario: String,
+    /// The record.
+    pub record: RecordSummary,
+    /// Analysed duration, s.
+    pub duration: f64,
+    /// Output interval of the histories, s.
+    pub output_dt: f64,
+    /// Relative tolerance of the integration.
+    pub tolerance: f64,
+    /// The buildings, left to right.
+    pub buildings: Vec<BuildingSummary>,
+    /// The contact sites: contacts between neighbours, left to right, then walls.
+    pub sites: Vec<SiteSummary>,
+    /// The devices.
+    pub devices: Vec<DeviceSummary>,
+    /// Energies at the end of the analysis.
+    pub energy: EnergySummary,
+    /// Largest `|input - kinetic - strain - damping - hysteretic - contact|` over the run, over the largest
+    /// energy (dimensionless).
+    pub energy_balance_error: f64,
+    /// The counts of the integration.
+    pub statistics: StatisticsSummary,
+    /// The unit of every number, by key.
+    pub units: serde_json::Map<String, serde_json::Value>,
+    /// What the run says about its own accuracy.
+    pub warnings: Vec<String>,
+}
+
+impl RunSummary {
+    /// The summary of a run of `loaded` that gave `r`. An error names the first number that is not finite
+    /// (a result file holds no NaN, infinity or null).
+    pub fn new(loaded: &Loaded, r: &Results) -> Result<RunSummary, String> {
+        let s = &loaded.scenario;
+        let rec = s.record();
+        let e = &r.energy.end;
+        let mut warnings = Vec::new();
+        // Accuracy that holds itself to account: a balance error above 1e-4 is said in the summary.
+        if r.energy.relative_error > BALANCE_WARNING {
+            warnings.push(format!(
+                "energy balance error {:.2e} is above 1e-4: the integration is not as accurate as the tolerance asks; rerun with a smaller tolerance",
+                r.energy.relative_error
+            ));
+        }
+        let summary = RunSummary {
+            scenario: loaded.label.clone(),
+            record: RecordSummary {
+                source: loaded.record_source.clone(),
+                scale: loaded.doc.ground_motion.scale,
+                npts: rec.npts(),
+                dt: rec.dt(),
+                pga: rec.peaks().pga,
+            },
+            duration: s.duration(),
+            output_dt: s.output_dt(),
+            tolerance: s.tolerance(),
+            buildings: s
+                .buildings()
+                .iter()
+                .zip(&r.buildings)
+                .map(|(b, resp)| BuildingSummary::of(b, resp))
+                .collect(),
+            sites: (0..s.sites().len())
+                .map(|i| SiteSummary::of(s, r, i))
+                .collect(),
+            devices: r
+                .devices
+                .iter()
+                .enumerate()
+                .map(|(i, d)| DeviceSummary::of(s, i, d))
+                .collect(),
+            energy: EnergySummary {
+                input: e.input,
+                kinetic: e.kinetic,
+                strain: e.strain,
+                structural_damping: e.damping,
+                hysteretic: e.hysteretic,
+                contact: e.contact,
+            },
+            energy_balance_error: r.energy.relative_error,
+            statistics: StatisticsSummary {
+                steps: r.statistics.steps,
+                rejected_steps: r.statistics.rejected,
+                events: r.statistics.events,
+            },
+            units: units::units(),
+            warnings,
+        };
+        match first_null(&summary.to_value(), "summary") {
+            Some(path) => Err(format!(
+                "the result {path} is not a finite number: the scenario's scales leave the range of floating-point numbers"
+            )),
+            None => Ok(summary),
+        }
+    }
+
+    /// As a JSON value (serde writes NaN and infinities as null).
+    pub fn to_value(&self) -> serde_json::Value {
+        serde_json::to_value(self).expect("a summary is JSON")
+    }
+
+    /// `summary.json`'s text: pretty-printed, with a final newline.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("a summary is JSON") + "\n"
+    }
+
+    /// A summary read back from its JSON text; the error says what does not fit.
+    pub fn from_json(text: &str) -> Result<RunSummary, String> {
+        let de = &mut serde_json::Deserializer::from_str(text);
+        serde_path_to_error::deserialize(de).map_err(|e| {
+            let path = e.path().to_string();
+            format!("{path}: {}", e.into_inner())
+        })
+    }
+
+    /// The JSON Schema of a summary (`docs/summary.schema.json`), pretty-printed with a final newline.
+    pub fn json_schema() -> String {
+        let schema = schemars::schema_for!(RunSummary);
+        serde_json::to_string_pretty(&schema).expect("a schema is JSON") + "\n"
+    }
+
+    /// The index of the building called `name`.
+    pub fn building(&self, name: &str) -> Option<usize> {
+        self.buildings.iter().position(|b| b.name == name)
+    }
+
+    /// The total number of impacts of every site.
+    pub fn impacts(&self) -> usize {
+        self.sites.iter().map(|s| s.impacts).sum()
+    }
+}
+
+/// The path of the first `null` in `v` (JSON has no NaN or infinity: serde writes them as null).
+fn first_null(v: &serde_json::Value, path: &str) -> Option<String> {
+    use serde_json::Value;
+    match v {
+        Value::Null => Some(path.to_string()),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(i, x)| first_null(x, &format!("{path}[{i}]"))),
+        Value::Object(o) => o
+            .iter()
+            .find_map(|(k, x)| first_null(x, &format!("{path}.{k}"))),
+        _ => None,
+    }
+}

@@ -1,0 +1,256 @@
+//! The summary of a contact site: a contact between neighbours or a wall, its law, and its totals.
+
+use pounding::analysis::{
+    Bumper, ContactSite, Level, Results, Scenario, Side, SiteKind, SiteResponse,
+};
+use pounding::contact::{DampingParameter, Model, PreparedContact};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// Where a site is: between two neighbouring buildings, or a wall beside one (`kind`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum SitePlace {
+    /// A contact between two neighbouring buildings.
+    Contact {
+        /// The left and the right building.
+        between: [String; 2],
+    },
+    /// A wall fixed to the ground beside a building.
+    Wall {
+        /// The building it faces.
+        facing: String,
+        /// Which side of that building.
+        side: Side,
+    },
+}
+
+/// One level of a site: the floor on each side of the joint, from 1 (absent on a wall's side).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+pub struct LevelSummary {
+    /// The floor of the left building, from 1 (absent: a wall on the left).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub left: Option<usize>,
+    /// The floor of the right building, from 1 (absent: a wall on the right).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub right: Option<usize>,
+}
+
+impl From<Level> for LevelSummary {
+    fn from(l: Level) -> Self {
+        Self {
+            left: l.left,
+            right: l.right,
+        }
+    }
+}
+
+/// The damping parameter a contact law was given (`name`, and its `value`, dimensionless).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(tag = "name", rename_all = "kebab-case")]
+pub enum DampingSummary {
+    /// An elastic law: no damping.
+    None,
+    /// Calibrated anew at every impact (`impact-material` with a given `max_penetration`).
+    PerImpact,
+    /// Damping ratio of a linear dashpot, `c = 2 zeta sqrt(k m)`.
+    Zeta {
+        /// Its value.
+        value: f64,
+    },
+    /// Hunt–Crossley factor.
+    Chi {
+        /// Its value.
+        value: f64,
+    },
+    /// `alpha` of Papi & Toopchi-Nezhad (2022).
+    Alpha {
+        /// Its value.
+        value: f64,
+    },
+    /// Jankowski's damping ratio.
+    Xi {
+        /// Its value.
+        value: f64,
+    },
+    /// The design `e` of the bilinear loop.
+    #[serde(rename = "e_design")]
+    EDesign {
+        /// Its value.
+        value: f64,
+    },
+}
+
+impl DampingSummary {
+    /// The parameter fixed for a prepared contact (`None`: per impact).
+    pub fn of(p: Option<DampingParameter>) -> Self {
+        match p {
+            None => DampingSummary::PerImpact,
+            Some(DampingParameter::None) => DampingSummary::None,
+            Some(DampingParameter::Zeta(value)) => DampingSummary::Zeta { value },
+            Some(DampingParameter::Chi(value)) => DampingSummary::Chi { value },
+            Some(DampingParameter::Papi { alpha, .. }) => DampingSummary::Alpha { value: alpha },
+            Some(DampingParameter::Xi(value)) => DampingSummary::Xi { value },
+            Some(DampingParameter::EDesign(value)) => DampingSummary::EDesign { value },
+        }
+    }
+}
+
+/// A contact law as it was run.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct ContactLawSummary {
+    /// The contact model.
+    pub model: Model,
+    /// The coefficient of restitution asked of it (dimensionless).
+    pub e: f64,
+    /// Stiffness, N/m^exponent.
+    pub stiffness: f64,
+    /// Exponent of the force law (dimensionless).
+    pub exponent: f64,
+    /// Its damping parameter.
+    pub damping_parameter: DampingSummary,
+}
+
+impl ContactLawSummary {
+    /// The law of `contact`.
+    pub fn of(contact: &PreparedContact) -> Self {
+        let spec = contact.spec();
+        Self {
+            model: spec.model(),
+            e: spec.restitution(),
+            stiffness: spec.stiffness(),
+            exponent: spec.exponent(),
+            damping_parameter: DampingSummary::of(contact.parameter()),
+        }
+    }
+}
+
+/// A bumper on a site's face.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct BumperSummary {
+    /// Thickness of the layer, m.
+    pub thickness: f64,
+    /// Compressive strain at which the layer is consumed (dimensionless).
+    pub max_strain: f64,
+    /// The layer's law.
+    #[serde(flatten)]
+    pub law: ContactLawSummary,
+}
+
+impl BumperSummary {
+    fn of(b: &Bumper) -> Self {
+        Self {
+            thickness: b.thickness,
+            max_strain: b.max_strain,
+            law: ContactLawSummary::of(&b.contact),
+        }
+    }
+}
+
+/// The range of the coefficient of restitution that a site's ended impacts delivered.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct DeliveredE {
+    /// Smallest, dimensionless.
+    pub min: f64,
+    /// Largest, dimensionless.
+    pub max: f64,
+    /// Why it differs from the e asked.
+    pub note: String,
+}
+
+/// Why the delivered e of a contact inside a run differs from the e asked of it.
+pub const DELIVERED_E_NOTE: &str = "separation over approach velocity; the calibration is exact for two free bodies, and the storey, \
+     damping and other forces on the floors act during each contact (docs/verification.md, \"Impacts inside a run\")";
+
+/// A contact site as it was run, and its totals.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct SiteSummary {
+    /// Between neighbours, or a wall.
+    #[serde(flatten)]
+    pub place: SitePlace,
+    /// Its name: `left|right` between neighbours, the wall's name for a wall.
+    pub name: String,
+    /// Gap at rest, m.
+    pub gap: f64,
+    /// Its levels, each a contact element.
+    pub levels: Vec<LevelSummary>,
+    /// Its law (behind the bumper, if there is one).
+    #[serde(flatten)]
+    pub law: ContactLawSummary,
+    /// The bumper on its face.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bumper: Option<BumperSummary>,
+    /// Impacts of the hard law behind a consumed bumper (with a bumper only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub consumed: Option<usize>,
+    /// Number of impacts (on the bumper's face, if there is one).
+    pub impacts: usize,
+    /// Largest contact force of a level, N.
+    pub peak_force: f64,
+    /// Largest penetration of any impact, m.
+    pub max_penetration: f64,
+    /// Energy dissipated by the site's contacts, J.
+    pub dissipated_energy: f64,
+    /// Largest closing of each level, m (`u_left - u_right`; for a wall, a floor's displacement towards it).
+    pub max_closing: Vec<f64>,
+    /// Largest opening of each level, m (`u_right - u_left`; for a wall, away from it).
+    pub max_opening: Vec<f64>,
+    /// Seat length of the joint, m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seat: Option<f64>,
+    /// Whether the largest opening exceeded the seat.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unseated: Option<bool>,
+    /// The delivered e of its ended impacts (absent without one).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub e_delivered: Option<DeliveredE>,
+}
+
+impl SiteSummary {
+    /// Site `i` of `s` and its totals in `r`.
+    pub fn of(s: &Scenario, r: &Results, i: usize) -> Self {
+        let (site, lr): (&ContactSite, &SiteResponse) = (&s.sites()[i], &r.sites[i]);
+        let names = |b: usize| s.buildings()[b].name.clone();
+        let place = match site.kind {
+            SiteKind::Between { left, right } => SitePlace::Contact {
+                between: [names(left), names(right)],
+            },
+            SiteKind::Wall { building, side } => SitePlace::Wall {
+                facing: names(building),
+                side,
+            },
+        };
+        Self {
+            place,
+            name: site.name.clone(),
+            gap: site.gap,
+            levels: site.levels.iter().map(|&l| l.into()).collect(),
+            law: ContactLawSummary::of(&site.contact),
+            bumper: site.bumper.as_ref().map(BumperSummary::of),
+            consumed: site.bumper.as_ref().map(|_| lr.consumed),
+            impacts: lr.impacts,
+            peak_force: lr.peak_force,
+            max_penetration: lr.max_penetration,
+            dissipated_energy: lr.dissipated_energy,
+            max_closing: lr.max_closing.clone(),
+            max_opening: lr.max_opening.clone(),
+            seat: site.seat,
+            unseated: site.seat.and(lr.unseated),
+            e_delivered: r.delivered_e(i).map(|(min, max)| DeliveredE {
+                min,
+                max,
+                note: DELIVERED_E_NOTE.into(),
+            }),
+        }
+    }
+
+    /// Whether it is a wall.
+    pub fn is_wall(&self) -> bool {
+        matches!(self.place, SitePlace::Wall { .. })
+    }
+
+    /// The largest opening of any level, m.
+    pub fn largest_opening(&self) -> f64 {
+        self.max_opening.iter().fold(0.0, |a, &b| a.max(b))
+    }
+}

@@ -1,0 +1,546 @@
+//! The tables of a run's output folder, one row type each, written and read by the `csv` crate (fields with
+//! commas, quotes or line breaks are quoted; numbers are written in their shortest round-trip form):
+//!
+//! - `impacts.csv`: one [`ImpactRow`] per impact;
+//! - `impact-loops.csv`: one [`LoopRow`] per point of each impact's force–penetration path;
+//! - `energy.csv`: one [`EnergyRow`] per output time;
+//! - `response.csv`: the histories, one column per [`Column`] (their names come from the summary, so a
+//!   table is read back against the summary it belongs to, never by guessing names).
+//!
+//! Writers take any [`std::io::Write`] and readers any [`std::io::Read`]: opening files is the caller's.
+
+use crate::summary::{RunSummary, SitePlace};
+use pounding::analysis::{Histories, ImpactLoop, Layer, Results, Scenario};
+use serde::{Deserialize, Serialize};
+use std::io::{Read, Write};
+
+/// A table that could not be written (the writer's I/O error) or read (what does not fit, one line).
+#[derive(Debug)]
+pub enum TableError {
+    /// Writing failed.
+    Io(std::io::Error),
+    /// The table does not read as it should.
+    Invalid(String),
+}
+
+impl std::fmt::Display for TableError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            TableError::Io(e) => e.fmt(f),
+            TableError::Invalid(m) => f.write_str(m),
+        }
+    }
+}
+
+impl From<csv::Error> for TableError {
+    fn from(e: csv::Error) -> Self {
+        if e.is_io_error() {
+            if let csv::ErrorKind::Io(io) = e.into_kind() {
+                return TableError::Io(io);
+            }
+            unreachable!("an I/O error's kind is Io");
+        }
+        TableError::Invalid(e.to_string())
+    }
+}
+
+impl From<std::io::Error> for TableError {
+    fn from(e: std::io::Error) -> Self {
+        TableError::Io(e)
+    }
+}
+
+/// One impact (a row of `impacts.csv`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ImpactRow {
+    /// Time of touch, s.
+    pub time_s: f64,
+    /// The site's name (`left|right`, or a wall's name).
+    pub contact: String,
+    /// Floor of the left building, from 1 (blank on a wall's side).
+    pub floor_left: Option<usize>,
+    /// Floor of the right building, from 1 (blank on a wall's side).
+    pub floor_right: Option<usize>,
+    /// Which law: `direct`, `bumper` or `consumed`.
+    pub layer: Layer,
+    /// Relative velocity at touch, m/s.
+    pub v_i_m_per_s: f64,
+    /// Delivered coefficient of restitution `-v_out / v_i` (blank if the impact had not ended, or rested).
+    pub e_post: Option<f64>,
+    /// Largest contact force, N.
+    #[serde(rename = "peak_force_N")]
+    pub peak_force_n: f64,
+    /// Time of the largest force, s.
+    pub time_of_peak_force_s: f64,
+    /// Duration of contact, s.
+    pub duration_s: f64,
+    /// Work of the contact force over the impact, J.
+    #[serde(rename = "dissipated_energy_J")]
+    pub dissipated_energy_j: f64,
+    /// Largest penetration, m.
+    pub max_penetration_m: f64,
+    /// Whether the impact had ended before the analysis stopped.
+    pub ended: bool,
+    /// A resting contact (closing slower than the smallest impact velocity).
+    pub resting: bool,
+}
+
+impl ImpactRow {
+    /// The rows of every impact of `r`, in time order.
+    pub fn all(s: &Scenario, r: &Results) -> Vec<ImpactRow> {
+        r.impacts
+            .iter()
+            .map(|i| {
+                let site = &s.sites()[i.site];
+                let level = site.levels[i.level];
+                ImpactRow {
+                    time_s: i.time,
+                    contact: site.name.clone(),
+                    floor_left: level.left,
+                    floor_right: level.right,
+                    layer: i.layer,
+                    v_i_m_per_s: i.v_i,
+                    e_post: i.e_post,
+                    peak_force_n: i.peak_force,
+                    time_of_peak_force_s: i.time_of_peak_force,
+                    duration_s: i.duration,
+                    dissipated_energy_j: i.dissipated_energy,
+                    max_penetration_m: i.max_penetration,
+                    ended: i.ended,
+                    resting: i.resting,
+                }
+            })
+            .collect()
+    }
+
+    /// The index of its site in `summary.sites`, and of its level.
+    pub fn place(&self, summary: &RunSummary) -> Option<(usize, usize)> {
+        let site = summary.sites.iter().position(|s| s.name == self.contact)?;
+        let level = summary.sites[site]
+            .levels
+            .iter()
+            .position(|l| l.left == self.floor_left && l.right == self.floor_right)?;
+        Some((site, level))
+    }
+}
+
+/// One point of an impact's force–penetration path (a row of `impact-loops.csv`): its touch, the end of
+/// every accepted integration step in contact and its located peak, in time order.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LoopRow {
+    /// The impact: its row in `impacts.csv`, from 1.
+    pub impact: usize,
+    /// The site's name.
+    pub contact: String,
+    /// Floor of the left building (blank on a wall's side).
+    pub floor_left: Option<usize>,
+    /// Floor of the right building (blank on a wall's side).
+    pub floor_right: Option<usize>,
+    /// 1 when every step is kept; `2^k` for an impact that outgrew the cap on points.
+    pub stride: usize,
+    /// Time, s.
+    pub t_s: f64,
+    /// Penetration, m.
+    pub penetration_m: f64,
+    /// Contact force, N.
+    #[serde(rename = "force_N")]
+    pub force_n: f64,
+}
+
+impl LoopRow {
+    /// The rows of every impact's path of `r` (in the order of its impacts).
+    pub fn all(s: &Scenario, r: &Results) -> Vec<LoopRow> {
+        let mut out = Vec::new();
+        for (k, (i, l)) in r.impacts.iter().zip(&r.histories.impact_loops).enumerate() {
+            let site = &s.sites()[i.site];
+            let level = site.levels[i.level];
+            for ((&t, &d), &f) in l.t.iter().zip(&l.penetration).zip(&l.force) {
+                out.push(LoopRow {
+                    impact: k + 1,
+                    contact: site.name.clone(),
+                    floor_left: level.left,
+                    floor_right: level.right,
+                    stride: l.stride,
+                    t_s: t,
+                    penetration_m: d,
+                    force_n: f,
+                });
+            }
+        }
+        out
+    }
+
+    /// The paths of `rows`, impact by impact: `(impact index from 0, its path)`.
+    pub fn paths(rows: &[LoopRow]) -> Vec<(usize, ImpactLoop)> {
+        let mut out: Vec<(usize, ImpactLoop)> = Vec::new();
+        for r in rows {
+            let k = r.impact.saturating_sub(1);
+            if out.last().is_none_or(|(i, _)| *i != k) {
+                out.push((
+                    k,
+                    ImpactLoop {
+                        stride: r.stride,
+                        ..ImpactLoop::default()
+                    },
+                ));
+            }
+            let l = &mut out.last_mut().expect("a path").1;
+            l.t.push(r.t_s);
+            l.penetration.push(r.penetration_m);
+            l.force.push(r.force_n);
+        }
+        out
+    }
+}
+
+/// The energies at one output time (a row of `energy.csv`), J.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[allow(non_snake_case)]
+pub struct EnergyRow {
+    /// Time, s.
+    pub time_s: f64,
+    /// Input energy, J.
+    pub input_J: f64,
+    /// Kinetic energy, J.
+    pub kinetic_J: f64,
+    /// Recoverable strain energy, J.
+    pub strain_J: f64,
+    /// Viscous damping, J.
+    pub structural_damping_J: f64,
+    /// Hysteretic dissipation, J.
+    pub hysteretic_J: f64,
+    /// Contact work, J.
+    pub contact_J: f64,
+    /// `input - kinetic - strain - damping - hysteretic - contact`, J.
+    pub balance_error_J: f64,
+}
+
+impl EnergyRow {
+    /// The rows of the histories `h`.
+    pub fn all(h: &Histories) -> Vec<EnergyRow> {
+        (0..h.t.len())
+            .map(|k| {
+                let e: [f64; 6] = std::array::from_fn(|c| h.energy[c][k]);
+                EnergyRow {
+                    time_s: h.t[k],
+                    input_J: e[0],
+                    kinetic_J: e[1],
+                    strain_J: e[2],
+                    structural_damping_J: e[3],
+                    hysteretic_J: e[4],
+                    contact_J: e[5],
+                    balance_error_J: e[0] - e[1..].iter().sum::<f64>(),
+                }
+            })
+            .collect()
+    }
+
+    /// The six energies, J: input, kinetic, strain, damping, hysteretic, contact.
+    pub fn terms(&self) -> [f64; 6] {
+        [
+            self.input_J,
+            self.kinetic_J,
+            self.strain_J,
+            self.structural_damping_J,
+            self.hysteretic_J,
+            self.contact_J,
+        ]
+    }
+}
+
+/// A row type of a table, with its header (the names of its fields, with their units).
+pub trait Table: Serialize + for<'de> Deserialize<'de> {
+    /// The file the table is (`impacts.csv`).
+    const FILE: &'static str;
+    /// Its header, column by column.
+    const HEADER: &'static [&'static str];
+}
+
+impl Table for ImpactRow {
+    const FILE: &'static str = "impacts.csv";
+    const HEADER: &'static [&'static str] = &[
+        "time_s",
+        "contact",
+        "floor_left",
+        "floor_right",
+        "layer",
+        "v_i_m_per_s",
+        "e_post",
+        "peak_force_N",
+        "time_of_peak_force_s",
+        "duration_s",
+        "dissipated_energy_J",
+        "max_penetration_m",
+        "ended",
+        "resting",
+    ];
+}
+
+impl Table for LoopRow {
+    const FILE: &'static str = "impact-loops.csv";
+    const HEADER: &'static [&'static str] = &[
+        "impact",
+        "contact",
+        "floor_left",
+        "floor_right",
+        "stride",
+        "t_s",
+        "penetration_m",
+        "force_N",
+    ];
+}
+
+impl Table for EnergyRow {
+    const FILE: &'static str = "energy.csv";
+    const HEADER: &'static [&'static str] = &[
+        "time_s",
+        "input_J",
+        "kinetic_J",
+        "strain_J",
+        "structural_damping_J",
+        "hysteretic_J",
+        "contact_J",
+        "balance_error_J",
+    ];
+}
+
+/// Writes `rows` as a CSV table under its header.
+pub fn write_rows<T: Table>(w: impl Write, rows: &[T]) -> Result<(), TableError> {
+    let mut wtr = csv::WriterBuilder::new().has_headers(false).from_writer(w);
+    wtr.write_record(T::HEADER)?;
+    for r in rows {
+        wtr.serialize(r)?;
+    }
+    wtr.flush()?;
+    Ok(())
+}
+
+/// Reads a CSV table of rows of `T`, under its header.
+pub fn read_rows<T: Table>(r: impl Read) -> Result<Vec<T>, TableError> {
+    let mut rdr = csv::ReaderBuilder::new().has_headers(true).from_reader(r);
+    let header = rdr.headers()?.clone();
+    if header.iter().ne(T::HEADER.iter().copied()) {
+        return Err(TableError::Invalid(format!(
+            "{}: the header is not {}",
+            T::FILE,
+            T::HEADER.join(",")
+        )));
+    }
+    let mut out = Vec::new();
+    for (k, row) in rdr.deserialize().enumerate() {
+        out.push(row.map_err(|e| TableError::Invalid(format!("{}: row {}: {e}", T::FILE, k + 1)))?);
+    }
+    Ok(out)
+}
+
+/// A column of `response.csv`: floors, storeys, levels and pairs counted from 0 here, from 1 in its name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Column {
+    /// Time, s.
+    Time,
+    /// Ground acceleration, m/s^2.
+    GroundAcceleration,
+    /// A floor's displacement relative to the ground, m.
+    Displacement {
+        /// Index of the building.
+        building: usize,
+        /// Index of the floor.
+        floor: usize,
+    },
+    /// The contact force of a site's level, N.
+    SiteForce {
+        /// Index of the site.
+        site: usize,
+        /// Index of the level.
+        level: usize,
+    },
+    /// The force of a device's floor pair (elastic and viscous), N.
+    DeviceForce {
+        /// Index of the device.
+        device: usize,
+        /// Index of the floor pair.
+        pair: usize,
+    },
+    /// A floor's absolute acceleration, m/s^2.
+    AbsoluteAcceleration {
+        /// Index of the building.
+        building: usize,
+        /// Index of the floor.
+        floor: usize,
+    },
+    /// A storey's restoring force, N.
+    StoreyShear {
+        /// Index of the building.
+        building: usize,
+        /// Index of the storey.
+        storey: usize,
+    },
+}
+
+impl Column {
+    /// The columns of `response.csv` of a run summarised by `s`, in order: time, ground acceleration,
+    /// displacements, site forces, device forces, absolute accelerations, storey shears.
+    pub fn all(s: &RunSummary) -> Vec<Column> {
+        let mut out = vec![Column::Time, Column::GroundAcceleration];
+        let floors = |b: &crate::summary::BuildingSummary| 0..b.storeys;
+        for (building, b) in s.buildings.iter().enumerate() {
+            out.extend(floors(b).map(|floor| Column::Displacement { building, floor }));
+        }
+        for (site, st) in s.sites.iter().enumerate() {
+            out.extend((0..st.levels.len()).map(|level| Column::SiteForce { site, level }));
+        }
+        for (device, d) in s.devices.iter().enumerate() {
+            out.extend((0..d.floors.len()).map(|pair| Column::DeviceForce { device, pair }));
+        }
+        for (building, b) in s.buildings.iter().enumerate() {
+            out.extend(floors(b).map(|floor| Column::AbsoluteAcceleration { building, floor }));
+        }
+        for (building, b) in s.buildings.iter().enumerate() {
+            out.extend(floors(b).map(|storey| Column::StoreyShear { building, storey }));
+        }
+        out
+    }
+
+    /// Its name in the header, with its unit.
+    pub fn header(&self, s: &RunSummary) -> String {
+        match *self {
+            Column::Time => "time_s".into(),
+            Column::GroundAcceleration => "ground_acceleration_m_per_s2".into(),
+            Column::Displacement { building, floor } => format!(
+                "{}_floor{}_displacement_m",
+                s.buildings[building].name,
+                floor + 1
+            ),
+            Column::SiteForce { site, level } => {
+                let st = &s.sites[site];
+                let l = st.levels[level];
+                match st.place {
+                    SitePlace::Contact { .. } => format!(
+                        "{}_floors{}-{}_force_N",
+                        st.name,
+                        l.left.unwrap_or(0),
+                        l.right.unwrap_or(0)
+                    ),
+                    SitePlace::Wall { .. } => format!(
+                        "{}_floor{}_force_N",
+                        st.name,
+                        l.left.or(l.right).unwrap_or(0)
+                    ),
+                }
+            }
+            Column::DeviceForce { device, pair } => {
+                let d = &s.devices[device];
+                let [i, j] = d.floors[pair];
+                format!("{}_floors{i}-{j}_force_N", d.name)
+            }
+            Column::AbsoluteAcceleration { building, floor } => format!(
+                "{}_floor{}_absolute_acceleration_m_per_s2",
+                s.buildings[building].name,
+                floor + 1
+            ),
+            Column::StoreyShear { building, storey } => format!(
+                "{}_storey{}_shear_N",
+                s.buildings[building].name,
+                storey + 1
+            ),
+        }
+    }
+
+    /// Its values in `h`.
+    fn values<'h>(&self, h: &'h Histories) -> &'h [f64] {
+        match *self {
+            Column::Time => &h.t,
+            Column::GroundAcceleration => &h.ground_acceleration,
+            Column::Displacement { building, floor } => &h.displacement[building][floor],
+            Column::SiteForce { site, level } => &h.site_force[site][level],
+            Column::DeviceForce { device, pair } => &h.device_force[device][pair],
+            Column::AbsoluteAcceleration { building, floor } => {
+                &h.absolute_acceleration[building][floor]
+            }
+            Column::StoreyShear { building, storey } => &h.storey_shear[building][storey],
+        }
+    }
+
+    /// Its values in `h`, to fill.
+    fn values_mut<'h>(&self, h: &'h mut Histories) -> &'h mut Vec<f64> {
+        match *self {
+            Column::Time => &mut h.t,
+            Column::GroundAcceleration => &mut h.ground_acceleration,
+            Column::Displacement { building, floor } => &mut h.displacement[building][floor],
+            Column::SiteForce { site, level } => &mut h.site_force[site][level],
+            Column::DeviceForce { device, pair } => &mut h.device_force[device][pair],
+            Column::AbsoluteAcceleration { building, floor } => {
+                &mut h.absolute_acceleration[building][floor]
+            }
+            Column::StoreyShear { building, storey } => &mut h.storey_shear[building][storey],
+        }
+    }
+}
+
+/// Writes `response.csv` of the histories `h` of a run summarised by `s`.
+pub fn write_response(w: impl Write, s: &RunSummary, h: &Histories) -> Result<(), TableError> {
+    let columns = Column::all(s);
+    let mut wtr = csv::WriterBuilder::new().has_headers(false).from_writer(w);
+    wtr.write_record(columns.iter().map(|c| c.header(s)))?;
+    let values: Vec<&[f64]> = columns.iter().map(|c| c.values(h)).collect();
+    let mut buf = ryu::Buffer::new();
+    for k in 0..h.t.len() {
+        for v in &values {
+            wtr.write_field(buf.format(v[k]))?;
+        }
+        wtr.write_record(None::<&[u8]>)?;
+    }
+    wtr.flush()?;
+    Ok(())
+}
+
+/// Reads `response.csv` of a run summarised by `s` back into histories (without energies and paths): its
+/// header must be the one `s` gives, column for column.
+pub fn read_response(r: impl Read, s: &RunSummary) -> Result<Histories, TableError> {
+    let columns = Column::all(s);
+    let mut rdr = csv::ReaderBuilder::new().has_headers(true).from_reader(r);
+    let header = rdr.headers()?.clone();
+    let bad = |m: String| TableError::Invalid(format!("response.csv: {m}"));
+    if header.len() != columns.len() {
+        return Err(bad(format!(
+            "{} columns, where summary.json describes {}",
+            header.len(),
+            columns.len()
+        )));
+    }
+    for (k, (got, c)) in header.iter().zip(&columns).enumerate() {
+        let want = c.header(s);
+        if got != want {
+            return Err(bad(format!(
+                "column {} is {got:?}, where summary.json gives {want:?}",
+                k + 1
+            )));
+        }
+    }
+    let per = |n: &dyn Fn(usize) -> usize, count: usize| -> Vec<Vec<Vec<f64>>> {
+        (0..count).map(|i| vec![Vec::new(); n(i)]).collect()
+    };
+    let floors = |b: usize| s.buildings[b].storeys;
+    let mut h = Histories {
+        displacement: per(&floors, s.buildings.len()),
+        absolute_acceleration: per(&floors, s.buildings.len()),
+        storey_shear: per(&floors, s.buildings.len()),
+        site_force: per(&|i| s.sites[i].levels.len(), s.sites.len()),
+        device_force: per(&|i| s.devices[i].floors.len(), s.devices.len()),
+        ..Histories::default()
+    };
+    let mut record = csv::StringRecord::new();
+    let mut row = 0;
+    while rdr.read_record(&mut record)? {
+        row += 1;
+        for (field, c) in record.iter().zip(&columns) {
+            let x: f64 = field
+                .parse()
+                .ok()
+                .filter(|x: &f64| x.is_finite())
+                .ok_or_else(|| bad(format!("row {row}: {field:?} is not a finite number")))?;
+            c.values_mut(&mut h).push(x);
+        }
+    }
+    Ok(h)
+}
