@@ -1,8 +1,47 @@
 //! Command-line syntax (clap). Values are parsed here; ranges are checked once, by the library.
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
-use pounding::contact::{AlphaRule, Damping, Model, Reading, Tension};
+use clap::builder::{PossibleValue, TypedValueParser};
+use clap::{Args, Parser, Subcommand};
+use pounding::contact::{AlphaRule, AlphaWord, ContactOptions, Damping, Model, Reading, Tension};
+use pounding::ground_motion::synthetic::{FilterKind, SyntheticParams};
 use pounding::ground_motion::Units;
+use pounding::names::Named;
+use pounding::scenario::FormatName;
+use std::marker::PhantomData;
+
+/// The value parser of a named choice ([`Named`]): its names are the possible values `--help` lists, and a
+/// wrong name gets the library's message, with the name it most likely meant.
+#[derive(Clone)]
+pub struct NamedParser<T>(PhantomData<T>);
+
+/// The parser of the choices of `T`.
+pub fn named<T: Named + Clone + Send + Sync + 'static>() -> NamedParser<T> {
+    NamedParser(PhantomData)
+}
+
+impl<T: Named + Clone + Send + Sync + 'static> TypedValueParser for NamedParser<T> {
+    type Value = T;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<T, clap::Error> {
+        let text = value.to_string_lossy();
+        T::parse_name(&text).map_err(|m| {
+            let flag = arg
+                .and_then(|a| a.get_long())
+                .map_or(String::new(), |l| format!("--{l}: "));
+            clap::Error::raw(clap::error::ErrorKind::InvalidValue, format!("{flag}{m}\n"))
+                .with_cmd(cmd)
+        })
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
+        Some(Box::new(T::names().into_iter().map(PossibleValue::new)))
+    }
+}
 
 /// Contact models, single impacts and structural pounding. SI units: m, s, kg, N (k in N/m^n).
 #[derive(Parser, Debug)]
@@ -170,12 +209,6 @@ pub enum RecordCmd {
     Synth(SynthArgs),
 }
 
-#[derive(ValueEnum, Clone, Copy, Debug)]
-pub enum FilterArg {
-    KanaiTajimi,
-    CloughPenzien,
-}
-
 /// A synthetic ground motion's parameters.
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
@@ -187,38 +220,57 @@ pub struct SynthArgs {
     #[arg(long, value_name = "FILE")]
     pub out: std::path::PathBuf,
     /// Filters of the white noise.
-    #[arg(long, value_enum, default_value_t = FilterArg::CloughPenzien)]
-    pub filter: FilterArg,
+    #[arg(long, value_parser = named::<FilterKind>(), default_value_t = SyntheticParams::default().filter)]
+    pub filter: FilterKind,
     /// Circular frequency of the soil filter, rad/s.
-    #[arg(long, default_value_t = 15.6)]
+    #[arg(long, default_value_t = SyntheticParams::default().wg)]
     pub wg: f64,
     /// Damping ratio of the soil filter.
-    #[arg(long, default_value_t = 0.6)]
+    #[arg(long, default_value_t = SyntheticParams::default().zg)]
     pub zg: f64,
     /// Circular frequency of the high-pass filter (clough-penzien), rad/s.
-    #[arg(long, default_value_t = 1.56)]
+    #[arg(long, default_value_t = SyntheticParams::default().wf)]
     pub wf: f64,
     /// Damping ratio of the high-pass filter (clough-penzien).
-    #[arg(long, default_value_t = 0.6)]
+    #[arg(long, default_value_t = SyntheticParams::default().zf)]
     pub zf: f64,
     /// Duration, s.
-    #[arg(long, default_value_t = 20.0)]
+    #[arg(long, default_value_t = SyntheticParams::default().duration)]
     pub duration: f64,
     /// Time step, s.
-    #[arg(long, default_value_t = 0.01)]
+    #[arg(long, default_value_t = SyntheticParams::default().dt)]
     pub dt: f64,
     /// End of the envelope's rise (t/t1)^2, s.
-    #[arg(long, default_value_t = 2.0)]
+    #[arg(long, default_value_t = SyntheticParams::default().t1)]
     pub t1: f64,
     /// End of the envelope's strong phase, s.
-    #[arg(long, default_value_t = 10.0)]
+    #[arg(long, default_value_t = SyntheticParams::default().t2)]
     pub t2: f64,
     /// Decay rate of the envelope after t2, 1/s.
-    #[arg(long, default_value_t = 0.3)]
+    #[arg(long, default_value_t = SyntheticParams::default().decay)]
     pub decay: f64,
     /// Peak ground acceleration of the record, m/s^2.
-    #[arg(long, default_value_t = 3.0)]
+    #[arg(long, default_value_t = SyntheticParams::default().pga)]
     pub pga: f64,
+}
+
+impl SynthArgs {
+    /// The record's parameters.
+    pub fn params(&self) -> SyntheticParams {
+        SyntheticParams {
+            filter: self.filter,
+            wg: self.wg,
+            zg: self.zg,
+            wf: self.wf,
+            zf: self.zf,
+            duration: self.duration,
+            dt: self.dt,
+            t1: self.t1,
+            t2: self.t2,
+            decay: self.decay,
+            pga: self.pga,
+        }
+    }
 }
 
 /// A record and the oscillators of its spectrum.
@@ -248,8 +300,8 @@ pub struct RecordArgs {
     pub file: String,
     /// File format [default: at2 for a file with the PEER AT2 header (NPTS and DT on line 4) or named
     /// *.at2, time-acc otherwise].
-    #[arg(long, value_enum)]
-    pub format: Option<FormatArg>,
+    #[arg(long, value_parser = named::<FormatName>())]
+    pub format: Option<FormatName>,
     /// Time step of a `values` file, s.
     #[arg(long)]
     pub dt: Option<f64>,
@@ -263,13 +315,6 @@ pub struct RecordArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug)]
-pub enum FormatArg {
-    At2,
-    TimeAcc,
-    Values,
 }
 
 /// `--units`: the library's one reading of a units name.
@@ -303,7 +348,7 @@ pub enum PaperTable {
 #[derive(Args, Debug, Clone)]
 pub struct ModelArgs {
     /// Contact model (see `pounding models`).
-    #[arg(long, value_parser = parse_model)]
+    #[arg(long, value_parser = named::<Model>())]
     pub model: Model,
     /// Requested coefficient of restitution e_pre, 0 < e <= 1.
     #[arg(long)]
@@ -312,22 +357,22 @@ pub struct ModelArgs {
     #[arg(long)]
     pub n: Option<f64>,
     /// Damping: the published formula, or the exact value that delivers e.
-    #[arg(long, value_enum, default_value_t = DampingArg::Formula)]
-    pub damping: DampingArg,
+    #[arg(long, value_parser = named::<Damping>(), default_value_t = ContactOptions::default().damping)]
+    pub damping: Damping,
     /// alpha of papi: a number >= 0, eq8 (eq (8) of Papi & Toopchi-Nezhad (2022), as printed) or calibrate [default: calibrate].
     #[arg(long, value_parser = parse_alpha)]
     pub alpha: Option<AlphaRule>,
     /// Reading of papi's force law.
-    #[arg(long, value_enum, default_value_t = ReadingArg::EnergySplit)]
-    pub reading: ReadingArg,
+    #[arg(long, value_parser = named::<Reading>(), default_value_t = ContactOptions::default().reading)]
+    pub reading: Reading,
     /// May the force become tensile late in restitution? [default: allow for kelvin-voigt, clamp otherwise]
-    #[arg(long, value_enum)]
-    pub tension: Option<TensionArg>,
+    #[arg(long, value_parser = named::<Tension>())]
+    pub tension: Option<Tension>,
     /// impact-material: expected maximum penetration d_m, m [default: the elastic Hertz penetration].
     #[arg(long)]
     pub max_penetration: Option<f64>,
     /// impact-material: yield ratio a = d_y / d_m, 0 < a < 1.
-    #[arg(long, default_value_t = 0.1)]
+    #[arg(long, default_value_t = ContactOptions::default().yield_ratio)]
     pub yield_ratio: f64,
 }
 
@@ -338,10 +383,10 @@ impl ModelArgs {
             model: self.model,
             e: self.e,
             exponent: self.n,
-            damping: self.damping.into(),
+            damping: self.damping,
             alpha: self.alpha,
-            reading: self.reading.into(),
-            tension: self.tension.map(Into::into),
+            reading: self.reading,
+            tension: self.tension,
             max_penetration: self.max_penetration,
             yield_ratio: self.yield_ratio,
         }
@@ -389,14 +434,14 @@ pub struct ImpactArgs {
 #[command(allow_negative_numbers = true)]
 pub struct CompareArgs {
     /// Contact models, comma-separated (see `pounding models`).
-    #[arg(long, value_delimiter = ',', value_parser = parse_model, required = true)]
+    #[arg(long, value_delimiter = ',', value_parser = named::<Model>(), required = true)]
     pub models: Vec<Model>,
     /// Requested coefficient of restitution e_pre, 0 < e <= 1.
     #[arg(long)]
     pub e: f64,
     /// Damping: the published formula, or the exact value that delivers e.
-    #[arg(long, value_enum, default_value_t = DampingArg::Formula)]
-    pub damping: DampingArg,
+    #[arg(long, value_parser = named::<Damping>(), default_value_t = ContactOptions::default().damping)]
+    pub damping: Damping,
     /// Hertz stiffness k_h, N/m^1.5, of the models with n = 1.5. A model with another n gets the
     /// equivalent k_h d_h^(1.5 - n), d_h the elastic Hertz penetration, so all reach about the same
     /// penetration.
@@ -415,17 +460,17 @@ pub struct CompareArgs {
 #[command(allow_negative_numbers = true)]
 pub struct CalibrateArgs {
     /// Contact model (see `pounding models`).
-    #[arg(long, value_parser = parse_model)]
+    #[arg(long, value_parser = named::<Model>())]
     pub model: Model,
     /// Requested coefficient of restitution e_pre, 0 < e <= 1.
     #[arg(long)]
     pub e: f64,
     /// Reading of papi's force law.
-    #[arg(long, value_enum, default_value_t = ReadingArg::EnergySplit)]
-    pub reading: ReadingArg,
+    #[arg(long, value_parser = named::<Reading>(), default_value_t = ContactOptions::default().reading)]
+    pub reading: Reading,
     /// Tension rule (changes the exact zeta of kelvin-voigt).
-    #[arg(long, value_enum)]
-    pub tension: Option<TensionArg>,
+    #[arg(long, value_parser = named::<Tension>())]
+    pub tension: Option<Tension>,
     /// Exponent n (changes the exact xi of jankowski and e_design of impact-material).
     #[arg(long)]
     pub n: Option<f64>,
@@ -464,69 +509,16 @@ pub struct DropArgs {
     pub out: OutArgs,
 }
 
-#[derive(ValueEnum, Clone, Copy, Debug)]
-pub enum DampingArg {
-    Formula,
-    Exact,
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug)]
-pub enum ReadingArg {
-    EnergySplit,
-    SameDamping,
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug)]
-pub enum TensionArg {
-    Allow,
-    Clamp,
-}
-
-impl From<DampingArg> for Damping {
-    fn from(d: DampingArg) -> Self {
-        match d {
-            DampingArg::Formula => Damping::Formula,
-            DampingArg::Exact => Damping::Exact,
-        }
-    }
-}
-
-impl From<ReadingArg> for Reading {
-    fn from(r: ReadingArg) -> Self {
-        match r {
-            ReadingArg::EnergySplit => Reading::EnergySplit,
-            ReadingArg::SameDamping => Reading::SameDamping,
-        }
-    }
-}
-
-impl From<TensionArg> for Tension {
-    fn from(t: TensionArg) -> Self {
-        match t {
-            TensionArg::Allow => Tension::Allow,
-            TensionArg::Clamp => Tension::Clamp,
-        }
-    }
-}
-
-pub fn parse_model(s: &str) -> Result<Model, String> {
-    Model::from_name(s).ok_or_else(|| {
-        let names: Vec<_> = Model::all().map(Model::name).collect();
-        format!(
-            "unknown model{}; allowed: {}",
-            pounding::words::did_you_mean(s, names.iter().copied()),
-            names.join(", ")
-        )
-    })
-}
-
+/// `--alpha`: a number, or a word of [`AlphaWord`].
 pub fn parse_alpha(s: &str) -> Result<AlphaRule, String> {
-    match s {
-        "eq8" => Ok(AlphaRule::Eq8),
-        "calibrate" => Ok(AlphaRule::Calibrate),
-        _ => s
-            .parse::<f64>()
-            .map(AlphaRule::Given)
-            .map_err(|_| "allowed: a number >= 0, eq8 or calibrate".to_string()),
+    match AlphaWord::from_name(s) {
+        Some(AlphaWord::Eq8) => Ok(AlphaRule::Eq8),
+        Some(AlphaWord::Calibrate) => Ok(AlphaRule::Calibrate),
+        None => s.parse::<f64>().map(AlphaRule::Given).map_err(|_| {
+            format!(
+                "allowed: a number >= 0, {}",
+                AlphaWord::names().join(" or ")
+            )
+        }),
     }
 }

@@ -2,42 +2,21 @@
 
 mod args;
 mod commands;
+mod describe;
+mod error;
+mod files;
 mod output;
 mod output_set;
 mod plot;
+mod progress;
+mod records;
 mod report;
-mod run;
 mod run_data;
 mod scenario;
-mod sweep;
 
 use clap::Parser;
+use error::CliError;
 use std::process::ExitCode;
-
-/// What can stop a command: bad input (exit code 2) or a failure to write output (exit code 1).
-#[derive(Debug)]
-pub enum CliError {
-    /// Bad input: one line naming the parameter, the value and what is allowed.
-    Input(String),
-    /// An output could not be written.
-    Io(String),
-}
-
-impl From<pounding::Error> for CliError {
-    fn from(e: pounding::Error) -> Self {
-        match e {
-            pounding::Error::Parameter {
-                name,
-                value,
-                allowed,
-            } => CliError::Input(format!(
-                "--{} {value} is not allowed: {allowed}",
-                name.replace('_', "-")
-            )),
-            other => CliError::Input(other.to_string()),
-        }
-    }
-}
 
 /// The command the arguments name, as far as they name one: `pounding`, `pounding run`,
 /// `pounding record spectrum`.

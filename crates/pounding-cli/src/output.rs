@@ -1,7 +1,6 @@
-//! Presentation: key-value reports printed as aligned text or as one JSON object, and atomic file writes.
+//! Presentation: key-value reports printed as aligned text or as one JSON object, and numbers for people.
 
 use serde_json::{Map, Value};
-use std::path::Path;
 
 /// An ordered list of named values with units, rendered as text or JSON from the same source.
 #[derive(Default)]
@@ -68,28 +67,12 @@ impl Report {
     }
 }
 
-/// A number with 12 significant digits, in scientific notation when very large or small.
-pub fn fmt_num(x: f64) -> String {
-    let a = x.abs();
-    if x == 0.0 || (1e-3..1e6).contains(&a) {
-        let digits = 11 - a.log10().floor().max(-3.0) as i32;
-        let s = format!("{:.*}", digits.clamp(0, 15) as usize, x);
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        let s = format!("{x:.11e}");
-        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
-        let mantissa = if mantissa.contains('.') {
-            mantissa.trim_end_matches('0').trim_end_matches('.')
-        } else {
-            mantissa
-        };
-        format!("{mantissa}e{exp}")
-    }
+/// A finite number as JSON, or null (JSON has no infinity or NaN).
+pub fn num(x: f64) -> Value {
+    serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
 }
+
+pub use pounding_study::format::fmt_num;
 
 /// `x` rounded to `digits` significant digits, without trailing zeros (for people, not for files).
 pub fn fmt_sig(x: f64, digits: i32) -> String {
@@ -119,77 +102,6 @@ pub fn fmt_table(x: f64, sig: i32) -> String {
     } else {
         text
     }
-}
-
-pub use pounding_study::summary::num;
-
-pub use pounding_study::input::write_atomic;
-
-/// Renders `figures` as files: SVG, and PNG too if `png` (in a build with the `png` feature).
-pub fn render_figures(
-    figures: &[crate::plot::Figure],
-    png: bool,
-) -> Result<Vec<(String, Vec<u8>)>, crate::CliError> {
-    let mut files = Vec::new();
-    for f in figures {
-        let svg = crate::plot::svg::render(f);
-        if png {
-            files.push((format!("{}.png", f.id), png_bytes(&svg, &f.id)?));
-        }
-        files.push((format!("{}.svg", f.id), svg.into_bytes()));
-    }
-    Ok(files)
-}
-
-#[cfg(feature = "png")]
-fn png_bytes(svg: &str, id: &str) -> Result<Vec<u8>, crate::CliError> {
-    crate::plot::png::render(svg).map_err(|e| crate::CliError::Io(format!("figure {id}: {e}")))
-}
-
-#[cfg(not(feature = "png"))]
-fn png_bytes(_: &str, _: &str) -> Result<Vec<u8>, crate::CliError> {
-    Err(crate::CliError::Input(NO_PNG.into()))
-}
-
-/// The message for `--png` in a build without the `png` feature.
-pub const NO_PNG: &str = "--png needs PNG support, which this build leaves out: build with `--features png` \
-                          (cargo run --release --features png -- ...); the SVG figures need nothing";
-
-/// Writes `files` (name, bytes) into `dir`, created if missing, each atomically, in name order. Returns the
-/// names written.
-pub fn write_files(
-    dir: &Path,
-    mut files: Vec<(String, Vec<u8>)>,
-) -> Result<Vec<String>, crate::CliError> {
-    use crate::CliError;
-    if dir.is_file() {
-        return Err(CliError::Input(format!(
-            "--out {} is a file; give a folder (it is created if missing)",
-            dir.display()
-        )));
-    }
-    files.sort_by(|a, b| a.0.cmp(&b.0));
-    std::fs::create_dir_all(dir)
-        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", dir.display())))?;
-    for (name, bytes) in &files {
-        let p = dir.join(name);
-        write_atomic(&p, bytes)
-            .map_err(|e| CliError::Io(format!("cannot write {}: {e}", p.display())))?;
-    }
-    Ok(files.into_iter().map(|f| f.0).collect())
-}
-
-/// The time history of one impact as CSV with units in the header.
-pub fn history_csv(h: &pounding::impact::History) -> String {
-    let mut s = String::from("t_s,penetration_m,rate_m_per_s,force_N\n");
-    for i in 0..h.t.len() {
-        // Shortest round-trip scientific notation: exact, and compact for tiny times near touch.
-        s.push_str(&format!(
-            "{:e},{:e},{:e},{:e}\n",
-            h.t[i], h.penetration[i], h.rate[i], h.force[i]
-        ));
-    }
-    s
 }
 
 #[cfg(test)]

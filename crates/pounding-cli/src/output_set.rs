@@ -4,7 +4,7 @@
 //! the run's data files with their sizes and hashes, so that `pounding report` can refuse a folder whose files
 //! do not come from one run, and so that an existing folder is replaced only if a run wrote it.
 
-use crate::CliError;
+use crate::error::CliError;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 

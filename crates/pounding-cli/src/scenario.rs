@@ -1,7 +1,7 @@
 //! Scenario files: read, parsed and validated by `pounding_study::input` (the schema is the library's), so the
 //! command line and the Python package say the same thing about the same file.
 
-use crate::CliError;
+use crate::error::CliError;
 pub use pounding_study::input::Loaded;
 use std::path::Path;
 

@@ -216,6 +216,16 @@ fn svg_size(path: &Path) -> (f64, f64) {
     (attr(r, "width"), attr(r, "height"))
 }
 
+/// The contact sites of a summary of one kind (`contact` or `wall`), in order.
+fn sites<'a>(summary: &'a Value, kind: &str) -> Vec<&'a Value> {
+    summary["sites"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["kind"] == kind)
+        .collect()
+}
+
 #[test]
 fn impact_figures_show_the_located_peak_and_the_whole_contact() {
     let dir = tmp("impact");
@@ -411,7 +421,7 @@ fn run_figures_and_report_match_the_results() {
         ]
         .concat(),
     );
-    let contact = &s["contacts"][0];
+    let contact = sites(&s, "contact")[0];
     let (ih, irows) = csv(&dir.join("impacts.csv"));
     let n_impacts = irows.len();
     assert_eq!(n_impacts as u64, contact["impacts"].as_u64().unwrap());

@@ -9,6 +9,7 @@
 //!
 //! Writers take any [`std::io::Write`] and readers any [`std::io::Read`]: opening files is the caller's.
 
+use crate::format::fmt_num;
 use crate::summary::{RunSummary, SitePlace};
 use pounding::analysis::{Histories, ImpactLoop, Layer, Results, Scenario};
 use serde::{Deserialize, Serialize};
@@ -197,7 +198,8 @@ impl LoopRow {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[allow(non_snake_case)]
 pub struct EnergyRow {
-    /// Time, s.
+    /// Time, s (an output time `k dt`, written to 12 significant digits).
+    #[serde(serialize_with = "output_time")]
     pub time_s: f64,
     /// Input energy, J.
     pub input_J: f64,
@@ -302,6 +304,11 @@ impl Table for EnergyRow {
         "contact_J",
         "balance_error_J",
     ];
+}
+
+/// An output time `k dt` to 12 significant digits, as `energy.csv` and `response.csv` write it.
+fn output_time<S: serde::Serializer>(t: &f64, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(&fmt_num(*t))
 }
 
 /// Writes `rows` as a CSV table under its header.
@@ -482,9 +489,11 @@ pub fn write_response(w: impl Write, s: &RunSummary, h: &Histories) -> Result<()
     let columns = Column::all(s);
     let mut wtr = csv::WriterBuilder::new().has_headers(false).from_writer(w);
     wtr.write_record(columns.iter().map(|c| c.header(s)))?;
-    let values: Vec<&[f64]> = columns.iter().map(|c| c.values(h)).collect();
+    // The output times first, to 12 significant digits (`k dt` has rounding noise in its last digits).
+    let values: Vec<&[f64]> = columns[1..].iter().map(|c| c.values(h)).collect();
     let mut buf = ryu::Buffer::new();
     for k in 0..h.t.len() {
+        wtr.write_field(fmt_num(h.t[k]))?;
         for v in &values {
             wtr.write_field(buf.format(v[k]))?;
         }

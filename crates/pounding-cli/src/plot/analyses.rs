@@ -4,7 +4,9 @@
 use super::{Figure, Legend, Panel, Quantity, Series, Style, PLOT};
 use pounding::ground_motion::spectrum::Spectrum;
 use pounding::ground_motion::Record;
-use serde_json::Value;
+use pounding::separation::Level;
+use pounding_study::ida::{FitJson, FragilityJson};
+use pounding_study::separation::SeparationReport;
 
 fn time() -> Quantity {
     Quantity::new("time", "s")
@@ -94,33 +96,25 @@ pub fn spectrum(s: &Spectrum, title: &str) -> Figure {
 
 /// Each rule's estimate against the required gap, every level (and every record of a suite), with the line
 /// where the estimate equals the requirement: points below it are unconservative.
-pub fn separation(report: &Value, subtitle: &str) -> Figure {
-    let runs: Vec<&Value> = match report.get("records") {
-        Some(r) => r
-            .as_array()
-            .into_iter()
-            .flatten()
-            .map(|x| &x["pairs"])
-            .collect(),
-        None => vec![&report["pairs"]],
-    };
+pub fn separation(report: &SeparationReport, subtitle: &str) -> Figure {
+    let runs = report.runs();
     let mut p = Panel::new(
         "",
         Quantity::new("required gap (run without contact)", "m"),
         Quantity::new("rule's estimate", "m"),
     );
     let mut hi = 0.0f64;
-    for (i, rule) in ["abs", "srss", "ddc"].iter().enumerate() {
+    type Estimate = fn(&Level) -> f64;
+    let rules: [(&str, Estimate); 3] =
+        [("abs", |l| l.abs), ("srss", |l| l.srss), ("ddc", |l| l.ddc)];
+    for (i, (rule, estimate)) in rules.iter().enumerate() {
         let (mut x, mut y) = (Vec::new(), Vec::new());
         for pairs in &runs {
-            for pair in pairs.as_array().into_iter().flatten() {
-                for l in pair["levels"].as_array().into_iter().flatten() {
-                    if let (Some(g), Some(e)) = (l["required_gap"].as_f64(), l[*rule].as_f64()) {
-                        x.push(g);
-                        y.push(e);
-                        hi = hi.max(g).max(e);
-                    }
-                }
+            for l in pairs.iter().flat_map(|p| &p.levels) {
+                let (g, e) = (l.required_gap, estimate(l));
+                x.push(g);
+                y.push(e);
+                hi = hi.max(g).max(e);
             }
         }
         let style = Style {
@@ -172,7 +166,7 @@ pub fn ida(
     records: &[String],
     edps: &[Vec<Vec<Option<f64>>>],
     limit_states: &[StateAxis],
-    fits: &Value,
+    fits: &[FragilityJson],
     measure: (&str, &str),
 ) -> Vec<Figure> {
     let im = || Quantity::new(measure.0, "m/s\u{b2}");
@@ -211,18 +205,20 @@ pub fn ida(
         curves.push(p);
     }
     let mut frag = Vec::new();
-    for f in fits.as_array().into_iter().flatten() {
-        let name = f["limit_state"].as_str().unwrap_or("").to_string();
+    for f in fits {
+        let name = f.limit_state.clone();
         let mut p = Panel::new(name, im(), Quantity::new("probability of exceedance", ""));
         let top = levels.last().copied().unwrap_or(1.0) * 1.1;
         let xs: Vec<f64> = (1..=200).map(|k| top * k as f64 / 200.0).collect();
-        for (i, method) in ["stripes", "ida"].iter().enumerate() {
-            if let (Some(m), Some(b)) = (f[*method]["median"].as_f64(), f[*method]["beta"].as_f64())
-            {
+        for (i, (method, fit)) in [("stripes", &f.stripes), ("ida", &f.ida)]
+            .into_iter()
+            .enumerate()
+        {
+            if let FitJson::Fitted { median: m, beta: b } = *fit {
                 let fr = pounding::fragility::Fragility { median: m, beta: b };
                 let label = format!(
                     "{} fit: median {}, beta {:.3}",
-                    if *method == "stripes" {
+                    if method == "stripes" {
                         "stripes"
                     } else {
                         "IDA"
@@ -238,15 +234,12 @@ pub fn ida(
                 ));
             }
         }
-        let (x, y): (Vec<f64>, Vec<f64>) = f["exceedances"]
-            .as_array()
-            .into_iter()
-            .flatten()
+        let (x, y): (Vec<f64>, Vec<f64>) = f
+            .exceedances
+            .iter()
             .zip(levels)
-            .filter_map(|(c, lv)| {
-                let (z, n) = (c[0].as_f64()?, c[1].as_f64()?);
-                (n > 0.0).then_some((*lv, z / n))
-            })
+            .filter(|([_, n], _)| *n > 0)
+            .map(|([z, n], lv)| (*lv, *z as f64 / *n as f64))
             .unzip();
         p.series.push(Series::points(
             "observed fraction",

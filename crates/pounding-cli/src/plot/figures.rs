@@ -5,7 +5,6 @@ use super::axis::human;
 use super::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
 use crate::output::{fmt_num, fmt_sig};
 use crate::run_data::RunData;
-use serde_json::Value;
 
 /// A force history to plot: label, time since touch (s), penetration (m), force (N).
 pub struct ForceHistory<'a> {
@@ -172,11 +171,32 @@ pub fn table1(groups: &[(&str, Vec<Curve>)]) -> Vec<Figure> {
     ]
 }
 
+fn time() -> Quantity {
+    Quantity::new("time", "s")
+}
+
 /// The figures of a pounding run: floor displacements with impact instants, peak response over height,
 /// the force-drift loop of the most strained storey (and of every inelastic storey of its building),
 /// contact forces, delivered e, relative displacement against the gap, and the energy balance.
 pub fn run(d: &RunData) -> Vec<Figure> {
-    let time = || Quantity::new("time", "s");
+    let (forces, closing, restitution) = contact_figures(d);
+    let mut figs = vec![record(d), displacement(d)];
+    if !d.buildings.is_empty() {
+        figs.push(envelopes(d));
+        figs.extend(hysteresis(d));
+        figs.extend(isolators(d));
+    }
+    figs.extend(forces);
+    figs.extend(impact_loops(d));
+    figs.extend(restitution);
+    figs.extend(closing);
+    figs.extend(devices(d));
+    figs.push(energy(d));
+    figs
+}
+
+/// The ground motion, and each building's floor displacements with the instants of its impacts.
+fn displacement(d: &RunData) -> Figure {
     let impact_style = Style {
         width: 1.0,
         ..Style::nth(1)
@@ -197,7 +217,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             ..Style::nth(6)
         },
     ));
-    let mut displacement = vec![ground];
+    let mut panels = vec![ground];
     for (b, bd) in d.buildings.iter().enumerate() {
         let mut p = Panel::new(
             format!(
@@ -238,10 +258,58 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             });
         }
         p.legend = if n > 4 { Legend::Right } else { Legend::Inside };
-        displacement.push(p);
+        panels.push(p);
     }
+    Figure {
+        id: "displacement".into(),
+        title: "Floor displacements".into(),
+        subtitle: d.subtitle.clone(),
+        panels,
+        columns: 1,
+        plot: PLOT,
+        ..Figure::default()
+    }
+}
 
-    let (forces, closing, restitution) = contact_figures(d);
+/// The forces of the devices, if there are any.
+fn devices(d: &RunData) -> Option<Figure> {
+    if d.devices.is_empty() {
+        return None;
+    }
+    let panels = d
+        .devices
+        .iter()
+        .map(|dd| {
+            let mut p = Panel::new(
+                format!("device {} ({})", dd.name, dd.model),
+                time(),
+                Quantity::new("force, positive pushing apart", "N"),
+            );
+            p.x_tight = true;
+            for (k, el) in dd.elements.iter().enumerate() {
+                p.series.push(Series::line(
+                    format!("floors {}-{}", el.floors.0, el.floors.1),
+                    d.t.clone(),
+                    el.force.clone(),
+                    Style::nth(k),
+                ));
+            }
+            p
+        })
+        .collect();
+    Some(Figure {
+        id: "device-force".into(),
+        title: "Forces of the devices between neighbours".into(),
+        subtitle: d.subtitle.clone(),
+        panels,
+        columns: 1,
+        plot: PLOT,
+        ..Figure::default()
+    })
+}
+
+/// The energy balance over time.
+fn energy(d: &RunData) -> Figure {
     let mut energy = Panel::new("", time(), Quantity::new("energy", "J"));
     let mut hysteretic = false;
     energy.x_tight = true;
@@ -278,61 +346,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
             .series
             .push(Series::line(*name, d.t.clone(), e.clone(), st));
     }
-
-    let mut figs = vec![
-        record(d),
-        Figure {
-            id: "displacement".into(),
-            title: "Floor displacements".into(),
-            subtitle: d.subtitle.clone(),
-            panels: displacement,
-            columns: 1,
-            plot: PLOT,
-            ..Figure::default()
-        },
-    ];
-    if !d.buildings.is_empty() {
-        figs.push(envelopes(d));
-        figs.extend(hysteresis(d));
-        figs.extend(isolators(d));
-    }
-    figs.extend(forces);
-    figs.extend(impact_loops(d));
-    figs.extend(restitution);
-    figs.extend(closing);
-    if !d.devices.is_empty() {
-        let panels = d
-            .devices
-            .iter()
-            .map(|dd| {
-                let mut p = Panel::new(
-                    format!("device {} ({})", dd.name, dd.model),
-                    time(),
-                    Quantity::new("force, positive pushing apart", "N"),
-                );
-                p.x_tight = true;
-                for (k, el) in dd.elements.iter().enumerate() {
-                    p.series.push(Series::line(
-                        format!("floors {}-{}", el.floors.0, el.floors.1),
-                        d.t.clone(),
-                        el.force.clone(),
-                        Style::nth(k),
-                    ));
-                }
-                p
-            })
-            .collect();
-        figs.push(Figure {
-            id: "device-force".into(),
-            title: "Forces of the devices between neighbours".into(),
-            subtitle: d.subtitle.clone(),
-            panels,
-            columns: 1,
-            plot: PLOT,
-            ..Figure::default()
-        });
-    }
-    figs.push(Figure {
+    Figure {
         id: "energy".into(),
         title: if hysteretic {
             "Energy balance: input = kinetic + strain + structural damping + storey hysteresis + contact"
@@ -345,17 +359,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
         columns: 1,
         plot: PLOT,
         ..Figure::default()
-    });
-    figs
-}
-
-/// The numbers of a JSON array (NaN for a missing or non-numeric entry: not drawn).
-fn numbers(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .into_iter()
-        .flatten()
-        .map(|x| x.as_f64().unwrap_or(f64::NAN))
-        .collect()
+    }
 }
 
 /// Each building's levels from the ground up (ground = 0, then every floor) and the quantity of the height
@@ -418,9 +422,9 @@ fn envelopes(d: &RunData) -> Figure {
         "storey shear (steps)",
         Quantity::new("peak storey shear", "N"),
     );
-    let pga = d.summary["record"]["pga"].as_f64().unwrap_or(f64::NAN);
+    let pga = d.summary.record.pga;
     for (b, bd) in d.buildings.iter().enumerate() {
-        let s = &d.summary["buildings"][b];
+        let s = &d.summary.buildings[b];
         let z = &z[b];
         let line = Style {
             width: 1.8,
@@ -433,23 +437,20 @@ fn envelopes(d: &RunData) -> Figure {
         let at_floors = |ground: f64, v: Vec<f64>| std::iter::once(ground).chain(v).collect();
         disp.series.push(Series::line(
             &bd.name,
-            at_floors(0.0, numbers(&s["peak_displacement"])),
+            at_floors(0.0, s.peak_displacement.clone()),
             z.clone(),
             dotted,
         ));
-        let ratio: Vec<f64> = numbers(&s["peak_drift_ratio"])
-            .iter()
-            .map(|r| 100.0 * r)
-            .collect();
+        let ratio: Vec<f64> = s.peak_drift_ratio.iter().map(|r| 100.0 * r).collect();
         let (x, y) = steps(&ratio, z);
         drift.series.push(Series::line(&bd.name, x, y, line));
         acc.series.push(Series::line(
             &bd.name,
-            at_floors(pga, numbers(&s["peak_absolute_acceleration"])),
+            at_floors(pga, s.peak_absolute_acceleration.clone()),
             z.clone(),
             dotted,
         ));
-        let (x, y) = steps(&numbers(&s["peak_storey_shear"]), z);
+        let (x, y) = steps(&s.peak_storey_shear, z);
         shear.series.push(Series::line(&bd.name, x, y, line));
     }
     disp.legend = Legend::Inside;
@@ -480,19 +481,10 @@ struct StoreyInfo {
 
 /// The storeys of building `b`, from summary.json.
 fn storey_info(d: &RunData, b: usize) -> Vec<StoreyInfo> {
-    let s = &d.summary["buildings"][b];
+    let s = &d.summary.buildings[b];
     let n = d.buildings[b].storey_shear.len();
-    let inelastic: Vec<usize> = s["inelastic_storeys"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .filter_map(|v| v.as_u64().map(|j| j as usize))
-        .collect();
-    let (fy, mu, eh) = (
-        numbers(&s["yield_forces"]),
-        numbers(&s["ductility"]),
-        numbers(&s["hysteretic_energy"]),
-    );
+    let inelastic = &s.inelastic_storeys;
+    let (fy, mu, eh) = (&s.yield_forces, &s.ductility, &s.hysteretic_energy);
     (0..n)
         .map(|j| {
             let k = inelastic.iter().position(|&i| i == j + 1);
@@ -500,16 +492,13 @@ fn storey_info(d: &RunData, b: usize) -> Vec<StoreyInfo> {
             StoreyInfo {
                 building: b,
                 storey: j,
-                model: match (j, s["isolator"]["model"].as_str()) {
-                    (0, Some(m)) => format!("isolator, {m}"),
-                    _ => s["storey_models"][j]
-                        .as_str()
-                        .unwrap_or("linear")
-                        .to_string(),
+                model: match (j, &s.isolator) {
+                    (0, Some(iso)) => format!("isolator, {}", iso.model),
+                    _ => s.storey_models[j].name().to_string(),
                 },
-                yield_force: pick(&fy),
-                ductility: pick(&mu),
-                hysteretic_energy: pick(&eh),
+                yield_force: pick(fy),
+                ductility: pick(mu),
+                hysteretic_energy: pick(eh),
             }
         })
         .collect()
@@ -564,15 +553,15 @@ fn storey_title(i: &StoreyInfo) -> String {
 fn isolators(d: &RunData) -> Option<Figure> {
     let panels: Vec<Panel> = (0..d.buildings.len())
         .filter_map(|b| {
-            let iso = &d.summary["buildings"][b]["isolator"];
-            let model = iso["model"].as_str()?;
+            let iso = d.summary.buildings[b].isolator.as_ref()?;
+            let model = iso.model.name();
             let u = drift(d, b, 0);
             let f = d.buildings[b].storey_shear[0].clone();
             let mut p = Panel::new(
                 format!(
                     "{}: {model} isolator, peak displacement {}",
                     d.buildings[b].name,
-                    human_si(iso["peak_displacement"].as_f64().unwrap_or(0.0), "m")
+                    human_si(iso.peak_displacement, "m")
                 ),
                 Quantity::new("isolator displacement", "m"),
                 Quantity::new("isolator force", "N"),
@@ -589,7 +578,7 @@ fn isolators(d: &RunData) -> Option<Figure> {
                     ..Style::nth(0)
                 },
             ));
-            if let Some(c) = iso["clearance"].as_f64() {
+            if let Some(c) = iso.clearance {
                 for (k, x) in [c, -c].into_iter().enumerate() {
                     let label = if k == 0 {
                         format!("clearance \u{b1}{}", human_si(c, "m"))
@@ -628,11 +617,7 @@ fn hysteresis(d: &RunData) -> Vec<Figure> {
     let all: Vec<StoreyInfo> = (0..d.buildings.len())
         .flat_map(|b| storey_info(d, b))
         .collect();
-    let ratio = |i: &StoreyInfo| {
-        d.summary["buildings"][i.building]["peak_drift_ratio"][i.storey]
-            .as_f64()
-            .unwrap_or(0.0)
-    };
+    let ratio = |i: &StoreyInfo| d.summary.buildings[i.building].peak_drift_ratio[i.storey];
     let most = all
         .iter()
         .filter(|i| i.ductility.is_some())
@@ -804,7 +789,7 @@ struct Level {
 
 impl Level {
     /// Whether impact `i` happened at this level.
-    fn holds(&self, d: &RunData, i: &crate::run_data::ImpactRow) -> bool {
+    fn holds(&self, d: &RunData, i: &crate::run_data::ImpactData) -> bool {
         i.contact == self.contact
             && i.floors == d.contacts[self.contact].elements[self.element].floors
     }
@@ -848,7 +833,54 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
     if levels.is_empty() {
         return (None, None, None);
     }
-    let time = || Quantity::new("time", "s");
+    let (forces, closing) = level_panels(d, &levels);
+    let n = levels.len();
+    let force_fig = Figure {
+        id: "contact-force".into(),
+        title: format!(
+            "Contact force at each contact level ({n} level{})",
+            if n == 1 { "" } else { "s" }
+        ),
+        subtitle: d.subtitle.clone(),
+        panels: forces,
+        plot: (PLOT.0, multiple_height(n)),
+        share_x: true,
+        notes: vec![
+            "Line: the force at the output samples with each impact's located peak inserted; markers: the \
+             located peak of each impact (peak_force_N of impacts.csv). Each panel has its own force axis."
+                .into(),
+        ]
+        .into_iter()
+        .chain(
+            d.impacts
+                .iter()
+                .any(|i| i.consumed)
+                .then(|| "With a bumper, the line is the layer's and the hard law's force together; markers are each law's impacts.".to_string()),
+        )
+        .collect(),
+        ..Figure::default()
+    };
+    let closing_fig = Figure {
+        id: "relative-displacement".into(),
+        title: "Relative displacement of the contact floors against the gap".into(),
+        subtitle: d.subtitle.clone(),
+        panels: closing,
+        plot: (PLOT.0, multiple_height(n)),
+        share_x: true,
+        notes: vec![
+            "u_left \u{2212} u_right of each pair of contact floors (for a wall, the floor's displacement towards \
+             it); dashed: the gap, contact above it. One axis for every level."
+                .into(),
+        ],
+        ..Figure::default()
+    };
+
+    (Some(force_fig), Some(closing_fig), restitution(d, &levels))
+}
+
+/// For each contact level: its force over time, and its closing against its gap (on one range for every
+/// level).
+fn level_panels(d: &RunData, levels: &[Level]) -> (Vec<Panel>, Vec<Panel>) {
     let t_range = (
         d.t.first().copied().unwrap_or(0.0),
         d.t.last().copied().unwrap_or(1.0),
@@ -856,7 +888,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
     let mut forces = Vec::new();
     let mut closing = Vec::new();
     let (mut lo, mut hi) = (0.0f64, 0.0f64);
-    for lv in &levels {
+    for lv in levels {
         let cd = &d.contacts[lv.contact];
         let el = &cd.elements[lv.element];
         let mine: Vec<_> = d.impacts.iter().filter(|i| lv.holds(d, i)).collect();
@@ -933,48 +965,12 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
     for q in &mut closing {
         q.y_range = Some((lo - pad, hi + pad));
     }
-    let n = levels.len();
-    let force_fig = Figure {
-        id: "contact-force".into(),
-        title: format!(
-            "Contact force at each contact level ({n} level{})",
-            if n == 1 { "" } else { "s" }
-        ),
-        subtitle: d.subtitle.clone(),
-        panels: forces,
-        plot: (PLOT.0, multiple_height(n)),
-        share_x: true,
-        notes: vec![
-            "Line: the force at the output samples with each impact's located peak inserted; markers: the \
-             located peak of each impact (peak_force_N of impacts.csv). Each panel has its own force axis."
-                .into(),
-        ]
-        .into_iter()
-        .chain(
-            d.impacts
-                .iter()
-                .any(|i| i.consumed)
-                .then(|| "With a bumper, the line is the layer's and the hard law's force together; markers are each law's impacts.".to_string()),
-        )
-        .collect(),
-        ..Figure::default()
-    };
-    let closing_fig = Figure {
-        id: "relative-displacement".into(),
-        title: "Relative displacement of the contact floors against the gap".into(),
-        subtitle: d.subtitle.clone(),
-        panels: closing,
-        plot: (PLOT.0, multiple_height(n)),
-        share_x: true,
-        notes: vec![
-            "u_left \u{2212} u_right of each pair of contact floors (for a wall, the floor's displacement towards \
-             it); dashed: the gap, contact above it. One axis for every level."
-                .into(),
-        ],
-        ..Figure::default()
-    };
+    (forces, closing)
+}
 
-    // Delivered e of each ended impact against its impact velocity, one colour and shape per level.
+/// The delivered e of each ended impact against its impact velocity, one colour and shape per level, with
+/// the e each contact was asked for.
+fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
     let mut r = Panel::new(
         "",
         Quantity::new("relative velocity at touch v_i", "m/s"),
@@ -984,7 +980,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
     r.x_zero = true;
     r.legend = Legend::Right;
     let (mut above, mut ended, mut top) = (0, 0, f64::NEG_INFINITY);
-    for lv in &levels {
+    for lv in levels {
         let cd = &d.contacts[lv.contact];
         let mine: Vec<_> = d
             .impacts
@@ -1034,7 +1030,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
             },
         });
     }
-    let restitution = (ended > 0).then(|| {
+    (ended > 0).then(|| {
         let mut notes = Vec::new();
         if above > 0 {
             notes.push(format!(
@@ -1061,8 +1057,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
             notes,
             ..Figure::default()
         }
-    });
-    (Some(force_fig), Some(closing_fig), restitution)
+    })
 }
 
 /// The force–penetration loops of the strongest impacts (at most [`LOOPS_PER_LEVEL`]) of each contact level,
@@ -1230,7 +1225,7 @@ fn record(d: &RunData) -> Figure {
             "The acceleration at the output samples (every {} s); velocity and displacement integrated from \
              them from rest, without baseline correction: the ground motion the analysis applied. Dots: largest \
              |value|.",
-            fmt_num(d.summary["output_dt"].as_f64().unwrap_or(0.0))
+            fmt_num(d.summary.output_dt)
         )],
         ..Figure::default()
     }

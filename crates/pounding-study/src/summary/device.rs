@@ -1,6 +1,6 @@
 //! The summary of a device: its law and its peaks.
 
-use pounding::analysis::{DeviceEnds, DeviceResponse, Scenario, SiteKind};
+use pounding::analysis::{DeviceResponse, Scenario};
 use pounding::element::DeviceLaw;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -28,21 +28,9 @@ impl DeviceSummary {
     /// Device `i` of `s` and its peaks `r`.
     pub fn of(s: &Scenario, i: usize, r: &DeviceResponse) -> Self {
         let d = &s.devices()[i];
-        let name = |b: usize| s.buildings()[b].name.clone();
-        let between = match d.ends {
-            DeviceEnds::Buildings { left, right } => [name(left), name(right)],
-            DeviceEnds::Wall { site } => {
-                let w = &s.sites()[site];
-                let b = match w.kind {
-                    SiteKind::Wall { building, .. } => building,
-                    SiteKind::Between { left, .. } => left,
-                };
-                [name(b), w.name.clone()]
-            }
-        };
         Self {
             name: d.name.clone(),
-            between,
+            between: s.device_between(d),
             floors: d.floors.iter().map(|&(a, b)| [a, b]).collect(),
             law: d.law.clone(),
             peak_force: r.peak_force.clone(),

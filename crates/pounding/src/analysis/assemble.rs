@@ -327,10 +327,7 @@ impl Scenario {
             (Some(w), None) | (None, Some(w)) => {
                 let other = if self.wall(a).is_some() { b } else { a };
                 let ib = self.building_index(other)?;
-                let faced = match self.sites[w].kind {
-                    SiteKind::Wall { building, .. } => building,
-                    SiteKind::Between { left, .. } => left,
-                };
+                let faced = self.site_building(&self.sites[w]);
                 if faced != ib {
                     return Err(choice(
                         "between",
@@ -359,10 +356,7 @@ impl Scenario {
         let (n_left, n_right) = match ends {
             DeviceEnds::Buildings { left, right } => (storeys(left), storeys(right)),
             DeviceEnds::Wall { site } => {
-                let n = match self.sites[site].kind {
-                    SiteKind::Wall { building, .. } => storeys(building),
-                    SiteKind::Between { left, .. } => storeys(left),
-                };
+                let n = storeys(self.site_building(&self.sites[site]));
                 (n, n)
             }
         };

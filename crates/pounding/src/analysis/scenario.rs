@@ -1,7 +1,7 @@
 //! A pounding analysis: buildings in a row, the contact sites between them and beside them, devices, the
 //! ground motion and the settings ([`Scenario`]).
 
-use super::{ContactSite, Device};
+use super::{ContactSite, Device, DeviceEnds, SiteKind};
 use crate::error::check;
 use crate::ground_motion::Record;
 use crate::structure::ShearBuilding;
@@ -198,6 +198,24 @@ impl Scenario {
     /// The devices.
     pub fn devices(&self) -> &[Device] {
         &self.devices
+    }
+    /// The building a site stands beside or begins at: a wall's building, the left of two neighbours.
+    pub fn site_building(&self, site: &ContactSite) -> usize {
+        match site.kind {
+            SiteKind::Wall { building, .. } => building,
+            SiteKind::Between { left, .. } => left,
+        }
+    }
+    /// The names of what device `d` joins: two buildings, or a building and a wall.
+    pub fn device_between(&self, d: &Device) -> [String; 2] {
+        let name = |b: usize| self.buildings[b].name.clone();
+        match d.ends {
+            DeviceEnds::Buildings { left, right } => [name(left), name(right)],
+            DeviceEnds::Wall { site } => {
+                let w = &self.sites[site];
+                [name(self.site_building(w)), w.name.clone()]
+            }
+        }
     }
     /// The ground motion.
     pub fn record(&self) -> &Record {

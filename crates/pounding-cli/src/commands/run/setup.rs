@@ -1,0 +1,212 @@
+//! What a run prints before it starts: the record, the settings, each building with its modes, each contact
+//! site and device.
+
+use crate::describe::contact_label;
+use crate::output::{fmt_num, fmt_sig};
+use pounding::analysis::{Building, Bumper, Scenario, SiteKind};
+use pounding::element::StoreyLaw;
+use pounding_study::input::Loaded;
+use std::path::Path;
+
+/// Prints the setup of `loaded` (read from `file`).
+pub fn print(loaded: &Loaded, file: &Path) {
+    let s = &loaded.scenario;
+    let rec = s.record();
+    let p = rec.peaks();
+    println!("scenario  {}", file.display());
+    println!(
+        "record    {} x {}: {} samples at {} s, PGA {} m/s^2 ({} g) at {} s",
+        loaded.record_source,
+        loaded.doc.ground_motion.scale,
+        rec.npts(),
+        fmt_num(rec.dt()),
+        fmt_sig(p.pga, 4),
+        fmt_sig(p.pga / pounding::units::STANDARD_GRAVITY, 4),
+        fmt_num(p.pga_time)
+    );
+    println!(
+        "analysis  {} s, output every {} s, tolerance {:e}",
+        fmt_num(s.duration()),
+        fmt_num(s.output_dt()),
+        s.tolerance()
+    );
+    for b in s.buildings() {
+        building(b);
+    }
+    sites(s);
+    for d in s.devices() {
+        let [a, b] = s.device_between(d);
+        let floors: Vec<String> = d.floors.iter().map(|(i, j)| format!("{i}-{j}")).collect();
+        let params: Vec<String> = d
+            .law
+            .parameters()
+            .iter()
+            .map(|p| format!("{} {} {}", p.key, fmt_sig(p.value, 4), p.unit))
+            .collect();
+        println!(
+            "\ndevice {}: {} {} between {a} and {b} at floors {}",
+            d.name,
+            d.law.name(),
+            params.join(", "),
+            floors.join(", ")
+        );
+    }
+    println!();
+}
+
+/// How a building is damped, in words.
+fn damping(b: &Building) -> String {
+    let st = &b.structure;
+    let Some(iso) = st.isolator() else {
+        return format!(
+            "damping {} % (Rayleigh, modes 1 and 2)",
+            fmt_num(100.0 * st.damping_ratio())
+        );
+    };
+    format!(
+        "isolated: {} isolator (storey 1) under the base slab (floor 1){}; {}isolator damped by its hysteresis{}",
+        iso.model.name(),
+        iso.clearance
+            .map_or(String::new(), |c| format!(", clearance {} m", fmt_num(c))),
+        if st.storeys() > 1 {
+            format!(
+                "superstructure damped {} % on its fixed-base modes 1 and 2, ",
+                fmt_num(100.0 * st.damping_ratio())
+            )
+        } else {
+            String::new()
+        },
+        if iso.damping > 0.0 {
+            format!(" and {} N s/m", fmt_sig(iso.damping, 4))
+        } else {
+            String::new()
+        }
+    )
+}
+
+/// A storey's law in words, with units.
+fn storey_law(j: usize, l: &StoreyLaw) -> String {
+    match *l {
+        StoreyLaw::Linear => format!("{}: linear", j + 1),
+        StoreyLaw::Bilinear {
+            yield_force,
+            post_yield_ratio,
+        } => format!(
+            "{}: bilinear F_y {} N, a {}",
+            j + 1,
+            fmt_sig(yield_force, 4),
+            fmt_num(post_yield_ratio)
+        ),
+        StoreyLaw::BoucWen {
+            yield_force,
+            post_yield_ratio,
+            n,
+            beta,
+            gamma,
+        } => format!(
+            "{}: bouc-wen F_y {} N, a {}, n {}, beta {}, gamma {}",
+            j + 1,
+            fmt_sig(yield_force, 4),
+            fmt_num(post_yield_ratio),
+            fmt_num(n),
+            fmt_num(beta),
+            fmt_num(gamma)
+        ),
+    }
+}
+
+/// A building, its storey laws and its modes.
+fn building(b: &Building) {
+    let st = &b.structure;
+    let modes = st.modes();
+    let part = modes.participation(st.masses());
+    let m_tot = st.total_mass();
+    println!(
+        "\nbuilding {:?}: {}, {} kg, height {} m, {}",
+        b.name,
+        pounding::words::count(st.storeys(), "storey", None),
+        fmt_num(m_tot),
+        fmt_num(st.elevations().last().copied().unwrap_or(0.0)),
+        damping(b)
+    );
+    let laws = st.storey_laws();
+    if laws.iter().any(|l| l.is_inelastic()) {
+        let desc: Vec<String> = laws
+            .iter()
+            .enumerate()
+            .map(|(j, l)| storey_law(j, l))
+            .collect();
+        println!("  storeys: {}", desc.join("; "));
+        if st.isolator().is_some() {
+            println!("  (modes of the initial stiffness; damping_% is phi^T C phi / 2w, the isolator's hysteresis not counted)");
+        } else {
+            println!("  (modes and Rayleigh damping of the initial stiffness)");
+        }
+    }
+    println!("  mode  period_s  damping_%  mass_%  shape (floor 1 up, largest = 1)");
+    let shapes = modes.shapes_normalised();
+    for (r, t) in modes.periods().iter().enumerate().take(6) {
+        let shape: Vec<String> = shapes[r].iter().map(|x| format!("{x:.3}")).collect();
+        println!(
+            "  {:>4}  {:>8.4}  {:>9.2}  {:>6.1}  {}",
+            r + 1,
+            t,
+            100.0 * st.damping_of_mode(r),
+            100.0 * part[r].1 / m_tot,
+            shape.join(" ")
+        );
+    }
+    if st.storeys() > 6 {
+        println!("  (modes 7 to {} in summary.json)", st.storeys());
+    }
+}
+
+/// Every contact site: where it is, its gap and levels, its law, bumper and seat.
+fn sites(s: &Scenario) {
+    for site in s.sites() {
+        let law = contact_label(site.contact.spec(), site.contact.parameter());
+        match site.kind {
+            SiteKind::Between { .. } => {
+                let floors: Vec<String> = site
+                    .levels
+                    .iter()
+                    .map(|l| format!("{}-{}", l.left.unwrap_or(0), l.right.unwrap_or(0)))
+                    .collect();
+                println!(
+                    "\ncontact {}: gap {} m at floors {}, {law}",
+                    site.name,
+                    fmt_num(site.gap),
+                    floors.join(", ")
+                );
+            }
+            SiteKind::Wall { building, side } => {
+                let floors: Vec<String> =
+                    site.levels.iter().map(|l| l.floor().to_string()).collect();
+                println!(
+                    "\nwall {}: {} of {}, gap {} m, floors {}, {law}",
+                    site.name,
+                    side.name(),
+                    s.buildings()[building].name,
+                    fmt_num(site.gap),
+                    floors.join(", ")
+                );
+            }
+        }
+        extras(&site.bumper, site.seat);
+    }
+}
+
+/// A bumper and a seat, if given.
+fn extras(bumper: &Option<Bumper>, seat: Option<f64>) {
+    if let Some(b) = bumper {
+        println!(
+            "  bumper {} m thick, consumed at strain {}: {}",
+            fmt_num(b.thickness),
+            fmt_num(b.max_strain),
+            contact_label(b.contact.spec(), b.contact.parameter())
+        );
+    }
+    if let Some(seat) = seat {
+        println!("  seat {} m (unseating check)", fmt_num(seat));
+    }
+}

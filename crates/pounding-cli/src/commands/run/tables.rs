@@ -1,0 +1,224 @@
+//! What a run prints at its end: peak responses, the yielding storeys, the isolators, contact sites and
+//! devices, and the energy balance (lengths in mm, forces in MN, energies in kJ).
+
+use crate::output::{fmt_num, fmt_table};
+use pounding::analysis::{Results, Scenario};
+
+/// Prints the results `r` of a run of `s`.
+pub fn print(s: &Scenario, r: &Results) {
+    floors(s, r);
+    inelastic(s, r);
+    isolators(s, r);
+    sites(s, r);
+    devices(s, r);
+    energy(r);
+}
+
+/// Metres as millimetres, N as MN, J as kJ: the units of the terminal tables, the figures and the report.
+fn mm(x: f64) -> String {
+    fmt_table(1e3 * x, 4)
+}
+fn mn(x: f64) -> String {
+    fmt_table(1e-6 * x, 4)
+}
+fn kj(x: f64) -> String {
+    fmt_table(1e-3 * x, 4)
+}
+
+/// The peak response of every floor and storey.
+fn floors(s: &Scenario, r: &Results) {
+    println!(
+        "peak responses (lengths in mm, forces in MN, energies in kJ; the files hold m, N and J)\n"
+    );
+    println!(
+        "building    floor  displacement_mm    at_s  abs_acceleration_m_per_s2  storey  drift_mm  drift_ratio_%  shear_MN"
+    );
+    for (b, resp) in s.buildings().iter().zip(&r.buildings) {
+        let h = b.structure.heights();
+        for (f, h_f) in h.iter().enumerate() {
+            println!(
+                "{:<10}  {:>5}  {:>15}  {:>6.2}  {:>25}  {:>6}  {:>8}  {:>13.3}  {:>8}",
+                b.name,
+                f + 1,
+                mm(resp.peak_displacement[f]),
+                resp.time_of_peak_displacement[f],
+                fmt_table(resp.peak_absolute_acceleration[f], 4),
+                f + 1,
+                mm(resp.peak_drift[f]),
+                100.0 * resp.peak_drift[f] / h_f,
+                mn(resp.peak_storey_shear[f])
+            );
+        }
+    }
+}
+
+/// The storeys that yield: ductility, residual drift, hysteretic energy.
+fn inelastic(s: &Scenario, r: &Results) {
+    let inelastic = s
+        .buildings()
+        .iter()
+        .any(|b| b.structure.storey_laws().iter().any(|l| l.is_inelastic()));
+    if inelastic {
+        println!(
+            "\nbuilding    storey  model     ductility  residual_drift_mm  hysteretic_energy_kJ"
+        );
+        for (b, resp) in s.buildings().iter().zip(&r.buildings) {
+            for (j, law) in b.structure.storey_laws().iter().enumerate() {
+                if let Some(mu) = resp.ductility[j] {
+                    println!(
+                        "{:<10}  {:>6}  {:<8}  {:>9.3}  {:>17}  {:>20}",
+                        b.name,
+                        j + 1,
+                        law.name(),
+                        mu,
+                        mm(resp.residual_drift[j]),
+                        kj(resp.hysteretic_energy[j])
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The isolators: their displacement against their clearance.
+fn isolators(s: &Scenario, r: &Results) {
+    let isolated: Vec<usize> = (0..s.buildings().len())
+        .filter(|&b| s.buildings()[b].structure.isolator().is_some())
+        .collect();
+    if !isolated.is_empty() {
+        println!(
+            "\nbuilding    isolator           peak_displacement_mm  clearance_mm  residual_mm"
+        );
+        for b in isolated {
+            let (st, resp) = (&s.buildings()[b].structure, &r.buildings[b]);
+            let iso = st.isolator().expect("isolated");
+            let clearance = iso.clearance.map_or("-".to_string(), mm);
+            let over = match iso.clearance {
+                Some(c) if resp.peak_drift[0] > c => "  EXCEEDED",
+                _ => "",
+            };
+            println!(
+                "{:<10}  {:<17}  {:>20}  {:>12}  {:>11}{over}",
+                s.buildings()[b].name,
+                iso.model.name(),
+                mm(resp.peak_drift[0]),
+                clearance,
+                mm(resp.residual_drift[0])
+            );
+        }
+    }
+}
+
+/// Every contact site: impacts, e asked and delivered, peaks.
+fn sites(s: &Scenario, r: &Results) {
+    if !s.sites().is_empty() {
+        println!(
+            "\ncontact              impacts  e_asked  e_delivered    peak_force_MN  max_penetration_mm  dissipated_kJ  max_opening_mm"
+        );
+        let rows = s
+            .sites()
+            .iter()
+            .zip(&r.sites)
+            .enumerate()
+            .map(|(i, (site, lr))| {
+                let name = if site.is_wall() {
+                    format!("wall {}", site.name)
+                } else {
+                    site.name.clone()
+                };
+                (
+                    name,
+                    lr,
+                    site.contact.spec().restitution(),
+                    site.seat,
+                    site.bumper.is_some(),
+                    r.delivered_e(i),
+                )
+            });
+        let mut spread = false;
+        for (name, lr, e_asked, seat, bumper, delivered) in rows {
+            if let Some((lo, hi)) = delivered {
+                spread |= (lo - e_asked).abs() > 0.01 || (hi - e_asked).abs() > 0.01;
+            }
+            let range = match delivered {
+                Some((lo, hi)) if hi - lo < 5e-4 => format!("{lo:.3}"),
+                Some((lo, hi)) => format!("{lo:.3}-{hi:.3}"),
+                None => "-".into(),
+            };
+            let opening = lr.max_opening.iter().fold(0.0, |a: f64, b| a.max(*b));
+            let unseat = match (seat, lr.unseated) {
+                (Some(seat), Some(true)) => format!("  UNSEATED (seat {} mm)", mm(seat)),
+                (Some(seat), _) => format!("  (seat {} mm)", mm(seat)),
+                _ => String::new(),
+            };
+            let consumed = if bumper {
+                format!(
+                    "  bumper consumed {}",
+                    pounding::words::count(lr.consumed, "time", None)
+                )
+            } else {
+                String::new()
+            };
+            println!(
+                "{:<20} {:>7}  {:>7}  {:>11}  {:>15}  {:>18}  {:>13}  {:>14}{unseat}{consumed}",
+                name,
+                lr.impacts,
+                fmt_num(e_asked),
+                range,
+                mn(lr.peak_force),
+                mm(lr.max_penetration),
+                kj(lr.dissipated_energy),
+                mm(opening)
+            );
+        }
+        if spread {
+            println!(
+                "e_delivered (separation over approach velocity of each impact, in impacts.csv) differs from e_asked:\n\
+                 the calibration is exact for two free bodies, but here the storeys, the damping and every other force\n\
+                 on the two floors act during each contact, and can even part the floors faster than they met (e > 1).\n\
+                 Nothing is lost: the energy balance below holds. See docs/verification.md, \"Impacts inside a run\"."
+            );
+        }
+    }
+}
+
+/// Every device: its peaks per floor pair.
+fn devices(s: &Scenario, r: &Results) {
+    if !s.devices().is_empty() {
+        println!("\ndevice               floors  peak_force_MN  max_closing_mm  max_opening_mm");
+        for (d, dr) in s.devices().iter().zip(&r.devices) {
+            for (k, (i, j)) in d.floors.iter().enumerate() {
+                println!(
+                    "{:<20} {:>6}  {:>13}  {:>14}  {:>14}",
+                    d.name,
+                    format!("{i}-{j}"),
+                    mn(dr.peak_force[k]),
+                    mm(dr.max_closing[k]),
+                    mm(dr.max_opening[k])
+                );
+            }
+        }
+    }
+}
+
+/// The energy at the end, its balance and the integration counts.
+fn energy(r: &Results) {
+    let e = &r.energy.end;
+    println!(
+        "\nenergy at the end, kJ: input {} = kinetic {} + strain {} + damping {} + hysteretic {} + contact {}",
+        kj(e.input),
+        kj(e.kinetic),
+        kj(e.strain),
+        kj(e.damping),
+        kj(e.hysteretic),
+        kj(e.contact)
+    );
+    println!(
+        "energy balance error: {:.2e} (largest over the run, relative to the largest energy)",
+        r.energy.relative_error
+    );
+    println!(
+        "integration: {} steps ({} rejected), {} events (contact touch, turn, separation; storey yield, reversal)",
+        r.statistics.steps, r.statistics.rejected, r.statistics.events
+    );
+}

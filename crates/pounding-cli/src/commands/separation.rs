@@ -1,0 +1,101 @@
+//! `pounding separation`: the separation each pair of neighbours needs, against the code rules.
+
+use crate::args::SeparationArgs;
+use crate::error::{input, CliError};
+use crate::files::{check_out, save_out};
+use pounding_study::separation::{PairReport, SeparationReport, Stats};
+use std::path::Path;
+
+/// `pounding separation`.
+pub fn run(a: &SeparationArgs) -> Result<(), CliError> {
+    let file = pounding_study::input::ScenarioFile::read(&a.scenario).map_err(|e| input(e.0))?;
+    // The scenario itself is checked with file and line first.
+    file.load().map_err(|e| input(e.0))?;
+    let mut records = Vec::new();
+    for r in &a.records {
+        records.extend(
+            pounding_study::study::record_sources(
+                Path::new("."),
+                &serde_json::Value::String(r.clone()),
+            )
+            .map_err(|m| input(format!("--{m}")))?,
+        );
+    }
+    let label = a.scenario.display().to_string();
+    check_out(&a.out)?;
+    let v =
+        pounding_study::separation::report_message(&file.value, &label, &records, a.aligned_factor)
+            .map_err(|m| input(m.replace("aligned_factor = ", "--aligned-factor ")))?;
+    let fig = crate::plot::analyses::separation(
+        &v,
+        &format!("{label}; {} record(s)", records.len().max(1)),
+    );
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&v).expect("JSON"));
+        return save_out(&a.out, ("separation", &v), Vec::new(), &[fig], true);
+    }
+    print(&v);
+    save_out(&a.out, ("separation", &v), Vec::new(), &[fig], false)
+}
+
+/// The report as tables on the terminal, m.
+fn print(v: &SeparationReport) {
+    let table = |pairs: &[PairReport]| {
+        for p in pairs {
+            for l in &p.levels {
+                println!(
+                    "{:<20} {:>3}-{:<3} {:>10.5}  {:>10.5}  {:>10.5}    {:>10.5}  {:>10.5}  {:>10.5}  {:.4}",
+                    p.between.join("|"),
+                    l.floors.0,
+                    l.floors.1,
+                    l.peak_left,
+                    l.peak_right,
+                    l.required_gap,
+                    l.abs,
+                    l.srss,
+                    l.ddc,
+                    l.rho
+                );
+            }
+        }
+    };
+    println!("required separation (a run without contact) and the rules' estimates, m");
+    println!("pair                 floors   peak_left  peak_right  required_gap         abs        srss         ddc    rho");
+    let (records, statistics) = match v {
+        SeparationReport::One { pairs, .. } => return table(pairs),
+        SeparationReport::Suite {
+            records,
+            statistics,
+            ..
+        } => (records, statistics),
+    };
+    for r in records {
+        println!("\nrecord {}", r.record);
+        table(&r.pairs);
+    }
+    type Pick = fn(&Stats) -> f64;
+    let stats: [(&str, Pick); 3] = [
+        ("mean", |s| s.mean),
+        ("median", |s| s.median),
+        ("p84", |s| s.p84),
+    ];
+    for (stat, pick) in stats {
+        println!("\n{stat} over {} records", records.len());
+        for p in &statistics.pairs {
+            for l in &p.levels {
+                println!(
+                    "{:<20} {:>3}-{:<3} {:>10.5}  {:>10.5}  {:>10.5}    {:>10.5}  {:>10.5}  {:>10.5}",
+                    p.between.join("|"),
+                    l.floors.0,
+                    l.floors.1,
+                    pick(&l.peak_left),
+                    pick(&l.peak_right),
+                    pick(&l.required_gap),
+                    pick(&l.abs),
+                    pick(&l.srss),
+                    pick(&l.ddc)
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,67 @@
+//! What the studies (sweep, IDA) share on the command line: their worker threads and their progress bar on a
+//! terminal.
+
+use crate::args::SweepArgs;
+use crate::error::{input, CliError};
+use pounding_study::sweep::Progress;
+use std::io::IsTerminal;
+use std::ops::ControlFlow;
+
+/// What a sweep's progress reports: the bar (on a terminal, without `quiet`) and the runs found in the store.
+pub struct Bar {
+    /// The bar, if shown.
+    pub bar: Option<indicatif::ProgressBar>,
+    /// Runs found in the store.
+    pub skipped: usize,
+    /// Runs found damaged in the store, and run again.
+    pub damaged: usize,
+}
+
+/// A sweep's progress state and the callback that feeds it.
+pub fn progress(
+    quiet: bool,
+) -> (
+    std::rc::Rc<std::cell::RefCell<Bar>>,
+    impl FnMut(Progress) -> ControlFlow<()>,
+) {
+    let bar = (!quiet && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(0);
+        b.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{spinner} [{bar:40}] {pos}/{len} runs, {msg} ({elapsed}, about {eta} left)",
+            )
+            .expect("a valid template")
+            .progress_chars("=> "),
+        );
+        b
+    });
+    let state = std::rc::Rc::new(std::cell::RefCell::new(Bar {
+        bar,
+        skipped: 0,
+        damaged: 0,
+    }));
+    let shared = state.clone();
+    let report = move |p: Progress| {
+        let mut s = shared.borrow_mut();
+        s.skipped = p.skipped;
+        s.damaged = p.damaged;
+        if let Some(b) = &s.bar {
+            b.set_length(p.todo as u64);
+            b.set_position(p.done as u64);
+            b.set_message(format!("{} failed, {} from the store", p.failed, p.skipped));
+        }
+        ControlFlow::Continue(())
+    };
+    (state, report)
+}
+
+/// The threads of `--workers`, by default the machine's cores.
+pub fn workers(a: &SweepArgs) -> Result<usize, CliError> {
+    match a.workers {
+        Some(0) => Err(input(
+            "--workers 0 is not allowed: at least 1 (default: the number of cores)",
+        )),
+        Some(n) => Ok(n),
+        None => Ok(std::thread::available_parallelism().map_or(1, |n| n.get())),
+    }
+}
