@@ -35,6 +35,50 @@ def without_label(summary):
     return s
 
 
+def in_cli_shape(summary, cli):
+    """`summary` in the shape of `cli`, a summary the command line printed. A command line with the typed
+    summary (contacts and walls together in `sites`) prints the same shape: `summary` as it is. One built
+    before it (POUNDING_BIN of an older commit) prints contacts and walls apart, without the storey heights,
+    with a device's slack outside its law and a law's `damping` for `damping_coefficient`: the same numbers
+    are moved into that shape, and the units' descriptions (reworded since) are the command line's."""
+    if "sites" in cli:
+        return summary
+    s = copy.deepcopy(summary)
+    contacts, walls = [], []
+    for site in s.pop("sites"):
+        kind, levels = site.pop("kind"), site.pop("levels")
+        if kind == "contact":
+            site.pop("name")
+            site["floors"] = [[l["left"], l["right"]] for l in levels]
+            contacts.append(site)
+        else:
+            site["floors"] = [l.get("left", l.get("right")) for l in levels]
+            walls.append(site)
+    s["contacts"], s["walls"] = contacts, walls
+    for b in s["buildings"]:
+        b.pop("heights")
+    for d in s["devices"]:
+        law = d["law"]
+        if "damping_coefficient" in law:
+            law["damping"] = law.pop("damping_coefficient")
+        if "slack" in law:
+            d["slack"] = law["slack"]
+    s["units"] = cli["units"]
+    return s
+
+
+def headline_rows(summaries):
+    """`pounding.headline` as a list of dicts, with pandas or without."""
+    table = pounding.headline(summaries)
+    return table if isinstance(table, list) else table.to_dict("records")
+
+
+def site(summary, name):
+    """The site called `name` in a summary's `sites`."""
+    (found,) = [x for x in summary["sites"] if x["name"] == name]
+    return found
+
+
 @pytest.fixture(scope="module")
 def base():
     return pounding.load_scenario(EXAMPLE)
@@ -55,14 +99,18 @@ def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
     expected = json.loads(o.stdout)
     # The same file by the same path: the whole summary, label included, to the last digit.
     os.chdir(ROOT)
-    assert pounding.run("examples/two-sdof.toml").summary == expected
+    assert in_cli_shape(pounding.run("examples/two-sdof.toml").summary, expected) == expected
     # The same scenario as a dict.
     r = pounding.run(base)
-    assert without_label(r.summary) == without_label(expected)
+    assert without_label(in_cli_shape(r.summary, expected)) == without_label(expected)
     assert r.summary["scenario"] == "<dict>"
+    (contact,) = r.summary["sites"]
+    assert (contact["kind"], contact["name"], contact["between"]) == ("contact", "left|right", ["left", "right"])
+    assert contact["levels"] == [{"left": 1, "right": 1}]
+    assert r.summary["buildings"][0]["heights"] == [3.0]
     # Impacts and histories against the files the command line wrote.
     rows = (tmp_path / "out" / "impacts.csv").read_text().splitlines()[1:]
-    assert len(r.impacts["time_s"]) == len(rows) == expected["contacts"][0]["impacts"]
+    assert len(r.impacts["time_s"]) == len(rows) == contact["impacts"] > 0
     first = rows[0].split(",")
     assert r.impacts["time_s"][0] == float(first[0])
     assert r.impacts["peak_force_N"][0] == float(first[7])
@@ -72,8 +120,12 @@ def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
     assert h.displacement["left"].shape == (resp.shape[0], 1)
     # response.csv writes 17 significant digits (`{:e}` of the shortest representation): exact.
     assert np.array_equal(h.displacement["left"][:, 0], resp[:, 2])
-    assert np.array_equal(h.contact_force["left|right"][:, 0], resp[:, 4])
+    assert np.array_equal(h.site_force["left|right"][:, 0], resp[:, 4])
+    assert h.site_levels == {"left|right": [(1, 1)]}
+    # The contacts' view of the sites: the same arrays.
+    assert h.contact_force["left|right"] is h.site_force["left|right"]
     assert h.contact_floors == {"left|right": [(1, 1)]}
+    assert h.wall_force == {} and h.wall_floors == {}
 
 
 def test_walls_devices_and_isolators_match_the_command_line(tmp_path):
@@ -83,24 +135,42 @@ def test_walls_devices_and_isolators_match_the_command_line(tmp_path):
     expected = json.loads(o.stdout)
     os.chdir(ROOT)
     r = pounding.run("examples/bridge-three-span.toml")
-    assert r.summary == expected
+    assert in_cli_shape(r.summary, expected) == expected
+    assert [(x["kind"], x["name"]) for x in r.summary["sites"]] == [
+        ("contact", "span1|span2"), ("contact", "span2|span3"), ("wall", "abutment-west"), ("wall", "abutment-east")
+    ]
+    west = site(r.summary, "abutment-west")
+    assert (west["facing"], west["side"], west["levels"]) == ("span1", "left", [{"right": 1}])
+    assert site(r.summary, "abutment-east")["levels"] == [{"left": 1}]
+    assert r.summary["devices"][0]["law"] == {"model": "restrainer", "stiffness": 4.0e7, "slack": 0.02}
     assert [d["name"] for d in r.summary["devices"]] == ["restrainer-1", "restrainer-2"]
     assert r.summary["buildings"][0]["isolator"]["model"] == "bilinear"
     header = (tmp_path / "out" / "response.csv").read_text().splitlines()[0].split(",")
     resp = np.loadtxt(tmp_path / "out" / "response.csv", delimiter=",", skiprows=1)
     h = r.histories
     k = header.index("abutment-west_floor1_force_N")
-    assert np.array_equal(h.wall_force["abutment-west"][:, 0], resp[:, k])
+    assert np.array_equal(h.site_force["abutment-west"][:, 0], resp[:, k])
+    assert h.wall_force["abutment-west"] is h.site_force["abutment-west"]
+    k = header.index("span2|span3_floors1-1_force_N")
+    assert np.array_equal(h.site_force["span2|span3"][:, 0], resp[:, k])
     k = header.index("restrainer-2_floors1-1_force_N")
     assert np.array_equal(h.device_force["restrainer-2"][:, 0], resp[:, k])
     # A restrainer only pulls (negative: it resists the opening).
     assert h.device_force["restrainer-2"].max() <= 0.0 < -h.device_force["restrainer-2"].min()
     assert h.wall_floors == {"abutment-west": [1], "abutment-east": [1]}
+    assert h.site_levels["abutment-west"] == [(None, 1)] and h.site_levels["abutment-east"] == [(1, None)]
+    assert set(h.contact_force) == {"span1|span2", "span2|span3"}
     # Impacts on a wall: its name, 0 for the wall's side (blank in impacts.csv), and the layer.
     walls = r.impacts["contact"] == "abutment-west"
-    assert walls.sum() == r.summary["walls"][0]["impacts"] > 0
+    assert walls.sum() == west["impacts"] > 0
     assert (r.impacts["floor_left"][walls] == 0).all() and (r.impacts["floor_right"][walls] == 1).all()
     assert set(r.impacts["layer"]) == {"direct"}
+    # The headline lists the walls as it lists the contacts, from the summary's sites.
+    (row,) = headline_rows([r.summary])
+    for x in r.summary["sites"]:
+        assert row[f"{x['name']}_impacts"] == x["impacts"]
+        assert row[f"{x['name']}_peak_force_N"] == x["peak_force"]
+    assert row["abutment-west_impacts"] == walls.sum()
 
 
 def test_histories_close_the_energy_balance(base):
@@ -163,7 +233,9 @@ def test_a_sweep_equals_single_runs_in_input_order(base):
         "error": 'ground_motion.record: record = "kobe" is not a built-in record: el-centro-1940, synthetic-SEED (SEED 0, 1, 2, ...) (for a file, use file = "path")'
     }
     table = pounding.headline(out)
-    assert list(table["left|right_peak_force_N"][:4]) == [o["contacts"][0]["peak_force"] for o in out[:4]]
+    assert list(table["left|right_peak_force_N"][:4]) == [o["sites"][0]["peak_force"] for o in out[:4]]
+    assert list(table["left|right_impacts"][:4]) == [o["sites"][0]["impacts"] for o in out[:4]]
+    assert table["error"][4] == out[4]["error"] and table["error"][:4].isna().all()
 
 
 def test_the_store_resumes_and_refuses_another_study(tmp_path, base):
