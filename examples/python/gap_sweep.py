@@ -47,7 +47,7 @@ colours = {"papi": "#1f5fa8", "kelvin-voigt": "#d1495b"}
 styles = {1.0: "-", 1.5: "--"}
 for model in models:
     for scale in scales:
-        force = [s["contacts"][0]["peak_force"] / 1e6 for s, k in zip(summaries, keys) if k == (model, scale)]
+        force = [s["sites"][0]["peak_force"] / 1e6 for s, k in zip(summaries, keys) if k == (model, scale)]
         ax.plot(gaps * 1e3, force, styles[scale], color=colours[model], label=f"{model}, El Centro x {scale}")
 ax.set_xlabel("gap at rest (mm)")
 ax.set_ylabel("peak contact force (MN)")

@@ -3,9 +3,11 @@
 //! cross as JSON text, so that a dict is validated by exactly the schema a TOML file is.
 
 use pounding::analysis::{Results, RunOptions, Scenario};
-use pounding_study::input::{dict_message, from_value, Loaded, ScenarioFile};
+use pounding_study::input::{dict_message, from_value, parse_value, Loaded, ScenarioFile};
 use pounding_study::store::{Finished, Store, StoreError};
+use pounding_study::summary::RunSummary;
 use pounding_study::sweep::{self, Prepared, Progress};
+use pounding_study::tables::ImpactRow;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
@@ -30,6 +32,28 @@ fn store_err(e: StoreError) -> PyErr {
     match e {
         StoreError::Mismatch(m) => input_err(m),
         StoreError::Io(m) => PyOSError::new_err(m),
+    }
+}
+
+/// A typed result (a summary, a separation or IDA report) as compact JSON text.
+fn json_text(v: &impl serde::Serialize) -> PyResult<String> {
+    serde_json::to_string(v).map_err(|e| input_err(format!("result: {e}")))
+}
+
+/// The error of a function's keyword arguments read as one set of parameters: `key: message`, or the
+/// message alone when it names its key already (`units = "gg" is not allowed: ...`).
+fn keyword_err((key, msg): (Option<String>, String)) -> PyErr {
+    match key {
+        Some(k) if msg.starts_with(&format!("{k}: {k} = ")) => input_err(&msg[k.len() + 2..]),
+        k => input_err(dict_message(k, msg)),
+    }
+}
+
+/// At most 64 characters of `s`, for a message.
+fn short(s: &str) -> String {
+    match s.char_indices().nth(64) {
+        Some((i, _)) => format!("{}...", &s[..i]),
+        None => s.to_string(),
     }
 }
 
@@ -78,58 +102,44 @@ fn matrix<'py>(py: Python<'py>, cols: &[Vec<f64>], n: usize) -> PyResult<Bound<'
     Ok(d)
 }
 
-/// The impacts as columns (lists; `e_post` NaN where the impact gave none).
+/// The impacts as columns: the rows of impacts.csv ([`ImpactRow`]) turned into lists (`e_post` NaN where
+/// the impact gave none, the floor 0 on a wall's side).
 fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'py, PyDict>> {
+    let rows = ImpactRow::all(s, r);
     let d = PyDict::new(py);
-    let col = |f: &dyn Fn(&pounding::analysis::Impact) -> f64| -> Vec<f64> {
-        r.impacts.iter().map(f).collect()
+    let num = |f: fn(&ImpactRow) -> f64| -> Vec<f64> { rows.iter().map(f).collect() };
+    let floor = |f: fn(&ImpactRow) -> Option<usize>| -> Vec<usize> {
+        rows.iter().map(|i| f(i).unwrap_or(0)).collect()
     };
-    d.set_item("time_s", col(&|i| i.time))?;
+    d.set_item("time_s", num(|i| i.time_s))?;
     d.set_item(
         "contact",
-        r.impacts
-            .iter()
-            .map(|i| s.sites()[i.site].name.clone())
-            .collect::<Vec<_>>(),
+        rows.iter().map(|i| i.contact.as_str()).collect::<Vec<_>>(),
     )?;
-    // The floor on each side; 0 on a wall's side (impacts.csv leaves it blank).
-    let floors: Vec<(usize, usize)> = r
-        .impacts
-        .iter()
-        .map(|i| {
-            let lv = s.sites()[i.site].levels[i.level];
-            (lv.left.unwrap_or(0), lv.right.unwrap_or(0))
-        })
-        .collect();
-    d.set_item("floor_left", floors.iter().map(|f| f.0).collect::<Vec<_>>())?;
-    d.set_item(
-        "floor_right",
-        floors.iter().map(|f| f.1).collect::<Vec<_>>(),
-    )?;
+    d.set_item("floor_left", floor(|i| i.floor_left))?;
+    d.set_item("floor_right", floor(|i| i.floor_right))?;
     d.set_item(
         "layer",
-        r.impacts.iter().map(|i| i.layer.name()).collect::<Vec<_>>(),
+        rows.iter().map(|i| i.layer.name()).collect::<Vec<_>>(),
     )?;
-    d.set_item("v_i_m_per_s", col(&|i| i.v_i))?;
-    d.set_item("e_post", col(&|i| i.e_post.unwrap_or(f64::NAN)))?;
-    d.set_item("peak_force_N", col(&|i| i.peak_force))?;
-    d.set_item("time_of_peak_force_s", col(&|i| i.time_of_peak_force))?;
-    d.set_item("duration_s", col(&|i| i.duration))?;
-    d.set_item("dissipated_energy_J", col(&|i| i.dissipated_energy))?;
-    d.set_item("max_penetration_m", col(&|i| i.max_penetration))?;
-    d.set_item(
-        "ended",
-        r.impacts.iter().map(|i| i.ended).collect::<Vec<_>>(),
-    )?;
+    d.set_item("v_i_m_per_s", num(|i| i.v_i_m_per_s))?;
+    d.set_item("e_post", num(|i| i.e_post.unwrap_or(f64::NAN)))?;
+    d.set_item("peak_force_N", num(|i| i.peak_force_n))?;
+    d.set_item("time_of_peak_force_s", num(|i| i.time_of_peak_force_s))?;
+    d.set_item("duration_s", num(|i| i.duration_s))?;
+    d.set_item("dissipated_energy_J", num(|i| i.dissipated_energy_j))?;
+    d.set_item("max_penetration_m", num(|i| i.max_penetration_m))?;
+    d.set_item("ended", rows.iter().map(|i| i.ended).collect::<Vec<_>>())?;
     d.set_item(
         "resting",
-        r.impacts.iter().map(|i| i.resting).collect::<Vec<_>>(),
+        rows.iter().map(|i| i.resting).collect::<Vec<_>>(),
     )?;
     Ok(d)
 }
 
 /// The histories: time and ground acceleration; per building, floor displacements, absolute accelerations and
-/// storey shears (samples x floors); per contact, the force of each floor pair (samples x pairs); energies.
+/// storey shears (samples x floors); per site (contact or wall), the force of each level (samples x levels)
+/// and its levels; per device, the force of each floor pair; energies.
 fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'py, PyDict>> {
     let h = &r.histories;
     let n = h.t.len();
@@ -150,27 +160,17 @@ fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<
         }
         d.set_item(key, g)?;
     }
-    let (f, floors) = (PyDict::new(py), PyDict::new(py));
-    let (wf, wfl) = (PyDict::new(py), PyDict::new(py));
+    // Every site alike (contacts and walls): its force per level, and its levels as (left, right) floors,
+    // None on a wall's side.
+    let (f, levels) = (PyDict::new(py), PyDict::new(py));
     for (site, cols) in s.sites().iter().zip(&h.site_force) {
-        if site.is_wall() {
-            wf.set_item(&site.name, matrix(py, cols, n)?)?;
-            let fl: Vec<usize> = site.levels.iter().map(|l| l.floor()).collect();
-            wfl.set_item(&site.name, fl)?;
-        } else {
-            f.set_item(&site.name, matrix(py, cols, n)?)?;
-            let fl: Vec<(usize, usize)> = site
-                .levels
-                .iter()
-                .map(|l| (l.left.unwrap_or(0), l.right.unwrap_or(0)))
-                .collect();
-            floors.set_item(&site.name, fl)?;
-        }
+        f.set_item(&site.name, matrix(py, cols, n)?)?;
+        let lv: Vec<(Option<usize>, Option<usize>)> =
+            site.levels.iter().map(|l| (l.left, l.right)).collect();
+        levels.set_item(&site.name, lv)?;
     }
-    d.set_item("contact_force", f)?;
-    d.set_item("contact_floors", floors)?;
-    d.set_item("wall_force", wf)?;
-    d.set_item("wall_floors", wfl)?;
+    d.set_item("site_force", f)?;
+    d.set_item("site_levels", levels)?;
     let (df, dfl) = (PyDict::new(py), PyDict::new(py));
     for (dv, cols) in s.devices().iter().zip(&h.device_force) {
         df.set_item(&dv.name, matrix(py, cols, n)?)?;
@@ -233,9 +233,9 @@ fn run<'py>(
         return Err(e);
     }
     let results = results.map_err(|e| input_err(format!("analysis failed: {e}")))?;
-    let summary = pounding_study::summary::summary(&loaded, &results).map_err(input_err)?;
+    let summary = RunSummary::new(&loaded, &results).map_err(input_err)?;
     let out = PyDict::new(py);
-    out.set_item("summary", summary.to_string())?;
+    out.set_item("summary", json_text(&summary)?)?;
     out.set_item("impacts", impacts(py, &loaded.scenario, &results)?)?;
     if histories {
         out.set_item(
@@ -358,14 +358,14 @@ fn sweep_runs(
         return Err(e);
     }
     let outcomes = outcomes.map_err(|e| PyOSError::new_err(e.to_string()))?;
-    Ok(prepared
+    prepared
         .iter()
         .zip(outcomes)
         .map(|(p, o)| match o {
-            Ok(s) => (p.key.clone(), true, s),
-            Err(e) => (p.key.clone(), false, e),
+            Ok(s) => Ok((p.key.clone(), true, json_text(&s)?)),
+            Err(e) => Ok((p.key.clone(), false, e)),
         })
-        .collect())
+        .collect()
 }
 
 /// A study store opened from Python (for sweeps whose runs happen elsewhere, as on a Dask cluster).
@@ -385,16 +385,18 @@ impl PyStore {
         })
     }
 
-    /// Every stored run: `(key, ok, summary JSON or error message)`.
+    /// Every stored run: `(key, ok, summary JSON or error message)`. A stored summary that does not read
+    /// back as one (damaged, or of another version) is left out, so that the run is run again and replaced,
+    /// as a local sweep does.
     fn finished(&self) -> PyResult<Vec<(String, bool, String)>> {
         Ok(self
             .store
             .all()
             .map_err(store_err)?
             .into_iter()
-            .map(|(k, o)| match o {
-                Ok(s) => (k, true, s),
-                Err(e) => (k, false, e),
+            .filter_map(|(k, o)| match o {
+                Ok(s) => RunSummary::from_json(&s).is_ok().then_some((k, true, s)),
+                Err(e) => Some((k, false, e)),
             })
             .collect())
     }
@@ -414,35 +416,64 @@ impl PyStore {
     }
 }
 
-/// The headline results of a summary (JSON text) as `(column, value)` pairs, as in runs.csv.
+/// The headline results of a summary (JSON text) as `(column, value)` pairs, as in runs.csv: counts as
+/// integers, numbers as floats. A summary that does not read as one raises InputError naming the key.
 #[pyfunction]
 fn headline(py: Python<'_>, summary: &str) -> PyResult<Py<PyList>> {
-    let v: Value = serde_json::from_str(summary).map_err(|e| input_err(e.to_string()))?;
-    let row = pounding_study::headline::headline(&v);
+    use pounding_study::headline::Cell;
+    let value: Value =
+        serde_json::from_str(summary).map_err(|e| input_err(format!("summary: not JSON: {e}")))?;
+    // Read as RunSummary::from_json reads it, with the key that does not fit as a dotted path.
+    let s: RunSummary = parse_value(&value).map_err(|(k, m)| match k {
+        Some(k) if !k.is_empty() => input_err(format!("summary.{m}")),
+        _ => input_err(format!("summary: {m}")),
+    })?;
     let out = PyList::empty(py);
-    for (k, v) in row {
-        // Counts stay integers; null (a number that is not finite) becomes None.
-        match v.as_u64() {
-            Some(n) => out.append((k, n))?,
-            None => out.append((k, v.as_f64()))?,
+    for (k, v) in pounding_study::headline::headline(&s) {
+        match v {
+            Cell::Count(n) => out.append((k, n))?,
+            Cell::Number(x) => out.append((k, x))?,
         }
     }
     Ok(out.unbind())
 }
 
-/// The elastic spectrum of the record a `[ground_motion]` table names (JSON text of the scenario schema's
-/// `ground_motion`) for `damping` at `periods` (s): `(sd, psv, psa)` in m, m/s, m/s^2.
+/// Whether `name` is a built-in record (`el-centro-1940`, `synthetic-SEED`): the library's one list.
+fn is_builtin(name: &str) -> bool {
+    pounding::ground_motion::Builtin::from_name(name).is_some()
+}
+
+/// The elastic spectrum of the record `source` (a built-in record's name, else a file's path, as the command
+/// line decides; `format`, `dt`, `units` and `scale` as in a scenario's `[ground_motion]`) for `damping` at
+/// `periods` (s): `(sd, psv, psa)` in m, m/s, m/s^2.
 #[pyfunction]
+#[pyo3(signature = (source, damping, periods, format=None, dt=None, units=None, scale=1.0))]
+#[allow(clippy::too_many_arguments)]
 fn spectrum(
     py: Python<'_>,
-    ground_motion: &str,
+    source: &str,
     damping: f64,
     periods: Vec<f64>,
+    format: Option<&str>,
+    dt: Option<f64>,
+    units: Option<&str>,
+    scale: f64,
 ) -> PyResult<(Vec<f64>, Vec<f64>, Vec<f64>)> {
-    let value: Value = serde_json::from_str(ground_motion)
-        .map_err(|e| input_err(format!("ground_motion: {e}")))?;
+    let mut gm = serde_json::Map::new();
+    let kind = if is_builtin(source) { "record" } else { "file" };
+    gm.insert(kind.into(), source.into());
+    if let Some(f) = format {
+        gm.insert("format".into(), f.into());
+    }
+    if let Some(dt) = dt {
+        gm.insert("dt".into(), dt.into());
+    }
+    if let Some(u) = units {
+        gm.insert("units".into(), u.into());
+    }
+    gm.insert("scale".into(), scale.into());
     let doc: pounding::scenario::GroundMotionDoc =
-        serde_json::from_value(value).map_err(|e| input_err(format!("ground_motion: {e}")))?;
+        parse_value(&Value::Object(gm)).map_err(keyword_err)?;
     let spec = doc.spec().map_err(|e| input_err(e.message))?;
     let r = pounding_study::input::read_record(&spec)
         .and_then(|r| {
@@ -485,56 +516,26 @@ fn separation(
             pounding_study::separation::report_message(&value, &label, &records, aligned_factor)
         })
         .map_err(input_err)?;
-    Ok(v.to_string())
+    json_text(&v)
 }
 
-/// A synthetic record (docs/separation.md): `seed` and the parameters as JSON text (`filter`, `wg`, `zg`,
-/// `wf`, `zf`, `duration`, `dt`, `t1`, `t2`, `decay`, `pga`); returns `(dt, t0, accelerations)` in s and m/s^2.
+/// A synthetic record (docs/separation.md): `seed` (a whole number from 0 to 2^64 - 1) and the parameters
+/// as JSON text, read as the library's [`SyntheticParams`](pounding::ground_motion::synthetic::SyntheticParams)
+/// (`filter`, `wg`, `zg`, `wf`, `zf`, `duration`, `dt`, `t1`, `t2`, `decay`, `pga`; each absent one keeps its
+/// default); returns `(dt, t0, accelerations)` in s and m/s^2.
 #[pyfunction]
-fn synthetic(seed: u64, params: &str) -> PyResult<(f64, f64, Vec<f64>)> {
-    use pounding::ground_motion::synthetic::{Filter, Synthetic};
-    let p: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
-    let d = Synthetic::default();
-    let num = |k: &str, default: f64| -> PyResult<f64> {
-        match p.get(k) {
-            None | Some(Value::Null) => Ok(default),
-            Some(v) => v
-                .as_f64()
-                .ok_or_else(|| input_err(format!("{k} = {v} is not allowed: a number"))),
-        }
-    };
-    let filter = match p
-        .get("filter")
-        .and_then(Value::as_str)
-        .unwrap_or("clough-penzien")
-    {
-        "kanai-tajimi" => Filter::KanaiTajimi {
-            wg: num("wg", 15.6)?,
-            zg: num("zg", 0.6)?,
-        },
-        "clough-penzien" => Filter::CloughPenzien {
-            wg: num("wg", 15.6)?,
-            zg: num("zg", 0.6)?,
-            wf: num("wf", 1.56)?,
-            zf: num("zf", 0.6)?,
-        },
-        other => {
-            return Err(input_err(format!(
-                "filter = {other:?} is not allowed: one of kanai-tajimi, clough-penzien"
-            )))
-        }
-    };
-    let s = Synthetic {
-        filter,
-        duration: num("duration", d.duration)?,
-        dt: num("dt", d.dt)?,
-        t1: num("t1", d.t1)?,
-        t2: num("t2", d.t2)?,
-        decay: num("decay", d.decay)?,
-        pga: Some(num("pga", 3.0)?),
-        envelope: true,
-    };
-    let r = s
+fn synthetic(seed: &Bound<'_, PyAny>, params: &str) -> PyResult<(f64, f64, Vec<f64>)> {
+    use pounding::ground_motion::synthetic::SyntheticParams;
+    let seed: u64 = seed.extract().map_err(|_| {
+        input_err(format!(
+            "seed = {} is not allowed: a whole number from 0 to 2^64 - 1",
+            short(&seed.repr().map_or_else(|_| "?".into(), |r| r.to_string()))
+        ))
+    })?;
+    let value: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
+    let p: SyntheticParams = parse_value(&value).map_err(keyword_err)?;
+    let r = p
+        .synthetic()
         .record("synthetic", seed)
         .map_err(|e| input_err(e.to_string()))?;
     Ok((r.dt(), r.t0(), r.accelerations().to_vec()))
@@ -565,7 +566,7 @@ fn ida(py: Python<'_>, study: &str, out: &str, workers: usize, progress: bool) -
         return Err(e);
     }
     match r {
-        Ok(o) => Ok(o.json.to_string()),
+        Ok(o) => json_text(&o.json),
         Err(IdaError::Input(e)) => Err(input_err(e.0)),
         Err(IdaError::Io(m)) => Err(PyOSError::new_err(m)),
     }

@@ -35,6 +35,50 @@ def without_label(summary):
     return s
 
 
+def in_cli_shape(summary, cli):
+    """`summary` in the shape of `cli`, a summary the command line printed. A command line with the typed
+    summary (contacts and walls together in `sites`) prints the same shape: `summary` as it is. One built
+    before it (POUNDING_BIN of an older commit) prints contacts and walls apart, without the storey heights,
+    with a device's slack outside its law and a law's `damping` for `damping_coefficient`: the same numbers
+    are moved into that shape, and the units' descriptions (reworded since) are the command line's."""
+    if "sites" in cli:
+        return summary
+    s = copy.deepcopy(summary)
+    contacts, walls = [], []
+    for site in s.pop("sites"):
+        kind, levels = site.pop("kind"), site.pop("levels")
+        if kind == "contact":
+            site.pop("name")
+            site["floors"] = [[l["left"], l["right"]] for l in levels]
+            contacts.append(site)
+        else:
+            site["floors"] = [l.get("left", l.get("right")) for l in levels]
+            walls.append(site)
+    s["contacts"], s["walls"] = contacts, walls
+    for b in s["buildings"]:
+        b.pop("heights")
+    for d in s["devices"]:
+        law = d["law"]
+        if "damping_coefficient" in law:
+            law["damping"] = law.pop("damping_coefficient")
+        if "slack" in law:
+            d["slack"] = law["slack"]
+    s["units"] = cli["units"]
+    return s
+
+
+def headline_rows(summaries):
+    """`pounding.headline` as a list of dicts, with pandas or without."""
+    table = pounding.headline(summaries)
+    return table if isinstance(table, list) else table.to_dict("records")
+
+
+def site(summary, name):
+    """The site called `name` in a summary's `sites`."""
+    (found,) = [x for x in summary["sites"] if x["name"] == name]
+    return found
+
+
 @pytest.fixture(scope="module")
 def base():
     return pounding.load_scenario(EXAMPLE)
@@ -55,14 +99,18 @@ def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
     expected = json.loads(o.stdout)
     # The same file by the same path: the whole summary, label included, to the last digit.
     os.chdir(ROOT)
-    assert pounding.run("examples/two-sdof.toml").summary == expected
+    assert in_cli_shape(pounding.run("examples/two-sdof.toml").summary, expected) == expected
     # The same scenario as a dict.
     r = pounding.run(base)
-    assert without_label(r.summary) == without_label(expected)
+    assert without_label(in_cli_shape(r.summary, expected)) == without_label(expected)
     assert r.summary["scenario"] == "<dict>"
+    (contact,) = r.summary["sites"]
+    assert (contact["kind"], contact["name"], contact["between"]) == ("contact", "left|right", ["left", "right"])
+    assert contact["levels"] == [{"left": 1, "right": 1}]
+    assert r.summary["buildings"][0]["heights"] == [3.0]
     # Impacts and histories against the files the command line wrote.
     rows = (tmp_path / "out" / "impacts.csv").read_text().splitlines()[1:]
-    assert len(r.impacts["time_s"]) == len(rows) == expected["contacts"][0]["impacts"]
+    assert len(r.impacts["time_s"]) == len(rows) == contact["impacts"] > 0
     first = rows[0].split(",")
     assert r.impacts["time_s"][0] == float(first[0])
     assert r.impacts["peak_force_N"][0] == float(first[7])
@@ -72,8 +120,12 @@ def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
     assert h.displacement["left"].shape == (resp.shape[0], 1)
     # response.csv writes 17 significant digits (`{:e}` of the shortest representation): exact.
     assert np.array_equal(h.displacement["left"][:, 0], resp[:, 2])
-    assert np.array_equal(h.contact_force["left|right"][:, 0], resp[:, 4])
+    assert np.array_equal(h.site_force["left|right"][:, 0], resp[:, 4])
+    assert h.site_levels == {"left|right": [(1, 1)]}
+    # The contacts' view of the sites: the same arrays.
+    assert h.contact_force["left|right"] is h.site_force["left|right"]
     assert h.contact_floors == {"left|right": [(1, 1)]}
+    assert h.wall_force == {} and h.wall_floors == {}
 
 
 def test_walls_devices_and_isolators_match_the_command_line(tmp_path):
@@ -83,24 +135,136 @@ def test_walls_devices_and_isolators_match_the_command_line(tmp_path):
     expected = json.loads(o.stdout)
     os.chdir(ROOT)
     r = pounding.run("examples/bridge-three-span.toml")
-    assert r.summary == expected
+    assert in_cli_shape(r.summary, expected) == expected
+    assert [(x["kind"], x["name"]) for x in r.summary["sites"]] == [
+        ("contact", "span1|span2"), ("contact", "span2|span3"), ("wall", "abutment-west"), ("wall", "abutment-east")
+    ]
+    west = site(r.summary, "abutment-west")
+    assert (west["facing"], west["side"], west["levels"]) == ("span1", "left", [{"right": 1}])
+    assert site(r.summary, "abutment-east")["levels"] == [{"left": 1}]
+    assert r.summary["devices"][0]["law"] == {"model": "restrainer", "stiffness": 4.0e7, "slack": 0.02}
     assert [d["name"] for d in r.summary["devices"]] == ["restrainer-1", "restrainer-2"]
     assert r.summary["buildings"][0]["isolator"]["model"] == "bilinear"
     header = (tmp_path / "out" / "response.csv").read_text().splitlines()[0].split(",")
     resp = np.loadtxt(tmp_path / "out" / "response.csv", delimiter=",", skiprows=1)
     h = r.histories
     k = header.index("abutment-west_floor1_force_N")
-    assert np.array_equal(h.wall_force["abutment-west"][:, 0], resp[:, k])
+    assert np.array_equal(h.site_force["abutment-west"][:, 0], resp[:, k])
+    assert h.wall_force["abutment-west"] is h.site_force["abutment-west"]
+    k = header.index("span2|span3_floors1-1_force_N")
+    assert np.array_equal(h.site_force["span2|span3"][:, 0], resp[:, k])
     k = header.index("restrainer-2_floors1-1_force_N")
     assert np.array_equal(h.device_force["restrainer-2"][:, 0], resp[:, k])
     # A restrainer only pulls (negative: it resists the opening).
     assert h.device_force["restrainer-2"].max() <= 0.0 < -h.device_force["restrainer-2"].min()
     assert h.wall_floors == {"abutment-west": [1], "abutment-east": [1]}
+    assert h.site_levels["abutment-west"] == [(None, 1)] and h.site_levels["abutment-east"] == [(1, None)]
+    assert set(h.contact_force) == {"span1|span2", "span2|span3"}
     # Impacts on a wall: its name, 0 for the wall's side (blank in impacts.csv), and the layer.
     walls = r.impacts["contact"] == "abutment-west"
-    assert walls.sum() == r.summary["walls"][0]["impacts"] > 0
+    assert walls.sum() == west["impacts"] > 0
     assert (r.impacts["floor_left"][walls] == 0).all() and (r.impacts["floor_right"][walls] == 1).all()
     assert set(r.impacts["layer"]) == {"direct"}
+    # The headline lists the walls as it lists the contacts, from the summary's sites.
+    (row,) = headline_rows([r.summary])
+    for x in r.summary["sites"]:
+        assert row[f"{x['name']}_impacts"] == x["impacts"]
+        assert row[f"{x['name']}_peak_force_N"] == x["peak_force"]
+    assert row["abutment-west_impacts"] == walls.sum()
+
+
+# Walls and devices may have any name: commas, quotes, | and letters beyond ASCII (building names are
+# plainer: no commas, quotes or |).
+WEST = 'mur "ouest", côté | nord'
+EAST = "östliche Wand, „alt“ | ü"
+DAMPER = 'amortisseur, "visqueux" | é'
+TIE = "tirant | Zugglied, ß"
+LEFT, RIGHT = "Bâtiment-A", "Gebäude-B"
+
+
+def odd_names(gap=0.02):
+    """Two buildings between two walls, a contact between them, a dashpot to the east wall and a
+    restrainer across the joint; the walls and devices named with commas, quotes, | and non-ASCII letters."""
+    law = {"model": "papi", "e": 0.65, "stiffness": 2.0e9, "stiffness_unit": "N/m"}
+    return {
+        "ground_motion": {"record": "el-centro-1940"},
+        "analysis": {"duration": 10.0},
+        "building": [
+            {"name": LEFT, "masses": [5.0e5], "stiffnesses": [7.9e7], "heights": [3.0]},
+            {"name": RIGHT, "masses": [5.0e5], "stiffnesses": [2.0e7], "heights": [3.0]},
+        ],
+        "contact": [{"between": [LEFT, RIGHT], "gap": gap, **law}],
+        "wall": [
+            {"name": WEST, "facing": LEFT, "side": "left", "gap": 0.01, **law},
+            {"name": EAST, "facing": RIGHT, "side": "right", "gap": 0.02, **law},
+        ],
+        "device": [
+            {"name": DAMPER, "between": [RIGHT, EAST], "model": "dashpot", "damping_coefficient": 1.0e5},
+            {"name": TIE, "between": [LEFT, RIGHT], "model": "restrainer", "stiffness": 1.0e7, "slack": 0.01},
+        ],
+    }
+
+
+def toml_text(scenario):
+    """A scenario dict as a TOML file (tables of plain values; strings as JSON writes them, which TOML reads)."""
+
+    def value(v):
+        if isinstance(v, str):
+            return json.dumps(v, ensure_ascii=False)
+        if isinstance(v, list):
+            return "[" + ", ".join(value(x) for x in v) + "]"
+        return repr(v)
+
+    lines = []
+    for key, v in scenario.items():
+        for table in v if isinstance(v, list) else [v]:
+            lines.append(f"[[{key}]]" if isinstance(v, list) else f"[{key}]")
+            lines += [f"{k} = {value(x)}" for k, x in table.items()]
+    return "\n".join(lines) + "\n"
+
+
+def test_walls_and_devices_with_any_name_run_and_read_back(tmp_path):
+    r = pounding.run(odd_names())
+    sites = r.summary["sites"]
+    assert [(x["kind"], x["name"]) for x in sites] == [("contact", f"{LEFT}|{RIGHT}"), ("wall", WEST), ("wall", EAST)]
+    assert (sites[1]["facing"], sites[1]["side"], sites[1]["levels"]) == (LEFT, "left", [{"right": 1}])
+    assert (sites[2]["facing"], sites[2]["side"], sites[2]["levels"]) == (RIGHT, "right", [{"left": 1}])
+    assert [(d["name"], d["between"]) for d in r.summary["devices"]] == [(DAMPER, [RIGHT, EAST]), (TIE, [LEFT, RIGHT])]
+    assert r.summary["devices"][0]["law"] == {"model": "dashpot", "damping_coefficient": 1.0e5}
+    # Each wall's impacts: in the impacts by its name, in its site's totals and in the headline.
+    (row,) = headline_rows([r.summary])
+    for x in sites:
+        mine = r.impacts["contact"] == x["name"]
+        assert mine.sum() == x["impacts"] == row[f"{x['name']}_impacts"] > 0
+        assert r.impacts["peak_force_N"][mine].max() == x["peak_force"] == row[f"{x['name']}_peak_force_N"]
+    west = r.impacts["contact"] == WEST
+    assert (r.impacts["floor_left"][west] == 0).all() and (r.impacts["floor_right"][west] == 1).all()
+    # Their histories, by the same names.
+    h = r.histories
+    assert set(h.site_force) == {x["name"] for x in sites}
+    assert h.site_levels == {f"{LEFT}|{RIGHT}": [(1, 1)], WEST: [(None, 1)], EAST: [(1, None)]}
+    assert h.wall_floors == {WEST: [1], EAST: [1]}
+    assert h.site_force[WEST].shape == (len(h.time), 1) and h.site_force[WEST].max() > 0
+    assert set(h.device_force) == {DAMPER, TIE}
+    # The same scenario from a TOML file: the same summary, but for its label.
+    path = tmp_path / "odd names.toml"
+    path.write_text(toml_text(odd_names()), encoding="utf-8")
+    from_file = pounding.run(path, histories=False)
+    assert from_file.summary["scenario"] == str(path)
+    assert without_label(from_file.summary) == without_label(r.summary)
+    # Through a sweep into a store and back: every name intact, the summaries equal single runs.
+    store = tmp_path / "study.sqlite"
+    scenarios = [odd_names(), odd_names(gap=0.03)]
+    first = pounding.sweep(scenarios, store=store, progress=False)
+    assert first[0] == pounding.run(scenarios[0], histories=False).summary
+    assert first[1] == pounding.run(scenarios[1], histories=False).summary
+    with sqlite3.connect(store) as db:
+        stored = [json.loads(t) for (t,) in db.execute("SELECT summary FROM runs ORDER BY idx")]
+    assert stored == first
+    assert [x["name"] for x in stored[1]["sites"]] == [f"{LEFT}|{RIGHT}", WEST, EAST]
+    assert pounding.sweep(scenarios, store=store, progress=False) == first
+    table = headline_rows(first)
+    assert [t[f"{WEST}_impacts"] for t in table] == [s["sites"][1]["impacts"] for s in first]
 
 
 def test_histories_close_the_energy_balance(base):
@@ -163,7 +327,25 @@ def test_a_sweep_equals_single_runs_in_input_order(base):
         "error": 'ground_motion.record: record = "kobe" is not a built-in record: el-centro-1940, synthetic-SEED (SEED 0, 1, 2, ...) (for a file, use file = "path")'
     }
     table = pounding.headline(out)
-    assert list(table["left|right_peak_force_N"][:4]) == [o["contacts"][0]["peak_force"] for o in out[:4]]
+    assert list(table["left|right_peak_force_N"][:4]) == [o["sites"][0]["peak_force"] for o in out[:4]]
+    assert list(table["left|right_impacts"][:4]) == [o["sites"][0]["impacts"] for o in out[:4]]
+    assert table["error"][4] == out[4]["error"] and table["error"][:4].isna().all()
+
+
+def test_headline_reads_summaries_as_the_library_does(base):
+    summary = pounding.run(base, histories=False).summary
+    (row,) = headline_rows([summary])
+    assert isinstance(row["left|right_impacts"], int) and isinstance(row["steps"], int)
+    assert row["left|right_impacts"] == summary["sites"][0]["impacts"]
+    assert row["left_peak_drift_ratio"] == summary["buildings"][0]["peak_drift_ratio"][0]
+    # A summary of the old shape (contacts and walls apart, buildings without heights) is not one.
+    old = in_cli_shape(summary, {"units": summary["units"]})
+    with pytest.raises(pounding.InputError, match=r"^summary\.buildings\.0: missing field `heights`$"):
+        pounding.headline([old])
+    wrong = copy.deepcopy(summary)
+    wrong["sites"][0]["kind"] = "bridge"
+    with pytest.raises(pounding.InputError, match=r"^summary\.sites\.0: unknown variant `bridge`, expected `contact` or `wall`$"):
+        pounding.headline([wrong])
 
 
 def test_the_store_resumes_and_refuses_another_study(tmp_path, base):
@@ -251,6 +433,14 @@ def test_dask_sweep_on_a_local_cluster_equals_the_local_sweep(tmp_path, base):
             assert remote == local
             # Resumed from its store: nothing to run, the same results.
             assert pounding.dask.sweep(scenarios, client, store=store) == local
+            # A stored summary that does not read as one (here, the old shape) is run again and replaced,
+            # as the local sweep does.
+            with sqlite3.connect(store) as db:
+                db.execute("UPDATE runs SET summary = ? WHERE idx = 1", (json.dumps({"contacts": []}),))
+            assert pounding.dask.sweep(scenarios, client, store=store) == local
+            with sqlite3.connect(store) as db:
+                (text,) = db.execute("SELECT summary FROM runs WHERE idx = 1").fetchone()
+            assert json.loads(text) == local[1]
     with sqlite3.connect(store) as db:
         assert db.execute("SELECT count(*) FROM runs").fetchone()[0] == len(scenarios)
     # The local sweep reads the store the cluster wrote.
@@ -283,6 +473,35 @@ def test_spectrum_gives_the_numbers_of_the_command_line():
         assert s[k].tolist() == expected[k]
     with pytest.raises(pounding.InputError, match="damping = 1 is not allowed"):
         pounding.spectrum(damping=1.0, periods=[1.0])
+
+
+def test_spectrum_knows_every_built_in_record_from_the_library(tmp_path, monkeypatch):
+    periods = [0.2, 0.5, 1.0, 2.0]
+    o = cli("record", "spectrum", "synthetic-3", "--periods", "0.2,0.5,1,2", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = json.loads(o.stdout)
+    # A file of that name in the working folder changes nothing: a built-in name is a built-in record, as
+    # for the command line.
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "synthetic-3").write_text("not a record\n")
+    s = pounding.spectrum("synthetic-3", periods=periods)
+    for k in ("sd", "psv", "psa"):
+        assert s[k].tolist() == expected[k]
+    # It is synthetic(3) with its defaults: the same spectrum from that record written to a file.
+    rec = pounding.synthetic(3)
+    f = tmp_path / "s3.txt"
+    np.savetxt(f, rec["acceleration"], fmt="%.17e")
+    from_file = pounding.spectrum(f, periods=periods, format="values", dt=rec["dt"], units="m/s2")
+    assert np.allclose(from_file["sd"], s["sd"], rtol=1e-12, atol=0)
+    # Another seed is another record.
+    assert not np.allclose(pounding.spectrum("synthetic-4", periods=periods)["sd"], s["sd"], rtol=1e-3)
+    # Not a built-in name (a leading zero): a file, which is missing; the message lists the built-ins.
+    with pytest.raises(pounding.InputError, match=r"synthetic-03.*built-in records: el-centro-1940, synthetic-SEED"):
+        pounding.spectrum("synthetic-03", periods=periods)
+    with pytest.raises(pounding.InputError, match=r"^format and dt apply to a record file"):
+        pounding.spectrum("synthetic-3", periods=periods, format="values", dt=0.01)
+    with pytest.raises(pounding.InputError, match=r'^units = "gg" is not allowed: one of g, m/s2'):
+        pounding.spectrum("el-centro-1940", periods=periods, units="gg")
 
 
 def test_separation_gives_the_numbers_of_the_command_line(base):
@@ -318,6 +537,35 @@ def test_synthetic_records_are_those_of_the_command_line(tmp_path):
     assert pounding.run(d, histories=False).summary["record"]["pga"] == pytest.approx(2.5, rel=1e-15)
     with pytest.raises(pounding.InputError, match="zg = 1.5 is not allowed"):
         pounding.synthetic(1, zg=1.5)
+
+
+def test_synthetic_reads_its_parameters_as_the_library_does(tmp_path):
+    # The defaults are the library's (SyntheticParams), which the command line's record synth also uses.
+    out = tmp_path / "s.csv"
+    o = cli("record", "synth", "--seed", "9", "--out", str(out))
+    assert o.returncode == 0, o.stderr
+    data = np.loadtxt(out, delimiter=",", comments="#", skiprows=3)
+    s = pounding.synthetic(9)
+    assert np.array_equal(s["acceleration"], data[:, 1])
+    assert (s["dt"], len(s["acceleration"])) == (0.01, 2000)
+    assert np.max(np.abs(s["acceleration"])) == pytest.approx(3.0, rel=1e-15)
+    # A parameter given as None keeps its default; one given changes the record.
+    assert np.array_equal(pounding.synthetic(9, pga=None, filter=None)["acceleration"], s["acceleration"])
+    assert not np.array_equal(pounding.synthetic(9, wg=10.0)["acceleration"], s["acceleration"])
+    # Each mistake names its key, the value where there is one, and what is allowed.
+    bad = [
+        (dict(foo=3), r"^foo: unknown field `foo`, expected one of `filter`, `wg`, `zg`, `wf`, `zf`, `duration`, `dt`, `t1`, `t2`, `decay`, `pga`$"),
+        (dict(pgaa=2.0), r"^pgaa: unknown field `pgaa` \(did you mean `pga`\?\), expected one of"),
+        (dict(filter="clough-penzein"), r'^filter = "clough-penzein" is not allowed: one of kanai-tajimi, clough-penzien \(did you mean "clough-penzien"\?\)$'),
+        (dict(wg="fast"), r'^wg: invalid type: string "fast", expected f64$'),
+        (dict(dt=float("nan")), r"^synthetic: Out of range float values"),
+    ]
+    for kw, message in bad:
+        with pytest.raises(pounding.InputError, match=message):
+            pounding.synthetic(1, **kw)
+    for seed in (-1, 2**64, 1.5, "7"):
+        with pytest.raises(pounding.InputError, match=r"^seed = .* is not allowed: a whole number from 0 to 2\^64 - 1$"):
+            pounding.synthetic(seed)
 
 
 def test_ida_fits_agree_with_scipy_on_the_same_data(tmp_path):

@@ -218,6 +218,14 @@ pub fn build(
 
 /// `value` as a [`ScenarioDoc`]; a shape error (an unknown key, a string for a number) names its path.
 pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)> {
+    parse_value(value)
+}
+
+/// `value` as a `T` (a scenario, or another set of named parameters such as Python's synthetic record's),
+/// with [`parse_doc`]'s messages: a shape error names its dotted path, an unknown key gets "did you mean".
+pub fn parse_value<T: serde::de::DeserializeOwned>(
+    value: &Value,
+) -> Result<T, (Option<String>, String)> {
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
         let inner = suggest_field(&e.into_inner().to_string());

@@ -19,7 +19,7 @@ import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Dict, Iterable, List, Optional, Union
+from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
 
 import numpy as np
 
@@ -41,14 +41,15 @@ def _plain(o: Any) -> Any:
     raise TypeError(f"{type(o).__name__} is not a number, string, list or dict")
 
 
-def _json(scenario: Dict[str, Any]) -> str:
-    """A scenario dict as JSON text; NaN and infinity are refused as the schema would refuse them."""
+def _json(scenario: Dict[str, Any], what: str = "scenario") -> str:
+    """A dict (a scenario, or the parameters of ``what``) as JSON text; NaN and infinity are refused as the
+    schema would refuse them."""
     if not isinstance(scenario, dict):
-        raise InputError(f"scenario: a dict or a path, not {type(scenario).__name__}")
+        raise InputError(f"{what}: a dict or a path, not {type(scenario).__name__}")
     try:
         return json.dumps(scenario, allow_nan=False, default=_plain)
     except (TypeError, ValueError) as e:
-        raise InputError(f"scenario: {e}") from None
+        raise InputError(f"{what}: {e}") from None
 
 
 def load_scenario(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
@@ -71,9 +72,12 @@ class Histories:
     - ``time`` (s) and ``ground_acceleration`` (m/s^2): arrays of the samples;
     - ``displacement`` (m, relative to the ground), ``absolute_acceleration`` (m/s^2) and ``storey_shear``
       (N): for each building by name, an array of samples x floors (floor or storey 1 first);
-    - ``contact_force`` (N): for each contact (``"left|right"``), an array of samples x floor pairs, in the
-      order of ``contact_floors`` (with a bumper, the layer's and the hard law's force together);
-    - ``wall_force`` (N): for each wall by name, samples x floors, in the order of ``wall_floors``;
+    - ``site_force`` (N): for each contact site by name (a contact ``"left|right"`` or a wall's name, as in
+      ``summary["sites"]``), an array of samples x levels, in the order of ``site_levels``: each level's
+      ``(left, right)`` floors, from 1, ``None`` on a wall's side (with a bumper, the layer's and the hard
+      law's force together);
+    - ``contact_force`` and ``contact_floors``, ``wall_force`` and ``wall_floors``: the same arrays for the
+      contacts between neighbours (floor pairs) and for the walls (the floor facing the wall) alone;
     - ``device_force`` (N, positive pushing apart): for each device by name, samples x floor pairs, in the
       order of ``device_floors``;
     - ``energy`` (J): ``input``, ``kinetic``, ``strain``, ``structural_damping``, ``hysteretic``, ``contact``.
@@ -84,8 +88,10 @@ class Histories:
     displacement: Dict[str, np.ndarray]
     absolute_acceleration: Dict[str, np.ndarray]
     storey_shear: Dict[str, np.ndarray]
+    site_force: Dict[str, np.ndarray]
+    site_levels: Dict[str, List[Tuple[Optional[int], Optional[int]]]]
     contact_force: Dict[str, np.ndarray]
-    contact_floors: Dict[str, List[tuple]]
+    contact_floors: Dict[str, List[Tuple[int, int]]]
     wall_force: Dict[str, np.ndarray]
     wall_floors: Dict[str, List[int]]
     device_force: Dict[str, np.ndarray]
@@ -93,45 +99,54 @@ class Histories:
     energy: Dict[str, np.ndarray]
 
 
+def _histories(h: Dict[str, Any], sites: List[Dict[str, Any]]) -> Histories:
+    """The histories the extension gives, with the contacts' and the walls' views of the sites' forces (the
+    same arrays, by each site's ``kind`` in the summary)."""
+    force = {k: _array(v) for k, v in h["site_force"].items()}
+    levels = {k: [tuple(l) for l in v] for k, v in h["site_levels"].items()}
+    walls = {s["name"] for s in sites if s["kind"] == "wall"}
+    return Histories(
+        time=np.frombuffer(h["time"], dtype="<f8"),
+        ground_acceleration=np.frombuffer(h["ground_acceleration"], dtype="<f8"),
+        displacement={k: _array(v) for k, v in h["displacement"].items()},
+        absolute_acceleration={k: _array(v) for k, v in h["absolute_acceleration"].items()},
+        storey_shear={k: _array(v) for k, v in h["storey_shear"].items()},
+        site_force=force,
+        site_levels=levels,
+        contact_force={k: v for k, v in force.items() if k not in walls},
+        contact_floors={k: v for k, v in levels.items() if k not in walls},
+        wall_force={k: v for k, v in force.items() if k in walls},
+        wall_floors={k: [l if l is not None else r for l, r in v] for k, v in levels.items() if k in walls},
+        device_force={k: _array(v) for k, v in h["device_force"].items()},
+        device_floors={k: [tuple(p) for p in v] for k, v in h["device_floors"].items()},
+        energy={k: np.frombuffer(v, dtype="<f8") for k, v in h["energy"].items()},
+    )
+
+
 class Result:
-    """One run: ``summary`` (a dict, the content of ``summary.json``), ``impacts`` (columns as numpy arrays:
-    ``time_s``, ``contact`` (a link ``"left|right"`` or a wall's name), ``floor_left``, ``floor_right`` (0 on a
+    """One run: ``summary`` (a dict, the content of ``summary.json``: its ``sites`` list the contacts and the
+    walls alike, each with its ``kind``), ``impacts`` (columns as numpy arrays: ``time_s``, ``contact`` (the
+    site's name: a contact ``"left|right"`` or a wall's name), ``floor_left``, ``floor_right`` (0 on a
     wall's side), ``layer`` (``direct``, ``bumper``, or ``consumed``: the hard law behind a consumed bumper),
-    ``v_i_m_per_s``, ``e_post`` (NaN where an impact
-    gave none), ``peak_force_N``, ``time_of_peak_force_s``, ``duration_s``, ``dissipated_energy_J``,
-    ``max_penetration_m``, ``ended``, ``resting``) and ``histories`` (a :class:`Histories`, or None for a run
-    without them)."""
+    ``v_i_m_per_s``, ``e_post`` (NaN where an impact gave none), ``peak_force_N``, ``time_of_peak_force_s``,
+    ``duration_s``, ``dissipated_energy_J``, ``max_penetration_m``, ``ended``, ``resting``) and
+    ``histories`` (a :class:`Histories`, or None for a run without them)."""
 
     def __init__(self, raw: Dict[str, Any]):
         self.summary: Dict[str, Any] = json.loads(raw["summary"])
         imp = raw["impacts"]
-        self.impacts: Dict[str, np.ndarray] = {
-            k: np.asarray(v, dtype=object if k in ("contact", "layer") else None) for k, v in imp.items()
-        }
-        for k in ("floor_left", "floor_right"):
-            self.impacts[k] = np.asarray(imp[k], dtype=np.int64)
-        for k in ("ended", "resting"):
-            self.impacts[k] = np.asarray(imp[k], dtype=bool)
+        self.impacts: Dict[str, np.ndarray] = {}
         for k, v in imp.items():
-            if k not in ("contact", "layer", "floor_left", "floor_right", "ended", "resting"):
+            if k in ("contact", "layer"):
+                self.impacts[k] = np.asarray(v, dtype=object)
+            elif k in ("floor_left", "floor_right"):
+                self.impacts[k] = np.asarray(v, dtype=np.int64)
+            elif k in ("ended", "resting"):
+                self.impacts[k] = np.asarray(v, dtype=bool)
+            else:
                 self.impacts[k] = np.asarray(v, dtype=np.float64)
         h = raw["histories"]
-        self.histories: Optional[Histories] = None
-        if h is not None:
-            self.histories = Histories(
-                time=np.frombuffer(h["time"], dtype="<f8"),
-                ground_acceleration=np.frombuffer(h["ground_acceleration"], dtype="<f8"),
-                displacement={k: _array(v) for k, v in h["displacement"].items()},
-                absolute_acceleration={k: _array(v) for k, v in h["absolute_acceleration"].items()},
-                storey_shear={k: _array(v) for k, v in h["storey_shear"].items()},
-                contact_force={k: _array(v) for k, v in h["contact_force"].items()},
-                contact_floors={k: [tuple(p) for p in v] for k, v in h["contact_floors"].items()},
-                wall_force={k: _array(v) for k, v in h["wall_force"].items()},
-                wall_floors={k: list(v) for k, v in h["wall_floors"].items()},
-                device_force={k: _array(v) for k, v in h["device_force"].items()},
-                device_floors={k: [tuple(p) for p in v] for k, v in h["device_floors"].items()},
-                energy={k: np.frombuffer(v, dtype="<f8") for k, v in h["energy"].items()},
-            )
+        self.histories: Optional[Histories] = None if h is None else _histories(h, self.summary["sites"])
 
     def impacts_frame(self):
         """The impacts as a pandas DataFrame (needs pandas)."""
@@ -203,8 +218,10 @@ def _texts(scenarios: Iterable[Scenario]):
 
 def headline(summaries: Iterable[Dict[str, Any]]):
     """One row per summary of headline results (the record's PGA, each building's peak displacement and drift
-    ratio, each contact's impacts, peak force and penetration, the balance error, the steps; units in the
-    column names) and an ``error`` column: a pandas DataFrame if pandas is installed, else a list of dicts."""
+    ratio, each site's impacts, peak force and penetration (contacts and walls alike, by the site's name),
+    the balance error, the steps; units in the column names) and an ``error`` column: a pandas DataFrame if
+    pandas is installed, else a list of dicts. A summary that is not one (of another version, say) raises
+    InputError naming the key that does not fit."""
     rows = []
     for s in summaries:
         if "error" in s and "buildings" not in s:
@@ -229,21 +246,23 @@ def spectrum(
     units: Optional[str] = None,
     scale: float = 1.0,
 ) -> Dict[str, Any]:
-    """The elastic response spectrum of a record (a built-in name or a file; ``format``, ``dt``, ``units`` and
+    """The elastic response spectrum of a record (a built-in record's name, such as ``"el-centro-1940"`` or
+    ``"synthetic-3"``, else a file; ``format``, ``dt``, ``units`` and
     ``scale`` as in a scenario's ``[ground_motion]``; ``units`` unset: an AT2 header's, else g) for oscillators of damping ratio ``damping`` at
     ``periods`` (s; default 100 from 0.02 to 10 s, evenly spaced in log), by the exact piecewise-linear
     solution with peaks located between samples: a dict of ``damping``, ``periods`` (s), ``sd`` (m), ``psv``
     (m/s) and ``psa`` (m/s^2), numpy arrays; the numbers of ``pounding record spectrum --json``."""
     p = np.geomspace(0.02, 10.0, 100) if periods is None else np.asarray(list(periods), dtype=np.float64)
-    source = os.fspath(record)
-    gm = {"record" if source == "el-centro-1940" else "file": source, "scale": float(scale)}
-    if units is not None:
-        gm["units"] = units
-    if format is not None:
-        gm["format"] = format
-    if dt is not None:
-        gm["dt"] = float(dt)
-    sd, psv, psa = _pounding.spectrum(_json(gm), float(damping), p.tolist())
+    # Whether the source is a built-in record or a file is the library's to say (as for the command line).
+    sd, psv, psa = _pounding.spectrum(
+        os.fspath(record),
+        float(damping),
+        p.tolist(),
+        format=format,
+        dt=None if dt is None else float(dt),
+        units=units,
+        scale=float(scale),
+    )
     return {"damping": float(damping), "periods": p, "sd": np.asarray(sd), "psv": np.asarray(psv), "psa": np.asarray(psa)}
 
 
@@ -266,12 +285,15 @@ def separation(
 
 
 def synthetic(seed: int, **params: Any) -> Dict[str, Any]:
-    """A synthetic ground motion from ``seed``: filtered white noise under a time envelope, scaled to a PGA,
-    exactly ``pounding record synth`` (docs/separation.md). Parameters (SI units): ``filter``
-    (``"clough-penzien"`` or ``"kanai-tajimi"``), ``wg``, ``zg``, ``wf``, ``zf`` (rad/s and ratios),
-    ``duration``, ``dt``, ``t1``, ``t2`` (s), ``decay`` (1/s), ``pga`` (m/s^2). Returns ``dt`` (s), ``t0`` (s),
-    ``time`` (s) and ``acceleration`` (m/s^2, numpy)."""
-    dt, t0, acc = _pounding.synthetic(int(seed), _json(dict(params)))
+    """A synthetic ground motion from ``seed`` (a whole number from 0 to 2^64 - 1): filtered white noise
+    under a time envelope, scaled to a PGA, exactly ``pounding record synth`` and the built-in record
+    ``"synthetic-SEED"`` with the defaults (docs/separation.md). Parameters (SI units), each read by the
+    library with its default (a parameter given as None keeps its default): ``filter`` (``"clough-penzien"``
+    or ``"kanai-tajimi"``), ``wg``, ``zg``, ``wf``, ``zf`` (rad/s and ratios), ``duration``, ``dt``, ``t1``,
+    ``t2`` (s), ``decay`` (1/s), ``pga`` (m/s^2); an unknown one raises InputError. Returns ``dt`` (s),
+    ``t0`` (s), ``time`` (s) and ``acceleration`` (m/s^2, numpy)."""
+    given = {k: v for k, v in params.items() if v is not None}
+    dt, t0, acc = _pounding.synthetic(seed, _json(given, "synthetic"))
     a = np.asarray(acc)
     return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(a)), "acceleration": a}
 
