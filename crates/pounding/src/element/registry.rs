@@ -157,6 +157,8 @@ registry! {
         Maxwell(device::Maxwell) = "maxwell",
         /// A tension-only restrainer with slack.
         Restrainer(device::Restrainer) = "restrainer",
+        /// A fluid viscous damper, `F = c |v|^alpha sgn(v)`, alone or in series with a spring.
+        FluidViscous(device::FluidViscous) = "fluid-viscous",
     }
 }
 

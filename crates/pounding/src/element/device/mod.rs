@@ -1,18 +1,20 @@
 //! Devices: permanent connections between two ends (floors of neighbouring structures, or a floor and the
 //! ground beside it), each model a law of its own file: [`Spring`], [`Dashpot`], [`Kelvin`] and
-//! [`Maxwell`] units and [`Restrainer`]s.
+//! [`Maxwell`] units, [`Restrainer`]s and [`FluidViscous`] dampers.
 //!
 //! The deformation is `x = u_a - u_b` (m, closing positive, as for contacts) and the device's force `f` (N)
 //! resists a growing `x`. A device model is its law plus its parameters as a scenario gives them
 //! ([`Device::Params`]); the list of models is `element/registry.rs` ([`crate::element::DeviceLaw`]).
 
 mod dashpot;
+mod fluid_viscous;
 mod kelvin;
 mod maxwell;
 mod restrainer;
 mod spring;
 
 pub use dashpot::{Dashpot, DashpotParams};
+pub use fluid_viscous::{FluidViscous, FluidViscousParams};
 pub use kelvin::{Kelvin, KelvinParams};
 pub use maxwell::{Maxwell, MaxwellParams};
 pub use restrainer::{Restrainer, RestrainerParams};
