@@ -9,6 +9,7 @@ pub mod headline;
 pub mod ida;
 pub mod input;
 pub mod key;
+pub mod schema;
 pub mod separation;
 pub mod store;
 pub mod study;

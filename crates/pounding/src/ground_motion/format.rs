@@ -122,3 +122,17 @@ impl<'de> serde::Deserialize<'de> for Units {
         Units::parse(&s).map_err(serde::de::Error::custom)
     }
 }
+
+/// Units are written as a name [`Units::parse`] reads.
+#[cfg(feature = "schema")]
+impl schemars::JsonSchema for Units {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Units".into()
+    }
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        schemars::json_schema!({
+            "type": "string",
+            "description": "Units of the accelerations: g, m/s2 (or m/s^2), cm/s2 (or cm/s^2, gal), mm/s2 (or mm/s^2), any case"
+        })
+    }
+}

@@ -34,6 +34,7 @@ use serde::{Deserialize, Serialize};
 /// A scenario: the ground motion, the analysis settings, the buildings left to right and the contacts
 /// between neighbours (keys as in `docs/scenarios.md`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct ScenarioDoc {
     /// The ground motion.
@@ -57,6 +58,7 @@ pub struct ScenarioDoc {
 
 /// `[ground_motion]`: a built-in record or a record file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct GroundMotionDoc {
     /// A built-in record: `el-centro-1940` or `synthetic-SEED`.
@@ -86,6 +88,7 @@ pub struct GroundMotionDoc {
 
 /// `[analysis]`: settings; each absent one keeps the library's default.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct AnalysisDoc {
     /// Analysed duration, s (default: the record's).
@@ -105,6 +108,7 @@ pub struct AnalysisDoc {
 /// `[[building]]`: a shear building, floor 1 (the lowest) first. With an `isolator`, floor 1 is the base
 /// slab on it, and `stiffnesses`, `heights` and the storey keys list the storeys above the slab.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct BuildingDoc {
     /// Name, unique in the scenario: 1 to 64 bytes without commas, quotes, `|` or control characters.
@@ -137,6 +141,7 @@ pub struct BuildingDoc {
 
 /// One value for every storey, or a list with one per storey.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(
     untagged,
     expecting = "expected one value for every storey, or a list with one per storey"
@@ -161,6 +166,7 @@ impl<T: Clone> OneOrMany<T> {
 
 /// `alpha` of `papi`: a number, or `eq8` / `calibrate`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(
     untagged,
     expecting = "expected a number >= 0, \"eq8\" or \"calibrate\""
@@ -178,6 +184,7 @@ macro_rules! with_contact_law {
     ($(#[$meta:meta])* pub struct $name:ident { $($(#[$fm:meta])* pub $field:ident : $ty:ty,)* }) => {
         $(#[$meta])*
         #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+        #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
         #[serde(deny_unknown_fields)]
         pub struct $name {
             $($(#[$fm])* pub $field: $ty,)*
@@ -323,6 +330,7 @@ with_contact_law! {
 /// `[building.isolator]`: the isolator under the base slab (floor 1); the building's `stiffnesses`,
 /// `heights` and storey keys then describe the storeys above it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct IsolatorDoc {
     /// `linear`, `bilinear`, `bouc-wen` or `friction-pendulum`.
@@ -363,6 +371,7 @@ pub struct IsolatorDoc {
 /// ends and floors, and its `model` with that model's keys ([`DeviceLaw`], one per model of
 /// `element/registry.rs`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct DeviceDoc {
     /// Name, unique among devices (default: the model and its number, `restrainer1`).
     #[serde(default, skip_serializing_if = "Option::is_none")]

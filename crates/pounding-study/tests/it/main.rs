@@ -1,0 +1,3 @@
+//! Integration tests of `pounding-study`: one test binary, one module per subject.
+
+mod schemas;
