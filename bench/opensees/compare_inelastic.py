@@ -89,7 +89,7 @@ def main() -> None:
                 os_ref = opensees_reference(sc[key], window, bouc_wen)
                 for tol in [None, 1e-10]:
                     s = ours(a.bin, scenario, contact, duration, tol)
-                    impacts = [c["impacts"] for c in s["contacts"]]
+                    impacts = [c["impacts"] for c in s["sites"] if c["kind"] == "contact"]
                     for b, (rb, sb) in enumerate(zip(os_ref["buildings"], s["buildings"])):
                         for f, rf in enumerate(rb["floors"]):
                             peak = sb["peak_displacement"][f]

@@ -37,12 +37,7 @@ def ours(binary: str, scenario: Path, tol: float | None) -> dict:
 
 def sites(summary: dict) -> dict:
     """Walls and joints of a summary by the peer's names (`left|right` for a joint)."""
-    out = {}
-    for c in summary["contacts"]:
-        out["|".join(c["between"])] = c
-    for w in summary["walls"]:
-        out[w["name"]] = w
-    return out
+    return {s["name"]: s for s in summary["sites"]}
 
 
 def main() -> None:

@@ -1709,6 +1709,15 @@ fn bad_walls_isolators_and_devices_get_one_line_exit_2_and_no_output() {
             bridge.replacen("seat = 0.30", "seat = 0.0", 1),
             "seat = 0 is not allowed: seat > 0 (m)",
         ),
+        // Names may hold commas, quotes and | (the tables quote them), not a line break or nothing.
+        (
+            bridge.replacen("\"abutment-west\"", "\"abutment\\nwest\"", 1),
+            "name = \"abutment\\nwest\" is not allowed: 1 to 64 bytes, without control characters",
+        ),
+        (
+            bridge.replacen("\"restrainer-2\"", "\"\"", 1),
+            "name = \"\" is not allowed: 1 to 64 bytes",
+        ),
     ];
     for (i, (text, says)) in cases.iter().enumerate() {
         assert_ne!(text, &moat);
@@ -1913,5 +1922,214 @@ fn each_contact_reports_the_range_of_e_its_impacts_delivered() {
     assert!(
         text.contains("can even part the floors faster than they met"),
         "{text}"
+    );
+}
+
+/// The cells of a CSV file, read by a CSV reader (quotes honoured): header, then rows.
+fn csv_cells(path: &std::path::Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut r = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let header = r.headers().unwrap().iter().map(String::from).collect();
+    let rows = r
+        .records()
+        .map(|x| x.unwrap().iter().map(String::from).collect())
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn walls_and_devices_named_with_commas_quotes_bars_and_any_letter_run_and_read_back() {
+    let dir = tmp("hostile-names");
+    let west = r#"abutment, west "A" | Ωst"#;
+    let link = r#"restrainer, "1" | ñandú"#;
+    let base = std::fs::read_to_string(example("bridge-three-span.toml")).unwrap();
+    let text = base
+        .replace("\"abutment-west\"", &toml_string(west))
+        .replace("\"restrainer-1\"", &toml_string(link));
+    assert_ne!(text, base);
+    let file = dir.join("bridge.toml");
+    std::fs::write(&file, &text).unwrap();
+    let out = dir.join("run");
+    let summary = json(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--plots",
+        "--report",
+        "-q",
+    ]);
+    let walls = sites(&summary, "wall");
+    assert_eq!(walls[0]["name"], west);
+    assert!(walls[0]["impacts"].as_u64().unwrap() > 0);
+    assert_eq!(summary["devices"][0]["name"], link);
+    // Every row of every table has as many cells as its header, and the names come back whole.
+    for table in [
+        "response.csv",
+        "impacts.csv",
+        "impact-loops.csv",
+        "energy.csv",
+    ] {
+        let (header, rows) = csv_cells(&out.join(table));
+        assert!(!rows.is_empty(), "{table}");
+        assert!(rows.iter().all(|r| r.len() == header.len()), "{table}");
+    }
+    let (header, rows) = csv_cells(&out.join("response.csv"));
+    assert!(
+        header.contains(&format!("{west}_floor1_force_N")),
+        "{header:?}"
+    );
+    assert!(
+        header.contains(&format!("{link}_floors1-1_force_N")),
+        "{header:?}"
+    );
+    let wall = header.iter().position(|h| h.starts_with(west)).unwrap();
+    let peak = rows
+        .iter()
+        .map(|r| r[wall].parse::<f64>().unwrap())
+        .fold(0.0, f64::max);
+    // Samples every output_dt cannot exceed the located peak, and the largest of them is near it.
+    let located = f(walls[0], "peak_force");
+    assert!(
+        peak <= located * (1.0 + 1e-12) && peak > 0.5 * located,
+        "{peak} {located}"
+    );
+    let (header, rows) = csv_cells(&out.join("impacts.csv"));
+    let contact = header.iter().position(|h| h == "contact").unwrap();
+    let n = rows.iter().filter(|r| r[contact] == west).count();
+    assert_eq!(n as u64, walls[0]["impacts"].as_u64().unwrap());
+    // Figures are well-formed XML naming the wall; the report shows both names, escaped.
+    let mut named = 0;
+    for e in std::fs::read_dir(&out).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "svg") {
+            let svg = std::fs::read_to_string(&p).unwrap();
+            let doc =
+                roxmltree::Document::parse(&svg).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+            named += usize::from(
+                doc.descendants()
+                    .any(|n| n.text().is_some_and(|t| t.contains(west))),
+            );
+        }
+    }
+    assert!(named > 0, "no figure names the wall");
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    for name in [west, link] {
+        let escaped = name.replace('&', "&amp;").replace('"', "&quot;");
+        assert!(html.contains(&escaped) || html.contains(name), "{name}");
+    }
+    // `pounding report` reads the folder back into the same report.
+    let again = dir.join("again.html");
+    let o = pounding(&[
+        "report",
+        out.to_str().unwrap(),
+        "--out",
+        again.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read_to_string(&again).unwrap(), html);
+    // A sweep and an IDA of it store and tabulate every run.
+    let sweep = dir.join("sweep.toml");
+    std::fs::write(
+        &sweep,
+        format!(
+            "scenario = {:?}\n\n[axes]\nscale = [0.5, 1.0]\n",
+            file.to_str().unwrap()
+        ),
+    )
+    .unwrap();
+    let o = pounding(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        dir.join("sweep").to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (header, rows) = csv_cells(&dir.join("sweep").join("runs.csv"));
+    assert!(
+        header.contains(&format!("{west}_peak_force_N")),
+        "{header:?}"
+    );
+    assert_eq!(rows.len(), 2);
+    assert!(rows.iter().all(|r| r.len() == header.len() && r[2] == "ok"));
+    let ida = dir.join("ida.toml");
+    std::fs::write(
+        &ida,
+        format!(
+            "scenario = {:?}\nrecords = [\"el-centro-1940\", \"synthetic-3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nmeasure = \"pga\"\nlevels = [2.0, 4.0]\n",
+            file.to_str().unwrap()
+        ),
+    )
+    .unwrap();
+    let o = pounding(&[
+        "ida",
+        ida.to_str().unwrap(),
+        "--out",
+        dir.join("ida").to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (header, rows) = csv_cells(&dir.join("ida").join("runs.csv"));
+    assert_eq!(rows.len(), 4);
+    let status = header.iter().position(|h| h == "status").unwrap();
+    assert!(rows
+        .iter()
+        .all(|r| r.len() == header.len() && r[status] == "ok"));
+}
+
+/// `s` as a TOML basic string.
+fn toml_string(s: &str) -> String {
+    format!("\"{}\"", s.replace('\\', "\\\\").replace('"', "\\\""))
+}
+
+#[test]
+fn an_ida_of_the_isolated_moat_counts_its_wall_impacts() {
+    let dir = tmp("ida-moat");
+    let run = json(&[
+        "run",
+        &example("isolated-moat.toml"),
+        "--out",
+        dir.join("run").to_str().unwrap(),
+        "-q",
+    ]);
+    let walls = sites(&run, "wall");
+    let impacts: u64 = walls.iter().map(|w| w["impacts"].as_u64().unwrap()).sum();
+    let force = walls.iter().map(|w| f(w, "peak_force")).fold(0.0, f64::max);
+    assert!(impacts > 0 && force > 1e6, "{impacts} {force}");
+    // The same run as one stripe of an IDA: the level is the example's scaled PGA.
+    let pga = f(&run["record"], "pga");
+    let study = dir.join("ida.toml");
+    std::fs::write(
+        &study,
+        format!(
+            "scenario = {:?}\nrecords = [\"el-centro-1940\"]\nlimit_states = [\"pounding\", \"peak_force > 1e6\"]\n[intensity]\nmeasure = \"pga\"\nlevels = [{pga:?}]\n",
+            example("isolated-moat.toml")
+        ),
+    )
+    .unwrap();
+    let out = dir.join("ida");
+    let o = pounding(&[
+        "ida",
+        study.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (header, rows) = csv_cells(&out.join("runs.csv"));
+    let cell = |name: &str| -> f64 {
+        let i = header
+            .iter()
+            .position(|h| h == name)
+            .unwrap_or_else(|| panic!("{name} in {header:?}"));
+        rows[0][i].parse().unwrap()
+    };
+    assert_eq!(cell("impacts"), impacts as f64);
+    assert_eq!(cell("pounding"), 1.0);
+    // The scale is the level over the record's PGA: equal to the example's within rounding.
+    assert!(
+        (cell("peak_force_N") - force).abs() <= 1e-6 * force,
+        "{} {force}",
+        cell("peak_force_N")
     );
 }

@@ -4,7 +4,8 @@
 //! ([`crate::calibration`]).
 
 use super::{
-    bilinear_law, damping, exact, hertz_max_penetration, papi_factors, ForceLaw, Reading, Tension,
+    bilinear_law, damping, exact, hertz_max_penetration, papi_factors, BilinearLoop, Reading,
+    Tension,
 };
 use crate::integrate::brent_root;
 use crate::Error;
@@ -127,9 +128,9 @@ pub fn papi_alpha(e: f64, reading: Reading) -> Result<f64, Error> {
 /// elastic Hertz penetration.
 pub fn exact_e_design(e: f64, n: f64, a: f64, ratio: f64) -> Result<f64, Error> {
     let d_m = ratio * hertz_max_penetration(1.0, n, 1.0, 1.0, 1.0);
-    let f = |e_d: f64| match bilinear_law(1.0, n, e_d, a, d_m) {
-        ForceLaw::Bilinear { k1, k2, d_y } => Ok(exact::bilinear_e_post(k1, k2, d_y, 0.5)),
-        _ => unreachable!("bilinear_law returns a bilinear law"),
+    let f = |e_d: f64| {
+        let BilinearLoop { k1, k2, d_y } = bilinear_law(1.0, n, e_d, a, d_m);
+        Ok(exact::bilinear_e_post(k1, k2, d_y, 0.5))
     };
     if e == 1.0 {
         return Ok(1.0);

@@ -142,7 +142,23 @@ impl ForceLaw {
                 Phase::Approach => d_y - d,
                 Phase::Restitution => (turn.force - k1 * (turn.d - d)) - k2 * d,
             }),
-            _ => None,
+            ForceLaw::Elastic { .. }
+            | ForceLaw::LinearViscous { .. }
+            | ForceLaw::HuntCrossley { .. }
+            | ForceLaw::Jankowski { .. } => None,
+        }
+    }
+
+    /// The penetration (m) up to which the law, approaching again during restitution, reloads along its
+    /// unloading line: the last turning point of a bilinear loop; `None` for laws whose force depends on
+    /// the current penetration and rate only.
+    pub fn reload_limit(&self, turn: &Turn) -> Option<f64> {
+        match *self {
+            ForceLaw::Bilinear { .. } => Some(turn.d),
+            ForceLaw::Elastic { .. }
+            | ForceLaw::LinearViscous { .. }
+            | ForceLaw::HuntCrossley { .. }
+            | ForceLaw::Jankowski { .. } => None,
         }
     }
 
@@ -150,7 +166,13 @@ impl ForceLaw {
     /// `d^((n-1)/2)`, so the solution behaves like `t^((n+1)/2)` near touch, where an integrator's error
     /// estimate underestimates its error by a constant factor.
     pub fn smooth_at_touch(&self) -> bool {
-        !matches!(*self, ForceLaw::Jankowski { n, .. } if n != 1.0)
+        match *self {
+            ForceLaw::Jankowski { n, .. } => n == 1.0,
+            ForceLaw::Elastic { .. }
+            | ForceLaw::LinearViscous { .. }
+            | ForceLaw::HuntCrossley { .. }
+            | ForceLaw::Bilinear { .. } => true,
+        }
     }
 
     /// Scale of penetration for this law, m: the penetration at which the elastic part of the force has

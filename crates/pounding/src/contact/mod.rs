@@ -321,11 +321,13 @@ impl ContactModel {
     }
 
     /// The force law of one impact with parameter `p`, effective mass `m` (kg) and impact velocity `v_i`
-    /// (m/s). Pure arithmetic.
+    /// (m/s). Pure arithmetic. The parameter names its law (each model's [`Formula`] gives one kind), so
+    /// every kind is handled here and no model can fall back to another law.
     fn law_with(&self, p: DampingParameter, m: f64, v_i: f64) -> ForceLaw {
         let (k, n) = (self.k, self.n);
-        match (self.model.info().family, p) {
-            (Family::LinearViscous, DampingParameter::Zeta(z)) => {
+        match p {
+            DampingParameter::None => ForceLaw::Elastic { k, n },
+            DampingParameter::Zeta(z) => {
                 let c = 2.0 * z * (k * m).sqrt();
                 let c_r = if self.model.info().restitution_damped {
                     c
@@ -334,35 +336,35 @@ impl ContactModel {
                 };
                 ForceLaw::LinearViscous { k, c, c_r }
             }
-            (Family::HuntCrossley, DampingParameter::Chi(chi)) => ForceLaw::HuntCrossley {
+            DampingParameter::Chi(chi) => ForceLaw::HuntCrossley {
                 k,
                 n,
                 chi,
                 chi_r: chi,
                 v_i,
             },
-            (Family::HuntCrossley, DampingParameter::Papi { chi, chi_r, .. }) => {
-                ForceLaw::HuntCrossley {
-                    k,
-                    n,
-                    chi,
-                    chi_r,
-                    v_i,
-                }
-            }
-            (Family::Jankowski, DampingParameter::Xi(xi)) => ForceLaw::Jankowski {
+            DampingParameter::Papi { chi, chi_r, .. } => ForceLaw::HuntCrossley {
+                k,
+                n,
+                chi,
+                chi_r,
+                v_i,
+            },
+            DampingParameter::Xi(xi) => ForceLaw::Jankowski {
                 k,
                 n,
                 c0: 2.0 * xi * (k * m).sqrt(),
             },
-            (Family::Bilinear, DampingParameter::EDesign(e_d)) => bilinear_law(
-                k,
-                n,
-                e_d,
-                self.yield_ratio,
-                self.max_penetration_for(m, v_i),
-            ),
-            _ => ForceLaw::Elastic { k, n },
+            DampingParameter::EDesign(e_d) => {
+                let BilinearLoop { k1, k2, d_y } = bilinear_law(
+                    k,
+                    n,
+                    e_d,
+                    self.yield_ratio,
+                    self.max_penetration_for(m, v_i),
+                );
+                ForceLaw::Bilinear { k1, k2, d_y }
+            }
         }
     }
 }
@@ -383,12 +385,23 @@ pub fn hertz_max_penetration(k_scale: f64, n: f64, m: f64, v_i: f64, k: f64) -> 
     (0.5 * (n + 1.0) * m * v_i * v_i / (k_scale * k)).powf(1.0 / (n + 1.0))
 }
 
+/// The constants of a Muthukumar & DesRoches bilinear loop ([`ForceLaw::Bilinear`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BilinearLoop {
+    /// Loading stiffness up to `d_y`, and unloading stiffness, N/m.
+    pub k1: f64,
+    /// Loading stiffness past `d_y`, N/m.
+    pub k2: f64,
+    /// Yield penetration, m.
+    pub d_y: f64,
+}
+
 /// The Muthukumar & DesRoches bilinear law from Hertz stiffness `k` (N/m^n), exponent `n`, design
 /// restitution `e_d`, yield ratio `a` and expected maximum penetration `d_m` (m).
-pub fn bilinear_law(k: f64, n: f64, e_d: f64, a: f64, d_m: f64) -> ForceLaw {
+pub fn bilinear_law(k: f64, n: f64, e_d: f64, a: f64, d_m: f64) -> BilinearLoop {
     let k_eff = k * d_m.powf(n - 1.0);
     let de = k * d_m.powf(n + 1.0) * (1.0 - e_d * e_d) / (n + 1.0);
-    ForceLaw::Bilinear {
+    BilinearLoop {
         k1: k_eff + de / (a * d_m * d_m),
         k2: k_eff - de / ((1.0 - a) * d_m * d_m),
         d_y: a * d_m,

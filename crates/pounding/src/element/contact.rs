@@ -346,9 +346,9 @@ impl ElementLaw for Contact {
             SEPARATION | REARM => d,
             // A bilinear law reloads along its unloading line up to the last turning point, where the ends
             // must still be approaching.
-            REAPPROACH => match law {
-                Some(ForceLaw::Bilinear { .. }) => (turn.d - d).max(self.gate.slack() - v),
-                _ => self.gate.slack() - v,
+            REAPPROACH => match law.and_then(|l| l.reload_limit(&turn)) {
+                Some(limit) => (limit - d).max(self.gate.slack() - v),
+                None => self.gate.slack() - v,
             },
             RESUME => self.gate.slack() - v,
             _ => 1.0,

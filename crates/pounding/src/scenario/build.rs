@@ -29,6 +29,26 @@ pub struct RecordSpec {
     pub scale: f64,
 }
 
+/// Checks the name of the entry at `at`: 1 to 64 bytes, no control characters (they would break a line
+/// of a message or of a table), and nothing `refused` finds (`rule` says what is allowed).
+fn check_name(
+    at: &str,
+    name: &str,
+    rule: &str,
+    refused: impl Fn(&str) -> bool,
+) -> Result<(), SchemaError> {
+    if name.is_empty() || name.len() > 64 || name.chars().any(char::is_control) || refused(name) {
+        return Err(SchemaError::new(
+            format!("{at}.name"),
+            format!("name = {name:?} is not allowed: 1 to 64 bytes, {rule}"),
+        ));
+    }
+    Ok(())
+}
+
+/// What a wall's or a device's name may hold: any letter, commas, quotes and `|` too (the tables quote them).
+const FREE_NAME: &str = "without control characters";
+
 /// A library error in a scenario's words, about the entry at `entry` (`what: ` before it if not empty).
 fn lib(entry: &str, what: &str, e: Error) -> SchemaError {
     let key = match &e {
@@ -121,19 +141,14 @@ impl ScenarioDoc {
         let mut buildings = Vec::new();
         for (i, b) in self.building.iter().enumerate() {
             let at = format!("building.{i}");
-            if b.name.is_empty()
-                || b.name.len() > 64
-                || b.name.contains([',', '"', '|'])
-                || b.name.chars().any(char::is_control)
-            {
-                return Err(SchemaError::new(
-                    format!("{at}.name"),
-                    format!(
-                        "name = {:?} is not allowed: 1 to 64 bytes, without commas, quotes, | or control characters",
-                        b.name
-                    ),
-                ));
-            }
+            // A building's name is also a word of limit states ("drift_ratio.NAME > 0.02") and half of
+            // a pair's ("left|right"), so it keeps to plain words.
+            check_name(
+                &at,
+                &b.name,
+                "without commas, quotes, | or control characters",
+                |n| n.contains([',', '"', '|']),
+            )?;
             let what = format!("building {:?}", b.name);
             let laws = storey_laws(&at, &what, b)?;
             let structure = match &b.isolator {
@@ -456,6 +471,7 @@ fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, Sch
 
 /// Adds the wall entry `w` (at `at`) to `scenario`.
 fn wall(scenario: Scenario, at: &str, w: &WallDoc) -> Result<Scenario, SchemaError> {
+    check_name(at, &w.name, FREE_NAME, |_| false)?;
     let what = format!("wall {:?}", w.name);
     let side = w.side;
     let spec = WallSpec {
@@ -478,6 +494,9 @@ fn device(scenario: Scenario, at: &str, d: &DeviceDoc) -> Result<Scenario, Schem
         &d.between,
         "two neighbouring buildings, or a building and a wall",
     )?;
+    if let Some(name) = &d.name {
+        check_name(at, name, FREE_NAME, |_| false)?;
+    }
     let what = format!(
         "device {:?}",
         d.name.clone().unwrap_or_else(|| d.law.name().to_string())

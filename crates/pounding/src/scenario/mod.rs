@@ -297,7 +297,8 @@ with_contact_law! {
 with_contact_law! {
     /// `[[wall]]`: a wall fixed to the ground beside a building.
     pub struct WallDoc {
-        /// Name, unique among buildings and walls.
+        /// Name, unique among buildings and walls: 1 to 64 bytes without control characters (commas,
+        /// quotes, `|` and any letter are fine).
         pub name: String,
         /// The building it stands beside.
         pub facing: String,
@@ -373,7 +374,8 @@ pub struct IsolatorDoc {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct DeviceDoc {
-    /// Name, unique among devices (default: the model and its number, `restrainer1`).
+    /// Name, unique among devices: 1 to 64 bytes without control characters (default: the model and its
+    /// number, `restrainer1`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
     /// Two neighbouring buildings, or a building and a wall beside it.

@@ -144,7 +144,7 @@ impl StoreyLaw {
 
     /// Whether the law dissipates energy by hysteresis.
     pub fn is_inelastic(&self) -> bool {
-        !matches!(self, StoreyLaw::Linear)
+        self.yield_force().is_some()
     }
 
     /// The element law of a storey of initial stiffness `k` (N/m) with this law, at rest.
