@@ -2,6 +2,7 @@
 //! (closed form), the linear dashpot it is at `alpha = 1`, and the energy balance of a run with dampers.
 
 use pounding::analysis::{Building, DeviceSpec, Scenario};
+use pounding::contact::{ContactModel, Model};
 use pounding::element::device::{DashpotParams, FluidViscousParams};
 use pounding::element::{DeviceLaw, Element, ElementLaw, End};
 use pounding::engine::{self, Dof, Ground, Settings, System};
@@ -168,6 +169,7 @@ fn a_damper_of_exponent_one_is_the_linear_dashpot() {
 
 #[test]
 fn dampers_of_every_form_keep_the_energy_balance_of_a_pounding_run() {
+    let papi = ContactModel::new(Model::Papi, 2.0e9, 0.65).unwrap();
     for (alpha, k) in [(0.35, None), (0.35, Some(2.0e8)), (1.0, Some(2.0e8))] {
         let b = |masses: &[f64], ks: &[f64]| {
             ShearBuilding::builder()
@@ -202,8 +204,11 @@ fn dampers_of_every_form_keep_the_energy_balance_of_a_pounding_run() {
                 floors: Some(vec![(2, 2)]),
                 law: law.clone(),
             })
+            .unwrap()
+            .with_link("low", "tall", 0.005, &papi, Some(vec![(1, 1), (2, 2)]))
             .unwrap();
         let r = s.run().unwrap();
+        assert!(r.sites[0].impacts > 0, "alpha {alpha}, k {k:?}: no impact");
         assert!(
             r.energy.relative_error < 1e-6,
             "alpha {alpha}, k {k:?}: {}",

@@ -41,7 +41,10 @@ pub fn print(loaded: &Loaded, file: &Path) {
             .law
             .parameters()
             .iter()
-            .map(|p| format!("{} {} {}", p.key, fmt_sig(p.value, 4), p.unit))
+            .map(|p| {
+                let text = format!("{} {} {}", p.key, fmt_sig(p.value, 4), p.unit);
+                text.trim_end().to_string()
+            })
             .collect();
         println!(
             "\ndevice {}: {} {} between {a} and {b} at floors {}",

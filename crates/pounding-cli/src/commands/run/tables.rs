@@ -218,7 +218,7 @@ fn energy(r: &Results) {
         r.energy.relative_error
     );
     println!(
-        "integration: {} steps ({} rejected), {} events (contact touch, turn, separation; storey yield, reversal)",
+        "integration: {} steps ({} rejected), {} events (contact touch, turn, separation; storey yield, reversal; device taut, slack, reversal)",
         r.statistics.steps, r.statistics.rejected, r.statistics.events
     );
 }
