@@ -658,7 +658,7 @@ fn runs_csv(
     header.extend(cols.iter().map(|(c, _)| c.as_str()));
     header.extend(["impacts", "error"]);
     wtr.write_record(&header).map_err(fail)?;
-    let mut buf = ryu::Buffer::new();
+    let mut buf = crate::format::Shortest::new();
     for ((ijs, _), o) in variants.iter().zip(outcomes) {
         let (i, j, scale) = *ijs;
         let mut row: Vec<String> = vec![
@@ -692,7 +692,7 @@ fn fragility_csv(fits: &[Fit]) -> Result<String, String> {
     let fail = |e: csv::Error| format!("cannot write fragility.csv: {e}");
     wtr.write_record(["limit_state", "method", "median_m_per_s2", "beta", "note"])
         .map_err(fail)?;
-    let mut buf = ryu::Buffer::new();
+    let mut buf = crate::format::Shortest::new();
     for f in fits {
         for (method, r) in [("stripes", &f.stripes), ("ida", &f.ida)] {
             let (m, b, note) = match r {

@@ -36,7 +36,7 @@ fn runs_csv(
     header.extend(columns.iter().copied());
     header.push("error");
     wtr.write_record(&header)?;
-    let mut buf = ryu::Buffer::new();
+    let mut buf = pounding_study::format::Shortest::new();
     for (i, ((p, o), row)) in prepared.iter().zip(outcomes).zip(&rows).enumerate() {
         wtr.write_field(i.to_string())?;
         wtr.write_field(&p.key)?;

@@ -8,14 +8,14 @@ mod tables;
 use crate::args::RunArgs;
 use crate::error::{input, CliError};
 use crate::files::{check_figures, render_figures};
-use crate::output_set::OutputSet;
+use crate::output_set::{DataFile, OutputSet};
 use crate::run_data::RunData;
 use crate::scenario::load;
 use pounding::analysis::Results;
 use pounding_study::input::Loaded;
 use pounding_study::summary::RunSummary;
 use pounding_study::tables::{
-    write_response, write_rows, EnergyRow, ImpactRow, LoopRow, Table, TableError,
+    write_energy, write_response, write_rows, EnergyRow, ImpactRow, LoopRow, Table, TableError,
 };
 use std::io::IsTerminal;
 
@@ -38,8 +38,8 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         eprintln!("warning: {w}");
     }
     // The whole set is written into a folder beside --out and appears there in one rename.
-    let mut set = OutputSet::begin(&a.out)?;
-    let mut written = write_data(&mut set, &loaded, &results, &summary, text)?;
+    let set = OutputSet::begin(&a.out)?;
+    let mut written = write_data(&set, &loaded, &results, &summary, text)?;
     if a.figures.plots || a.report {
         // Figures and report are made from the files just written, exactly as `pounding report` makes them.
         let data = RunData::load(set.dir())?;
@@ -110,43 +110,43 @@ fn expected_work(t: f64, record_end: f64) -> f64 {
 }
 
 /// Writes the run's data files into `set`: the scenario as run, summary.json and the tables. Returns their
-/// names.
+/// names. response.csv (the most bytes) is formatted and written on a thread of its own while this one writes
+/// the rest.
 fn write_data(
-    set: &mut OutputSet,
+    set: &OutputSet,
     loaded: &Loaded,
     r: &Results,
     summary: &RunSummary,
     scenario_text: String,
 ) -> Result<Vec<String>, CliError> {
     let s = &loaded.scenario;
-    let table = |name: &str, e: TableError| match e {
-        TableError::Io(e) => CliError::Io(format!("cannot write {name}: {e}")),
-        TableError::Invalid(m) => CliError::Io(format!("cannot write {name}: {m}")),
+    let table = |name: &str, w: &dyn Fn(&mut DataFile) -> Result<(), TableError>| {
+        let mut f = set.create(name)?;
+        w(&mut f).map_err(|e| match e {
+            TableError::Io(e) => set.error(name, e),
+            TableError::Invalid(m) => CliError::Io(format!("cannot write {name}: {m}")),
+        })?;
+        set.finish(f)
     };
-    let mut files: Vec<(&str, Vec<u8>)> = vec![
-        ("scenario.toml", scenario_text.into_bytes()),
-        ("summary.json", summary.to_json().into_bytes()),
+    let files = [
+        "scenario.toml",
+        "summary.json",
+        "response.csv",
+        ImpactRow::FILE,
+        LoopRow::FILE,
+        EnergyRow::FILE,
     ];
-    let mut response = Vec::new();
-    write_response(&mut response, summary, &r.histories).map_err(|e| table("response.csv", e))?;
-    files.push(("response.csv", response));
-    let rows = |name: &'static str, w: &dyn Fn(&mut Vec<u8>) -> Result<(), TableError>| {
-        let mut bytes = Vec::new();
-        w(&mut bytes)
-            .map(|()| (name, bytes))
-            .map_err(|e| table(name, e))
-    };
-    files.push(rows(ImpactRow::FILE, &|b| {
-        write_rows(b, &ImpactRow::all(s, r))
-    })?);
-    files.push(rows(LoopRow::FILE, &|b| {
-        write_rows(b, &LoopRow::all(s, r))
-    })?);
-    files.push(rows(EnergyRow::FILE, &|b| {
-        write_rows(b, &EnergyRow::all(&r.histories))
-    })?);
-    for (name, bytes) in &files {
-        set.write_data(name, bytes)?;
-    }
-    Ok(files.iter().map(|f| f.0.to_string()).collect())
+    std::thread::scope(|scope| {
+        let response =
+            scope.spawn(|| table(files[2], &|f| write_response(f, summary, &r.histories)));
+        set.write_data(files[0], scenario_text.as_bytes())?;
+        set.write_data(files[1], summary.to_json().as_bytes())?;
+        table(files[3], &|f| write_rows(f, &ImpactRow::all(s, r)))?;
+        table(files[4], &|f| write_rows(f, &LoopRow::all(s, r)))?;
+        table(files[5], &|f| write_energy(f, &r.histories))?;
+        response
+            .join()
+            .map_err(|_| CliError::Io("the thread writing response.csv failed".into()))?
+    })?;
+    Ok(files.iter().map(|f| f.to_string()).collect())
 }
