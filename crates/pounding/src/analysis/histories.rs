@@ -35,7 +35,8 @@ impl HistoryRecorder {
         let per = |counts: &[usize]| -> Vec<Vec<Vec<f64>>> {
             counts
                 .iter()
-                .map(|&c| vec![Vec::with_capacity(n_out); c])
+                // Each column its own capacity: `vec![v; c]` would clone `v` without it.
+                .map(|&c| (0..c).map(|_| Vec::with_capacity(n_out)).collect())
                 .collect()
         };
         Self {

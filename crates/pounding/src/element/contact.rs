@@ -294,6 +294,7 @@ impl ElementLaw for Contact {
         }
     }
 
+    #[inline]
     fn energy(&self, _x: f64, s: &[f64]) -> ElementEnergy {
         ElementEnergy {
             contact: s[0],

@@ -75,6 +75,7 @@ impl Element {
     }
 
     /// Energy held or dissipated by the element's law, J (the viscous forces' is integrated by the engine).
+    #[inline]
     pub fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
         self.law.energy(x, s)
     }

@@ -62,6 +62,7 @@ macro_rules! registry {
             fn force(&self, x: f64, v: f64, s: &[f64]) -> f64 {
                 dispatch!(self, l => l.force(x, v, s))
             }
+            #[inline]
             fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
                 dispatch!(self, l => l.energy(x, s))
             }

@@ -33,6 +33,7 @@ impl ElementLaw for Dashpot {
         0.0
     }
 
+    #[inline]
     fn energy(&self, _x: f64, _s: &[f64]) -> ElementEnergy {
         ElementEnergy::default()
     }

@@ -102,6 +102,7 @@ impl ElementLaw for FluidViscous {
     }
 
     /// In series: the spring's `F^2 / 2k`, and the damper's dissipated energy (a state).
+    #[inline]
     fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
         match self.k {
             None => ElementEnergy::default(),

@@ -27,6 +27,7 @@ impl ElementLaw for Kelvin {
         self.k * x
     }
 
+    #[inline]
     fn energy(&self, x: f64, _s: &[f64]) -> ElementEnergy {
         ElementEnergy {
             strain: 0.5 * self.k * x * x,

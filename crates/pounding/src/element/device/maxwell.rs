@@ -41,6 +41,7 @@ impl ElementLaw for Maxwell {
     }
 
     /// The spring's `f^2 / 2k`, and the dashpot's dissipated energy (a state).
+    #[inline]
     fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
         let f = self.force(x, 0.0, s);
         ElementEnergy {

@@ -48,6 +48,7 @@ impl ElementLaw for Restrainer {
         }
     }
 
+    #[inline]
     fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
         let f = self.force(x, 0.0, s);
         ElementEnergy {

@@ -32,6 +32,7 @@ impl ElementLaw for Spring {
         self.k * x
     }
 
+    #[inline]
     fn energy(&self, x: f64, _s: &[f64]) -> ElementEnergy {
         ElementEnergy {
             strain: 0.5 * self.k * x * x,

@@ -125,6 +125,7 @@ impl ElementLaw for Bilinear {
     }
 
     /// Recoverable `F^2 / (2k)` (elastic unloading to zero force) and the hysteretic energy dissipated.
+    #[inline]
     fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
         let f = self.force(x, 0.0, s);
         let hysteretic = match self.phase {

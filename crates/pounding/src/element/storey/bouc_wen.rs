@@ -89,6 +89,7 @@ impl ElementLaw for BoucWen {
 
     /// Recoverable `a k x^2 / 2 + (1 - a) F_y d_y z^2 / 2`; the rest of the work of the hysteretic part is
     /// dissipated.
+    #[inline]
     fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
         let (fy, a) = (self.yield_force, self.a);
         let held = 0.5 * (1.0 - a) * fy * fy / self.k * s[0] * s[0];
