@@ -1,6 +1,6 @@
 //! A Kelvin–Voigt unit: a spring and a dashpot in parallel, `f = k x + c x'`.
 
-use super::{damping_coefficient, stiffness, Device, Parameter};
+use super::{Device, Parameter, SpringDashpotParams};
 use crate::element::{ElementEnergy, ElementLaw};
 use crate::Error;
 
@@ -36,40 +36,18 @@ impl ElementLaw for Kelvin {
     }
 }
 
-/// `model = "kelvin"`: `f = k x + c x'`.
-#[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct KelvinParams {
-    /// Stiffness `k`, N/m.
-    pub stiffness: f64,
-    /// Damping coefficient `c`, N s/m.
-    pub damping_coefficient: f64,
-}
+/// `model = "kelvin"`: its parameters.
+pub type KelvinParams = SpringDashpotParams;
 
 impl Device for Kelvin {
-    type Params = KelvinParams;
+    type Params = SpringDashpotParams;
 
-    fn from_params(p: &KelvinParams) -> Result<Self, Error> {
-        Ok(Self {
-            k: stiffness(p.stiffness)?,
-            c: damping_coefficient(p.damping_coefficient, "damping_coefficient > 0 (N s/m)")?,
-        })
+    fn from_params(p: &SpringDashpotParams) -> Result<Self, Error> {
+        let (k, c) = p.checked()?;
+        Ok(Self { k, c })
     }
 
-    fn parameters(p: &KelvinParams) -> Vec<Parameter> {
-        vec![
-            Parameter {
-                key: "stiffness",
-                value: p.stiffness,
-                unit: "N/m",
-            },
-            Parameter {
-                key: "damping_coefficient",
-                value: p.damping_coefficient,
-                unit: "N s/m",
-            },
-        ]
+    fn parameters(p: &SpringDashpotParams) -> Vec<Parameter> {
+        p.parameters()
     }
 }

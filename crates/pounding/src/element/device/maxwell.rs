@@ -1,7 +1,7 @@
 //! A Maxwell unit: a spring and a dashpot in series, `f = k (x - x_d)`, `x_d' = f / c`, with the dashpot's
 //! stroke `x_d` (m) and the energy it dissipated, `int f^2 / c dt` (J), as ODE states.
 
-use super::{damping_coefficient, stiffness, Device, Parameter};
+use super::{Device, Parameter, SpringDashpotParams};
 use crate::element::{ElementEnergy, ElementLaw, Scales};
 use crate::Error;
 
@@ -52,40 +52,18 @@ impl ElementLaw for Maxwell {
     }
 }
 
-/// `model = "maxwell"`: `f = k (x - x_d)`, `x_d' = f / c`.
-#[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct MaxwellParams {
-    /// Stiffness `k`, N/m.
-    pub stiffness: f64,
-    /// Damping coefficient `c`, N s/m.
-    pub damping_coefficient: f64,
-}
+/// `model = "maxwell"`: its parameters.
+pub type MaxwellParams = SpringDashpotParams;
 
 impl Device for Maxwell {
-    type Params = MaxwellParams;
+    type Params = SpringDashpotParams;
 
-    fn from_params(p: &MaxwellParams) -> Result<Self, Error> {
-        Ok(Self {
-            k: stiffness(p.stiffness)?,
-            c: damping_coefficient(p.damping_coefficient, "damping_coefficient > 0 (N s/m)")?,
-        })
+    fn from_params(p: &SpringDashpotParams) -> Result<Self, Error> {
+        let (k, c) = p.checked()?;
+        Ok(Self { k, c })
     }
 
-    fn parameters(p: &MaxwellParams) -> Vec<Parameter> {
-        vec![
-            Parameter {
-                key: "stiffness",
-                value: p.stiffness,
-                unit: "N/m",
-            },
-            Parameter {
-                key: "damping_coefficient",
-                value: p.damping_coefficient,
-                unit: "N s/m",
-            },
-        ]
+    fn parameters(p: &SpringDashpotParams) -> Vec<Parameter> {
+        p.parameters()
     }
 }

@@ -48,6 +48,45 @@ pub trait Device: ElementLaw + Sized {
     fn parameters(p: &Self::Params) -> Vec<Parameter>;
 }
 
+/// The parameters of a spring and a linear dashpot: `model = "kelvin"` (in parallel) and `"maxwell"` (in
+/// series).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct SpringDashpotParams {
+    /// Stiffness `k`, N/m.
+    pub stiffness: f64,
+    /// Damping coefficient `c`, N s/m.
+    pub damping_coefficient: f64,
+}
+
+impl SpringDashpotParams {
+    /// `(k, c)` (N/m, N s/m), checked.
+    pub(crate) fn checked(&self) -> Result<(f64, f64), Error> {
+        Ok((
+            stiffness(self.stiffness)?,
+            damping_coefficient(self.damping_coefficient, "damping_coefficient > 0 (N s/m)")?,
+        ))
+    }
+
+    /// The two parameters with their keys and units.
+    pub(crate) fn parameters(&self) -> Vec<Parameter> {
+        vec![
+            Parameter {
+                key: "stiffness",
+                value: self.stiffness,
+                unit: "N/m",
+            },
+            Parameter {
+                key: "damping_coefficient",
+                value: self.damping_coefficient,
+                unit: "N s/m",
+            },
+        ]
+    }
+}
+
 /// A stiffness `k > 0` (N/m), checked under the key `stiffness`.
 pub(crate) fn stiffness(k: f64) -> Result<f64, Error> {
     check(
