@@ -162,7 +162,7 @@ pub fn table1() -> Result<Vec<Row>, Error> {
         .iter()
         .map(|v| {
             let err = errors(v)?;
-            let coarse = |i: u32| i % 10 == 0;
+            let coarse = |i: u32| i.is_multiple_of(10);
             let mid = |i: u32| (50..=80).contains(&i);
             Ok(Row {
                 label: v.label,

@@ -63,7 +63,7 @@ impl Path {
         p.penetration.push(d);
         p.force.push(f);
         self.steps += 1;
-        self.tentative = self.steps % p.stride != 0;
+        self.tentative = !self.steps.is_multiple_of(p.stride);
         if p.t.len() > MAX_LOOP_POINTS {
             // Every other point goes (the touch and the latest step stay), and one step in twice as many is
             // kept from now on.
