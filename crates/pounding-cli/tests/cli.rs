@@ -1262,6 +1262,13 @@ fn a_sweep_killed_with_sigkill_resumes_with_every_run_once() {
                 .unwrap_or(0);
         }
     }
+    // The same study started again on the same folder while this one runs (it passes the check of the
+    // store's study, as two studies starting together on a new folder both would): refused at once by the
+    // lock.
+    let o = pounding(&args);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("is in use by another sweep or IDA"), "{err}");
     assert!(
         child.try_wait().unwrap().is_none(),
         "the sweep ended before it could be killed"
@@ -1271,6 +1278,10 @@ fn a_sweep_killed_with_sigkill_resumes_with_every_run_once() {
     let before = store_rows(&db);
     assert!(before.len() >= 10 && before.len() < 120, "{}", before.len());
     assert!(!out.join("runs.csv").exists());
+    // What a sweep killed while writing runs.csv leaves (a process id no process has): removed by the next.
+    let stale = out.join(".runs.csv.tmp-4294967295");
+    std::fs::write(&stale, "index,key\n").unwrap();
+    // The lock went with the killed process: the same study resumes.
     let o = pounding(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let after = store_rows(&db);
@@ -1291,6 +1302,7 @@ fn a_sweep_killed_with_sigkill_resumes_with_every_run_once() {
             .count(),
         121
     );
+    assert!(!stale.exists());
 }
 
 #[test]

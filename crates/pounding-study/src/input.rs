@@ -53,6 +53,7 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
         .file_name()
         .and_then(|n| n.to_str())
         .unwrap_or("output");
+    remove_stale_tmp(&dir, name);
     let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
@@ -64,6 +65,28 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
         let _ = std::fs::remove_file(&tmp);
     }
     result
+}
+
+/// Removes the temporary files `.NAME.tmp-PID` that [`write_atomic`] left in `dir` when its process was
+/// killed (the process is gone); those of running processes stay.
+fn remove_stale_tmp(dir: &Path, name: &str) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    let prefix = format!(".{name}.tmp-");
+    for e in entries.flatten() {
+        let file = e.file_name();
+        let Some(pid) = file.to_str().and_then(|f| f.strip_prefix(&prefix)) else {
+            continue;
+        };
+        // Only where /proc tells which processes live.
+        let gone = pid.parse::<u32>().is_ok()
+            && Path::new("/proc/self").exists()
+            && !Path::new("/proc").join(pid).exists();
+        if gone {
+            let _ = std::fs::remove_file(e.path());
+        }
+    }
 }
 
 /// The unscaled record `spec` names: a built-in, or its file read in its format (default
@@ -304,4 +327,26 @@ pub fn key_line(text: &str, key: &str) -> usize {
         item = next;
     }
     best.map_or(0, |s| line_of(text, s))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn write_atomic_removes_what_killed_writers_left() {
+        let dir = std::env::temp_dir().join(format!("pounding-atomic-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        // A process id that no process has (above the kernel's limit), and this process's own.
+        let dead = dir.join(".runs.csv.tmp-4294967295");
+        let alive = dir.join(format!(".other.csv.tmp-{}", std::process::id()));
+        std::fs::write(&dead, "half").unwrap();
+        std::fs::write(&alive, "mine").unwrap();
+        write_atomic(&dir.join("runs.csv"), b"a,b\n").unwrap();
+        assert_eq!(std::fs::read(dir.join("runs.csv")).unwrap(), b"a,b\n");
+        assert!(!dead.exists() || !Path::new("/proc/self").exists());
+        assert!(alive.exists());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }

@@ -33,9 +33,11 @@ pub struct Finished {
 /// A run's outcome as stored: the summary's JSON text, or the one-line error message.
 pub type Outcome = Result<String, String>;
 
-/// An open study store.
+/// An open study store, held by this process alone (an OS lock on the file `<store>.lock` beside it, released
+/// when the store is dropped or the process ends, however it ends).
 pub struct Store {
     conn: Connection,
+    _lock: std::fs::File,
 }
 
 /// Why a store cannot be used: one line.
@@ -59,6 +61,22 @@ fn io(path: &Path) -> impl Fn(rusqlite::Error) -> StoreError + '_ {
     move |e| StoreError::Io(format!("study store {}: {e}", path.display()))
 }
 
+/// Whether SQLite's error is about the file's content (not a database, corrupt), rather than about reaching
+/// it (permissions, a read-only or full file system: I/O).
+fn is_content(e: &rusqlite::Error) -> bool {
+    matches!(
+        e.sqlite_error_code(),
+        Some(rusqlite::ErrorCode::NotADatabase | rusqlite::ErrorCode::DatabaseCorrupt)
+    )
+}
+
+/// The lock file beside the store at `path`.
+fn lock_path(path: &Path) -> std::path::PathBuf {
+    let mut name = path.file_name().unwrap_or_default().to_os_string();
+    name.push(".lock");
+    path.with_file_name(name)
+}
+
 impl Store {
     /// Checks, without writing anything, that the file at `path` is absent or a store of the study `id`
     /// with `runs` runs.
@@ -72,15 +90,21 @@ impl Store {
                 "study store {shown} {why}; allowed: a store written by this study, or a new path"
             ))
         };
+        let unreadable = |e: rusqlite::Error| {
+            if is_content(&e) {
+                mismatch(format!("is not an SQLite database ({e})"))
+            } else {
+                StoreError::Io(format!("study store {shown} cannot be read: {e}"))
+            }
+        };
         let conn = Connection::open_with_flags(path, OpenFlags::SQLITE_OPEN_READ_ONLY)
-            .map_err(|e| mismatch(format!("cannot be opened ({e})")))?;
+            .map_err(unreadable)?;
         // An empty database (a file just created by a reader, or by `touch`) is a new store.
-        let tables: Result<i64, _> =
-            conn.query_row("SELECT count(*) FROM sqlite_master", [], |r| r.get(0));
-        match tables {
-            Ok(0) => return Ok(()),
-            Ok(_) => {}
-            Err(e) => return Err(mismatch(format!("is not an SQLite database ({e})"))),
+        let tables: i64 = conn
+            .query_row("SELECT count(*) FROM sqlite_master", [], |r| r.get(0))
+            .map_err(unreadable)?;
+        if tables == 0 {
+            return Ok(());
         }
         let get = |name: &str| -> Result<Option<String>, rusqlite::Error> {
             conn.query_row(
@@ -98,6 +122,13 @@ impl Store {
                 ))
             }
         };
+        // Tables without their study rows and without runs: a store whose creation was killed before stores
+        // created them in one transaction. Nothing to lose: it is taken as new.
+        let stored_runs: Result<i64, _> =
+            conn.query_row("SELECT count(*) FROM runs", [], |r| r.get(0));
+        if format.is_none() && stored.is_none() && matches!(stored_runs, Ok(0)) {
+            return Ok(());
+        }
         if format.as_deref() != Some(FORMAT) {
             return Err(mismatch(format!(
                 "has layout {:?}, not {FORMAT:?}",
@@ -114,16 +145,41 @@ impl Store {
         Ok(())
     }
 
-    /// Opens (or creates) the store of study `id` with `runs` runs at `path`, after [`Store::check`].
+    /// Opens (or creates) the store of study `id` with `runs` runs at `path`: takes its lock (another process
+    /// holding it is refused at once), checks it ([`Store::check`]), and creates its tables and study rows in
+    /// one transaction, so that a kill leaves no store without its study.
     pub fn open(path: &Path, id: &str, runs: usize) -> Result<Store, StoreError> {
+        let lp = lock_path(path);
+        let lock = std::fs::OpenOptions::new()
+            .create(true)
+            .truncate(false)
+            .write(true)
+            .open(&lp)
+            .map_err(|e| StoreError::Io(format!("cannot open {}: {e}", lp.display())))?;
+        match lock.try_lock() {
+            Ok(()) => {}
+            Err(std::fs::TryLockError::WouldBlock) => {
+                return Err(StoreError::Mismatch(format!(
+                    "study store {} is in use by another sweep or IDA (it holds {}); allowed: wait for it, or a new --out",
+                    path.display(),
+                    lp.display()
+                )))
+            }
+            Err(std::fs::TryLockError::Error(e)) => {
+                return Err(StoreError::Io(format!("cannot lock {}: {e}", lp.display())))
+            }
+        }
         Self::check(path, id, runs)?;
-        let conn = Connection::open(path).map_err(io(path))?;
+        let mut conn = Connection::open(path).map_err(io(path))?;
         // WAL: a commit is durable against a killed process, and readers (pandas) never block the sweep.
         conn.pragma_update(None, "journal_mode", "WAL")
             .map_err(io(path))?;
         conn.pragma_update(None, "synchronous", "NORMAL")
             .map_err(io(path))?;
-        conn.execute_batch(
+        let tx = conn
+            .transaction_with_behavior(rusqlite::TransactionBehavior::Immediate)
+            .map_err(io(path))?;
+        tx.execute_batch(
             "CREATE TABLE IF NOT EXISTS study (name TEXT PRIMARY KEY, value TEXT NOT NULL);
              CREATE TABLE IF NOT EXISTS runs (
                  key TEXT PRIMARY KEY,
@@ -136,12 +192,13 @@ impl Store {
              );",
         )
         .map_err(io(path))?;
-        conn.execute(
+        tx.execute(
             "INSERT OR IGNORE INTO study (name, value) VALUES ('format', ?1), ('id', ?2), ('runs', ?3), ('created', datetime('now'))",
             params![FORMAT, id, runs.to_string()],
         )
         .map_err(io(path))?;
-        Ok(Store { conn })
+        tx.commit().map_err(io(path))?;
+        Ok(Store { conn, _lock: lock })
     }
 
     /// The keys of the runs already finished.
@@ -209,5 +266,87 @@ impl Store {
             .and_then(|rows| rows.collect::<Result<Vec<_>, _>>())
             .map_err(err);
         rows
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> std::path::PathBuf {
+        let dir =
+            std::env::temp_dir().join(format!("pounding-store-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn a_second_open_of_a_store_in_use_is_refused_at_once() {
+        let dir = scratch("lock");
+        let path = dir.join("study.sqlite");
+        let first = Store::open(&path, "a", 2).unwrap();
+        // Another study, or the same one: refused while the first holds the store.
+        for id in ["b", "a"] {
+            match Store::open(&path, id, 2) {
+                Err(StoreError::Mismatch(m)) => assert!(m.contains("in use"), "{m}"),
+                Err(e) => panic!("{e}"),
+                Ok(_) => panic!("two holders of one store"),
+            }
+        }
+        drop(first);
+        assert!(Store::open(&path, "a", 2).is_ok());
+        assert!(
+            matches!(Store::open(&path, "b", 2), Err(StoreError::Mismatch(m)) if m.contains("different study"))
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_store_killed_while_it_was_created_is_taken_as_new() {
+        // What a kill between the tables and the study rows left before they were one transaction.
+        let dir = scratch("half");
+        let path = dir.join("study.sqlite");
+        let conn = Connection::open(&path).unwrap();
+        conn.execute_batch(
+            "CREATE TABLE study (name TEXT PRIMARY KEY, value TEXT NOT NULL);
+             CREATE TABLE runs (key TEXT PRIMARY KEY, idx INTEGER NOT NULL, status TEXT NOT NULL,
+                 summary TEXT, error TEXT, seconds REAL NOT NULL, finished TEXT NOT NULL);",
+        )
+        .unwrap();
+        drop(conn);
+        assert_eq!(Store::check(&path, "a", 1), Ok(()));
+        let mut s = Store::open(&path, "a", 1).unwrap();
+        let run = Finished {
+            key: "k".into(),
+            index: 0,
+            outcome: Err("failed".into()),
+            seconds: 0.1,
+        };
+        s.commit(std::slice::from_ref(&run)).unwrap();
+        drop(s);
+        // Now it is study a's, with its run.
+        assert!(matches!(
+            Store::check(&path, "b", 1),
+            Err(StoreError::Mismatch(_))
+        ));
+        let s = Store::open(&path, "a", 1).unwrap();
+        assert_eq!(
+            s.all().unwrap(),
+            vec![("k".to_string(), Err("failed".to_string()))]
+        );
+        drop(s);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_file_that_is_no_database_is_bad_input() {
+        let dir = scratch("junk");
+        let path = dir.join("study.sqlite");
+        std::fs::write(&path, vec![7u8; 4096]).unwrap();
+        assert!(
+            matches!(Store::check(&path, "a", 1), Err(StoreError::Mismatch(m)) if m.contains("not an SQLite database"))
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
