@@ -1317,6 +1317,19 @@ fn bad_studies_get_one_line_exit_2_and_leave_the_store_untouched() {
         ("contact.0.gap = []", "axes.contact.0.gap = [] is empty"),
         ("record = [\"no-such-dir/*.AT2\"]", "matches no file"),
         ("record = [\"kobe\"]", "is neither a built-in record"),
+        // One scenario key on two axes: runs.csv would show values that were never run.
+        (
+            "contact.0.gap = [0.01]\n\"contact.0.gap\" = [0.02]",
+            "both set the scenario key \"contact.0.gap\"",
+        ),
+        (
+            "scale = [1.0]\n\"ground_motion.scale\" = [2.0]",
+            "both set the scenario key \"ground_motion.scale\"",
+        ),
+        (
+            "scale = [1.0, nan]",
+            "axes.scale.1 = NaN is not allowed: a finite number",
+        ),
     ];
     for (i, (axes, needle)) in cases.iter().enumerate() {
         let file = study(&dir, &format!("case{i}.toml"), axes);
@@ -1543,6 +1556,10 @@ fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
         (
             "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nbuilding = \"right\"\nlevels = []\n",
             "levels = [...] is required",
+        ),
+        (
+            "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nmeasure = 5\nbuilding = \"right\"\nlevels = [1.0]\n",
+            "measure = 5 is not allowed: one of \"sa\", \"pga\"",
         ),
     ];
     for (i, (text, needle)) in cases.iter().enumerate() {

@@ -248,7 +248,17 @@ impl Ida {
                 return Err(err(path, format!("[intensity] unknown key {k:?}; allowed: measure, building, damping, levels")));
             }
         }
-        let measure = match int.get("measure").and_then(Value::as_str).unwrap_or("sa") {
+        let measure_name = match int.get("measure") {
+            None => "sa",
+            Some(Value::String(m)) => m.as_str(),
+            Some(other) => {
+                return Err(err(
+                    path,
+                    format!("[intensity] measure = {other} is not allowed: one of \"sa\", \"pga\""),
+                ))
+            }
+        };
+        let measure = match measure_name {
             "pga" => Measure::Pga,
             "sa" => {
                 let building = match int.get("building") {

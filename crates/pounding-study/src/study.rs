@@ -224,6 +224,62 @@ fn apply(scenario: &mut Value, name: &str, v: &Value) -> Result<(), String> {
     }
 }
 
+/// The first number of `v` that is NaN or infinite, with its dotted key.
+fn non_finite(key: &str, v: &toml::Value) -> Option<(String, f64)> {
+    let child = |k: &str| {
+        if key.is_empty() {
+            k.to_string()
+        } else {
+            format!("{key}.{k}")
+        }
+    };
+    match v {
+        toml::Value::Float(x) if !x.is_finite() => Some((key.to_string(), *x)),
+        toml::Value::Table(t) => t.iter().find_map(|(k, v)| non_finite(&child(k), v)),
+        toml::Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(i, v)| non_finite(&child(&i.to_string()), v)),
+        _ => None,
+    }
+}
+
+/// The scenario keys (dotted paths) that the setting `name` writes.
+fn targets(name: &str) -> Vec<&str> {
+    match name {
+        "record" => vec!["ground_motion.record", "ground_motion.file"],
+        "scale" => vec!["ground_motion.scale"],
+        path => vec![path],
+    }
+}
+
+/// Refuses two settings among `names` that write one scenario key (the same key, one inside the other, or
+/// `scale` beside `ground_motion.scale`): runs.csv would label rows with values that were never run. `what`
+/// names where they stand (`axes`, `run 3`).
+fn one_setting_per_key(path: &Path, what: &str, names: &[&str]) -> Result<(), InputError> {
+    let overlap = |a: &str, b: &str| {
+        a == b
+            || a.strip_prefix(b).is_some_and(|r| r.starts_with('.'))
+            || b.strip_prefix(a).is_some_and(|r| r.starts_with('.'))
+    };
+    for (i, a) in names.iter().enumerate() {
+        for b in &names[..i] {
+            let clash = targets(a)
+                .into_iter()
+                .find(|ta| targets(b).iter().any(|tb| overlap(ta, tb)));
+            if let Some(key) = clash {
+                return Err(err(
+                    path,
+                    format!(
+                        "{what}: {b:?} and {a:?} both set the scenario key {key:?}; allowed: one setting per key"
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 impl Study {
     /// Reads and expands the study file at `path`. Bad input (an axis that names no scenario key, an empty
     /// axis, a record glob that matches nothing, an unknown study key) is one line naming the file.
@@ -232,6 +288,13 @@ impl Study {
             read_text_file(path, "study file", SCENARIO_FILE_LIMIT).map_err(InputError::new)?;
         let table: toml::Table =
             toml::from_str(&text).map_err(|e| err(path, e.message().trim().replace('\n', " ")))?;
+        // JSON, which scenarios become, has no NaN or infinity: said here, by key, not as a null later.
+        if let Some((key, x)) = non_finite("", &toml::Value::Table(table.clone())) {
+            return Err(err(
+                path,
+                format!("{key} = {x} is not allowed: a finite number"),
+            ));
+        }
         let top = serde_json::to_value(table).map_err(|e| err(path, e))?;
         let Value::Object(top) = top else {
             return Err(err(path, "not a table"));
@@ -264,10 +327,28 @@ impl Study {
                     "[axes] or [[run]] entries are required: what the study varies",
                 ))
             }
-            _ => return Err(err(
+            (Some(_), Some(_)) => return Err(err(
                 path,
                 "give [axes] (a Cartesian product) or [[run]] entries (an explicit list), not both",
             )),
+            (Some(a), None) => {
+                return Err(err(
+                    path,
+                    format!(
+                        "axes = {} is not allowed: a table [axes] of lists of values",
+                        show(a)
+                    ),
+                ))
+            }
+            (None, Some(r)) => {
+                return Err(err(
+                    path,
+                    format!(
+                        "run = {} is not allowed: [[run]] entries, tables of settings",
+                        show(r)
+                    ),
+                ))
+            }
         };
         let study = Study {
             path: path.to_path_buf(),
@@ -332,6 +413,8 @@ fn product(
     if flat.is_empty() {
         return Err(err(path, "[axes] is empty: give at least one axis"));
     }
+    let names: Vec<&str> = flat.iter().map(|(n, _)| n.as_str()).collect();
+    one_setting_per_key(path, "axes", &names)?;
     let mut axes = Vec::new();
     let mut total: usize = 1;
     for (name, v) in flat {
@@ -413,6 +496,8 @@ fn list(
         };
         let mut flat = Vec::new();
         flatten("", t, &mut flat);
+        let set: Vec<&str> = flat.iter().map(|(n, _)| n.as_str()).collect();
+        one_setting_per_key(path, &format!("run {i}"), &set)?;
         for (k, _) in &flat {
             if !names.contains(k) {
                 names.push(k.clone());
