@@ -58,10 +58,7 @@ pub fn progress(
 /// The threads of `--workers`, by default the machine's cores.
 pub fn workers(a: &SweepArgs) -> Result<usize, CliError> {
     match a.workers {
-        Some(0) => Err(input(
-            "--workers 0 is not allowed: at least 1 (default: the number of cores)",
-        )),
-        Some(n) => Ok(n),
+        Some(n) => pounding_study::sweep::check_workers("--workers", n).map_err(input),
         None => Ok(std::thread::available_parallelism().map_or(1, |n| n.get())),
     }
 }

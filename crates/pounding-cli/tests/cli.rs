@@ -2162,3 +2162,26 @@ fn an_ida_of_the_isolated_moat_counts_its_wall_impacts() {
         cell("peak_force_N")
     );
 }
+
+#[test]
+fn workers_beyond_sixteen_per_core_are_refused_before_any_work() {
+    let dir = tmp("many-workers");
+    let file = study(&dir, "study.toml", "contact.0.gap = [0.01, 0.02]");
+    let out = dir.join("out");
+    let o = pounding(&[
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--workers",
+        "10000",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("--workers 10000 is not allowed: 1 to "),
+        "{err}"
+    );
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(!out.exists());
+}

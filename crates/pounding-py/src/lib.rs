@@ -326,11 +326,7 @@ fn sweep_runs(
     store: Option<&str>,
     progress: bool,
 ) -> PyResult<Vec<(String, bool, String)>> {
-    if workers == 0 {
-        return Err(input_err(
-            "workers = 0 is not allowed: at least 1 (default: the number of cores)",
-        ));
-    }
+    let workers = sweep::check_workers("workers =", workers).map_err(input_err)?;
     let prepared = prepare(py, scenarios, labels, workers);
     let mut st = match store {
         Some(path) => Some(
@@ -519,6 +515,12 @@ fn separation(
     json_text(&v)
 }
 
+/// The largest `workers` a sweep or an IDA takes on this machine (16 per core).
+#[pyfunction]
+fn max_workers() -> usize {
+    sweep::MAX_WORKERS_PER_CORE * std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
 /// A synthetic record (docs/separation.md): `seed` (a whole number from 0 to 2^64 - 1) and the parameters
 /// as JSON text, read as the library's [`SyntheticParams`](pounding::ground_motion::synthetic::SyntheticParams)
 /// (`filter`, `wg`, `zg`, `wf`, `zf`, `duration`, `dt`, `t1`, `t2`, `decay`, `pga`; each absent one keeps its
@@ -547,11 +549,7 @@ fn synthetic(seed: &Bound<'_, PyAny>, params: &str) -> PyResult<(f64, f64, Vec<f
 #[pyo3(signature = (study, out, workers, progress=false))]
 fn ida(py: Python<'_>, study: &str, out: &str, workers: usize, progress: bool) -> PyResult<String> {
     use pounding_study::ida::{run, Ida, IdaError};
-    if workers == 0 {
-        return Err(input_err(
-            "workers = 0 is not allowed: at least 1 (default: the number of cores)",
-        ));
-    }
+    let workers = sweep::check_workers("workers =", workers).map_err(input_err)?;
     let ida = Ida::read(Path::new(study)).map_err(|e| input_err(e.0))?;
     let mut interrupted: Option<PyErr> = None;
     let r = py.allow_threads(|| {
@@ -585,6 +583,7 @@ fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(separation, m)?)?;
     m.add_function(wrap_pyfunction!(synthetic, m)?)?;
+    m.add_function(wrap_pyfunction!(max_workers, m)?)?;
     m.add_function(wrap_pyfunction!(ida, m)?)?;
     m.add_class::<PyStore>()?;
     Ok(())

@@ -587,3 +587,28 @@ def test_ida_fits_agree_with_scipy_on_the_same_data(tmp_path):
                                   options={"xatol": 1e-12, "fatol": 1e-14, "maxiter": 20000})
             assert row["median_m_per_s2"] == pytest.approx(np.exp(c.x[0]), rel=1e-6), ls
             assert row["beta"] == pytest.approx(np.exp(c.x[1]), rel=1e-6), ls
+
+
+def test_bad_arguments_raise_input_error_naming_them(base, tmp_path):
+    # Each call with an argument of the wrong type or range: InputError naming the argument, nothing written.
+    store = tmp_path / "study.sqlite"
+    calls = [
+        (lambda: pounding.spectrum(None), "record = None"),
+        (lambda: pounding.load_scenario(None), "path = None"),
+        (lambda: pounding.sweep([base], workers=2**64, progress=False), f"workers = {2**64}"),
+        (lambda: pounding.sweep([base], workers="2", progress=False), "workers = '2'"),
+        (lambda: pounding.sweep([base], workers=10**6, store=store, progress=False), "workers = 1000000"),
+        (lambda: pounding.run(base, histories="no"), "histories = 'no'"),
+        (lambda: pounding.separation(base, records="el-centro-1940"), "records = 'el-centro-1940'"),
+        (lambda: pounding.sweep(base, progress=False), "scenarios = {"),
+        (lambda: pounding.synthetic(-1), "seed = -1"),
+        (lambda: pounding.synthetic(1, filter=5), "filter"),
+        (lambda: pounding.ida(tmp_path / "ida.toml", tmp_path / "out", workers=True), "workers = True"),
+    ]
+    for call, needle in calls:
+        with pytest.raises(pounding.InputError) as e:
+            call()
+        assert needle in str(e.value), str(e.value)
+        assert "\n" not in str(e.value) and len(str(e.value)) < 300
+    assert not store.exists()
+    assert not (tmp_path / "out").exists()

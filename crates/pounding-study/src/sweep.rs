@@ -140,6 +140,24 @@ pub fn parallel_map<T: Sync, R: Send>(
         .collect()
 }
 
+/// Most worker threads per core a sweep or an IDA may start: more only adds memory and switching, and
+/// thousands of threads can exhaust what the OS gives a process.
+pub const MAX_WORKERS_PER_CORE: usize = 16;
+
+/// `workers` checked against 1 ..= [`MAX_WORKERS_PER_CORE`] times this machine's cores; the error names
+/// `key` (`--workers`, `workers`) and what is allowed.
+pub fn check_workers(key: &str, workers: usize) -> Result<usize, String> {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let most = MAX_WORKERS_PER_CORE * cores;
+    if (1..=most).contains(&workers) {
+        Ok(workers)
+    } else {
+        Err(format!(
+            "{key} {workers} is not allowed: 1 to {most} ({MAX_WORKERS_PER_CORE} per core on this machine; default: the number of cores)"
+        ))
+    }
+}
+
 /// Prepares `values` (with their labels) on `workers` threads: parsed, keyed, records read once each.
 pub fn prepare(values: Vec<(Value, String)>, workers: usize) -> Vec<Prepared> {
     let cache = RecordCache::default();

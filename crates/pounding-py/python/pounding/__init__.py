@@ -52,13 +52,43 @@ def _json(scenario: Dict[str, Any], what: str = "scenario") -> str:
         raise InputError(f"{what}: {e}") from None
 
 
+def _fspath(key: str, v: Any) -> str:
+    """A path or a name given as ``key``, as text; anything else is InputError naming the key."""
+    if isinstance(v, (str, os.PathLike)):
+        return os.fspath(v)
+    raise InputError(f"{key} = {_short(v)} is not allowed: a path or a name (str or os.PathLike)")
+
+
+def _short(v: Any) -> str:
+    r = repr(v)
+    return r if len(r) <= 60 else r[:57] + "..."
+
+
+def _flag(key: str, v: Any) -> bool:
+    if isinstance(v, (bool, np.bool_)):
+        return bool(v)
+    raise InputError(f"{key} = {_short(v)} is not allowed: True or False")
+
+
+def _workers(v: Any) -> int:
+    """``workers``: None (every core) or a whole number (its range is the library's to check)."""
+    if v is None:
+        return os.cpu_count() or 1
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
+        raise InputError(f"workers = {_short(v)} is not allowed: a whole number (default: the number of cores)")
+    most = _pounding.max_workers()
+    if not 1 <= v <= most:
+        raise InputError(f"workers = {v} is not allowed: 1 to {most} (16 per core on this machine; default: the number of cores)")
+    return int(v)
+
+
 def load_scenario(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
     """The scenario file at ``path`` (TOML, see docs/scenarios.md) as a dict, ready to change and run.
 
     A relative record ``file`` is made absolute, so the dict runs from any folder. Raises InputError for a
     file that cannot be read or is not valid TOML (the content is validated when it runs).
     """
-    return json.loads(_pounding.load_scenario(os.fspath(path)))
+    return json.loads(_pounding.load_scenario(_fspath("path", path)))
 
 
 def _array(d: Dict[str, Any]) -> np.ndarray:
@@ -165,6 +195,7 @@ def run(scenario: Scenario, histories: bool = True) -> Result:
     With ``histories=False`` only the summary and the impacts are kept (faster, little memory). The GIL is
     released while the analysis runs. Raises InputError with the command line's message for bad input.
     """
+    histories = _flag("histories", histories)
     if isinstance(scenario, (str, os.PathLike)):
         raw = _pounding.run(path=os.fspath(scenario), histories=histories)
     else:
@@ -193,17 +224,19 @@ def sweep(
     (finished runs stay in the store) and raises KeyboardInterrupt.
     """
     texts, labels = _texts(scenarios)
-    n = workers if workers is not None else (os.cpu_count() or 1)
-    if n < 1:
-        raise InputError(f"workers = {n} is not allowed: at least 1 (default: the number of cores)")
+    n = _workers(workers)
     out = _pounding.sweep_runs(
-        texts, labels, n, None if store is None else os.fspath(store), progress
+        texts, labels, n, None if store is None else _fspath("store", store), _flag("progress", progress)
     )
     return [_outcome(ok, text) for _, ok, text in out]
 
 
 def _texts(scenarios: Iterable[Scenario]):
     """JSON texts and labels of scenarios given as dicts or paths."""
+    if isinstance(scenarios, (dict, str, bytes, os.PathLike)):
+        raise InputError(
+            f"scenarios = {_short(scenarios)} is not allowed: a list (or other iterable) of scenarios, dicts or paths"
+        )
     texts, labels = [], []
     for s in scenarios:
         if isinstance(s, (str, os.PathLike)):
@@ -255,7 +288,7 @@ def spectrum(
     p = np.geomspace(0.02, 10.0, 100) if periods is None else np.asarray(list(periods), dtype=np.float64)
     # Whether the source is a built-in record or a file is the library's to say (as for the command line).
     sd, psv, psa = _pounding.spectrum(
-        os.fspath(record),
+        _fspath("record", record),
         float(damping),
         p.tolist(),
         format=format,
@@ -276,7 +309,9 @@ def separation(
     dict. ``scenario`` is a dict or a path; ``records`` (built-in names or files) replace its record, one run
     each, and add the mean, median and 84th percentile over them; ``aligned_factor`` (Eurocode 8: 0.7)
     multiplies the rules where the floors are at the same height."""
-    recs = [os.fspath(r) for r in (records or [])]
+    if isinstance(records, (str, bytes, os.PathLike)):
+        raise InputError(f"records = {_short(records)} is not allowed: a list of records (write [{_short(records)}])")
+    recs = [_fspath("records", r) for r in (records or [])]
     if isinstance(scenario, (str, os.PathLike)):
         text = _pounding.separation(path=os.fspath(scenario), records=recs, aligned_factor=aligned_factor)
     else:
@@ -308,8 +343,8 @@ def ida(
     does (a resumable store, runs.csv, fragility.csv), and returns a dict: ``runs`` and ``fragility`` as
     pandas DataFrames (lists of dicts without pandas) and ``result``, the JSON summary (measure, levels,
     records and their intensities, the fits)."""
-    n = workers if workers is not None else (os.cpu_count() or 1)
-    result = json.loads(_pounding.ida(os.fspath(study), os.fspath(out), n, progress))
+    n = _workers(workers)
+    result = json.loads(_pounding.ida(_fspath("study", study), _fspath("out", out), n, _flag("progress", progress)))
     folder = Path(os.fspath(out))
     try:
         import pandas as pd

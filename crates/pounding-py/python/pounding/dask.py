@@ -10,7 +10,7 @@ import os
 import time
 from typing import Any, Dict, Iterable, List, Optional, Union
 
-from . import InputError, Scenario, _outcome, _pounding, _texts
+from . import InputError, Scenario, _fspath, _outcome, _pounding, _texts
 
 
 def _run_chunk(texts: List[str], labels: List[str]) -> List[tuple]:
@@ -39,9 +39,12 @@ def sweep(
     """
     from dask.distributed import as_completed
 
+    # Every argument checked before the store is touched.
+    if chunk is not None and (isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1):
+        raise InputError(f"chunk = {chunk!r} is not allowed: a whole number of runs per task, at least 1")
     texts, labels = _texts(scenarios)
     keys, study = _pounding.keys(texts)
-    st = None if store is None else _pounding.Store(os.fspath(store), study, len(texts))
+    st = None if store is None else _pounding.Store(_fspath("store", store), study, len(texts))
     outcomes: Dict[str, tuple] = {}
     if st is not None:
         for key, ok, text in st.finished():
@@ -55,8 +58,6 @@ def sweep(
     if todo:
         threads = sum(client.nthreads().values()) or 1
         size = chunk if chunk is not None else max(1, min(1000, len(todo) // (4 * threads) or 1))
-        if size < 1:
-            raise InputError(f"chunk = {size} is not allowed: at least 1 run per task")
         chunks = [todo[i : i + size] for i in range(0, len(todo), size)]
         futures = [
             client.submit(_run_chunk, [texts[i] for i in c], [labels[i] for i in c], pure=False)
