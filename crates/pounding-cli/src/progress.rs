@@ -17,6 +17,21 @@ pub struct Bar {
     pub damaged: usize,
 }
 
+impl Bar {
+    /// Clears the bar and says how many stored runs were found damaged and run again.
+    pub fn finish(&self) {
+        if let Some(b) = &self.bar {
+            b.finish_and_clear();
+        }
+        if self.damaged > 0 {
+            eprintln!(
+                "{} stored in study.sqlite did not read back as stored (damaged) and ran again",
+                pounding::words::count(self.damaged, "run", None)
+            );
+        }
+    }
+}
+
 /// A sweep's progress state and the callback that feeds it.
 pub fn progress(
     quiet: bool,

@@ -1306,6 +1306,68 @@ fn a_sweep_killed_with_sigkill_resumes_with_every_run_once() {
 }
 
 #[test]
+fn a_resumed_sweep_runs_damaged_rows_again_and_writes_what_an_uninterrupted_one_writes() {
+    let dir = tmp("sweep-damaged");
+    let file = study(
+        &dir,
+        "study.toml",
+        "contact.0.gap = [0.0, 0.005, 0.01, 0.015, 0.02, 0.025]\n\"contact.0.model\" = [\"papi\", \"hertzdamp\"]",
+    );
+    let out = dir.join("out");
+    let args = [
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ];
+    let o = pounding(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let clean = std::fs::read(out.join("runs.csv")).unwrap();
+    let db = out.join("study.sqlite");
+    let rows = store_rows(&db);
+    let conn = rusqlite::Connection::open(&db).unwrap();
+    let set = |sql: &str, key: &str| {
+        conn.execute(sql, rusqlite::params![key]).unwrap();
+    };
+    // Run 0: one digit of a number changed (still a summary); run 2: another run's summary; run 4: NULL;
+    // run 6: an integer; run 8: `{}`; run 1: an error row without its message.
+    let first = rows[0].3.clone().unwrap();
+    let changed = first.replacen("0.", "0.9", 1);
+    assert_ne!(changed, first);
+    conn.execute(
+        "UPDATE runs SET summary = ?2 WHERE key = ?1",
+        rusqlite::params![rows[0].0, changed],
+    )
+    .unwrap();
+    conn.execute(
+        "UPDATE runs SET summary = ?2 WHERE key = ?1",
+        rusqlite::params![rows[2].0, first],
+    )
+    .unwrap();
+    set("UPDATE runs SET summary = NULL WHERE key = ?1", &rows[4].0);
+    set("UPDATE runs SET summary = 7 WHERE key = ?1", &rows[6].0);
+    set("UPDATE runs SET summary = '{}' WHERE key = ?1", &rows[8].0);
+    set("UPDATE runs SET error = NULL WHERE key = ?1", &rows[1].0);
+    drop(conn);
+    std::fs::remove_file(out.join("runs.csv")).unwrap();
+    let o = pounding(&args);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    assert!(
+        err.contains("6 runs stored in study.sqlite did not read back as stored"),
+        "{err}"
+    );
+    assert!(String::from_utf8_lossy(&o.stdout).contains("(6 already in the store)"));
+    assert_eq!(std::fs::read(out.join("runs.csv")).unwrap(), clean);
+    // Stored anew, as they were before the damage.
+    let again = store_rows(&db);
+    for (a, b) in again.iter().zip(&rows) {
+        assert_eq!((&a.0, &a.2, &a.3), (&b.0, &b.2, &b.3));
+    }
+}
+
+#[test]
 fn bad_studies_get_one_line_exit_2_and_leave_the_store_untouched() {
     let dir = tmp("bad-studies");
     let cases = [

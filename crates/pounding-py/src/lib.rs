@@ -381,8 +381,8 @@ impl PyStore {
         })
     }
 
-    /// Every stored run: `(key, ok, summary JSON or error message)`. A stored summary that does not read
-    /// back as one (damaged, or of another version) is left out, so that the run is run again and replaced,
+    /// Every stored run: `(key, ok, summary JSON or error message)`. A stored row that is damaged (its digest
+    /// does not match) or whose summary does not read back as one is left out, so that the run is run again and replaced,
     /// as a local sweep does.
     fn finished(&self) -> PyResult<Vec<(String, bool, String)>> {
         Ok(self
@@ -390,9 +390,12 @@ impl PyStore {
             .all()
             .map_err(store_err)?
             .into_iter()
-            .filter_map(|(k, o)| match o {
-                Ok(s) => RunSummary::from_json(&s).is_ok().then_some((k, true, s)),
-                Err(e) => Some((k, false, e)),
+            .filter_map(|row| {
+                let key = row.key.clone();
+                let text = match &row.outcome {
+                    Ok(s) | Err(s) => s.clone(),
+                };
+                sweep::trusted(row).map(|o| (key, o.is_ok(), text))
             })
             .collect())
     }

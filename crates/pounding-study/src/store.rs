@@ -3,19 +3,27 @@
 //!
 //! Tables:
 //! - `runs(key TEXT PRIMARY KEY, idx INTEGER, status TEXT, summary TEXT, error TEXT, seconds REAL,
-//!   finished TEXT)`: `key` the run's hash ([`crate::key`]), `idx` its position in the study (from 0),
-//!   `status` `ok` or `error`, `summary` the run's summary as JSON text (`summary.json`'s content; NULL for an
-//!   error), `error` the one-line message (NULL if ok), `seconds` the run's wall time (s), `finished` the UTC
-//!   time it was committed.
+//!   finished TEXT, digest TEXT)`: `key` the run's hash ([`crate::key`]), `idx` its position in the study
+//!   (from 0), `status` `ok` or `error`, `summary` the run's summary as JSON text (`summary.json`'s content;
+//!   NULL for an error), `error` the one-line message (NULL if ok), `seconds` the run's wall time (s),
+//!   `finished` the UTC time it was committed, `digest` the FNV-1a-128 hash of key, status and summary or
+//!   message ([`digest`]): a row whose digest does not match (a flipped bit, an edited or swapped summary) is
+//!   not trusted, and its run is run again.
 //! - `study(name TEXT PRIMARY KEY, value TEXT)`: `id` (the hash of the study's run keys, in order), `runs`
 //!   (their number), `format` (this layout's version), `created`.
+//!
+//! A store of layout `pounding-study-1` (without digests) is brought to this layout when opened: its rows get
+//! their digests, in the transaction that changes its format.
 
 use rusqlite::{params, Connection, OpenFlags, OptionalExtension};
 use std::collections::HashSet;
 use std::path::Path;
 
 /// Version of the store's layout.
-pub const FORMAT: &str = "pounding-study-1";
+pub const FORMAT: &str = "pounding-study-2";
+
+/// The layout before digests, read and brought to [`FORMAT`] when opened.
+const FORMAT_1: &str = "pounding-study-1";
 
 /// One finished run.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,10 +41,38 @@ pub struct Finished {
 /// A run's outcome as stored: the summary's JSON text, or the one-line error message.
 pub type Outcome = Result<String, String>;
 
+/// One stored row as read back.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stored {
+    /// The run's key.
+    pub key: String,
+    /// What the row says the run gave.
+    pub outcome: Outcome,
+    /// Whether the row is what was committed: a known status, its text present, its digest matching. A row
+    /// that is not is not to be trusted.
+    pub intact: bool,
+}
+
+/// The digest of a stored run: FNV-1a-128 over its key, status and text (the summary or the message), in
+/// hexadecimal. It ties a summary to its run, so that a damaged or moved summary is found.
+pub fn digest(key: &str, outcome: &Outcome) -> String {
+    let (status, text) = match outcome {
+        Ok(s) => ("ok", s),
+        Err(e) => ("error", e),
+    };
+    let mut bytes = Vec::with_capacity(key.len() + text.len() + 8);
+    for part in [key, status, text] {
+        bytes.extend_from_slice(part.as_bytes());
+        bytes.push(0);
+    }
+    format!("{:032x}", crate::key::fnv1a_128(&bytes))
+}
+
 /// An open study store, held by this process alone (an OS lock on the file `<store>.lock` beside it, released
 /// when the store is dropped or the process ends, however it ends).
 pub struct Store {
     conn: Connection,
+    path: std::path::PathBuf,
     _lock: std::fs::File,
 }
 
@@ -58,7 +94,34 @@ impl std::fmt::Display for StoreError {
 }
 
 fn io(path: &Path) -> impl Fn(rusqlite::Error) -> StoreError + '_ {
-    move |e| StoreError::Io(format!("study store {}: {e}", path.display()))
+    move |e| {
+        let why = os_reason(path).unwrap_or_else(|| e.to_string());
+        StoreError::Io(format!("study store {}: {why}", path.display()))
+    }
+}
+
+/// The operating system's reason why the store at `path` (or a file beside it) cannot be written, if it
+/// gives one: SQLite's own messages ("unable to open database file") do not say.
+fn os_reason(path: &Path) -> Option<String> {
+    let probe = |p: &Path| {
+        std::fs::OpenOptions::new()
+            .append(true)
+            .open(p)
+            .err()
+            .filter(|e| e.kind() != std::io::ErrorKind::NotFound)
+    };
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
+    probe(path).map(|e| format!("{e}")).or_else(|| {
+        // A file beside it cannot be created: the folder's reason.
+        let test = dir?.join(format!(".pounding-probe-{}", std::process::id()));
+        match std::fs::File::create(&test) {
+            Ok(_) => {
+                let _ = std::fs::remove_file(&test);
+                None
+            }
+            Err(e) => Some(format!("{} cannot be written: {e}", dir?.display())),
+        }
+    })
 }
 
 /// Whether SQLite's error is about the file's content (not a database, corrupt), rather than about reaching
@@ -72,15 +135,44 @@ fn is_content(e: &rusqlite::Error) -> bool {
 
 /// The lock file beside the store at `path`.
 fn lock_path(path: &Path) -> std::path::PathBuf {
-    let mut name = path.file_name().unwrap_or_default().to_os_string();
-    name.push(".lock");
-    path.with_file_name(name)
+    companions(path).swap_remove(0)
+}
+
+/// The files SQLite and the lock may create beside the store at `path`.
+fn companions(path: &Path) -> Vec<std::path::PathBuf> {
+    [".lock", "-wal", "-shm", "-journal"]
+        .iter()
+        .map(|suffix| {
+            let mut name = path.file_name().unwrap_or_default().to_os_string();
+            name.push(suffix);
+            path.with_file_name(name)
+        })
+        .collect()
+}
+
+/// Refuses a store, or a file beside it, that exists and is not a regular file: SQLite and the lock would
+/// follow a symbolic link and write their files beside its target, or write into a device.
+fn regular_files(path: &Path) -> Result<(), StoreError> {
+    for p in std::iter::once(path.to_path_buf()).chain(companions(path)) {
+        let what = match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => "a symbolic link",
+            Ok(m) if !m.is_file() => "not a regular file",
+            _ => continue,
+        };
+        return Err(StoreError::Mismatch(format!(
+            "study store {} cannot be used: {} is {what}; allowed: regular files, or a new --out",
+            path.display(),
+            p.display()
+        )));
+    }
+    Ok(())
 }
 
 impl Store {
     /// Checks, without writing anything, that the file at `path` is absent or a store of the study `id`
     /// with `runs` runs.
     pub fn check(path: &Path, id: &str, runs: usize) -> Result<(), StoreError> {
+        regular_files(path)?;
         if !path.exists() {
             return Ok(());
         }
@@ -94,7 +186,10 @@ impl Store {
             if is_content(&e) {
                 mismatch(format!("is not an SQLite database ({e})"))
             } else {
-                StoreError::Io(format!("study store {shown} cannot be read: {e}"))
+                StoreError::Io(format!(
+                    "study store {shown} cannot be opened: {}",
+                    os_reason(path).unwrap_or_else(|| e.to_string())
+                ))
             }
         };
         let conn = Connection::open_with_flags(path, OpenFlags::SQLITE_OPEN_READ_ONLY)
@@ -129,7 +224,7 @@ impl Store {
         if format.is_none() && stored.is_none() && matches!(stored_runs, Ok(0)) {
             return Ok(());
         }
-        if format.as_deref() != Some(FORMAT) {
+        if !matches!(format.as_deref(), Some(FORMAT | FORMAT_1)) {
             return Err(mismatch(format!(
                 "has layout {:?}, not {FORMAT:?}",
                 format.unwrap_or_default()
@@ -149,6 +244,7 @@ impl Store {
     /// holding it is refused at once), checks it ([`Store::check`]), and creates its tables and study rows in
     /// one transaction, so that a kill leaves no store without its study.
     pub fn open(path: &Path, id: &str, runs: usize) -> Result<Store, StoreError> {
+        regular_files(path)?;
         let lp = lock_path(path);
         let lock = std::fs::OpenOptions::new()
             .create(true)
@@ -188,44 +284,49 @@ impl Store {
                  summary TEXT,
                  error TEXT,
                  seconds REAL NOT NULL,
-                 finished TEXT NOT NULL
+                 finished TEXT NOT NULL,
+                 digest TEXT
              );",
         )
         .map_err(io(path))?;
+        migrate(&tx).map_err(io(path))?;
         tx.execute(
             "INSERT OR IGNORE INTO study (name, value) VALUES ('format', ?1), ('id', ?2), ('runs', ?3), ('created', datetime('now'))",
             params![FORMAT, id, runs.to_string()],
         )
         .map_err(io(path))?;
         tx.commit().map_err(io(path))?;
-        Ok(Store { conn, _lock: lock })
+        Ok(Store {
+            conn,
+            path: path.to_path_buf(),
+            _lock: lock,
+        })
     }
 
     /// The keys of the runs already finished.
     pub fn finished_keys(&self) -> Result<HashSet<String>, StoreError> {
-        let mut st = self
-            .conn
-            .prepare("SELECT key FROM runs")
-            .map_err(|e| StoreError::Io(e.to_string()))?;
+        let err = io(&self.path);
+        let mut st = self.conn.prepare("SELECT key FROM runs").map_err(&err)?;
         let keys = st
             .query_map([], |r| r.get::<_, String>(0))
             .and_then(|rows| rows.collect::<Result<HashSet<_>, _>>())
-            .map_err(|e| StoreError::Io(e.to_string()));
+            .map_err(&err);
         keys
     }
 
     /// Commits `runs` in one transaction (a run stored again, after its stored summary was found damaged,
     /// replaces it).
     pub fn commit(&mut self, runs: &[Finished]) -> Result<(), StoreError> {
-        let err = |e: rusqlite::Error| StoreError::Io(format!("study store: {e}"));
-        let tx = self.conn.transaction().map_err(err)?;
+        let path = self.path.clone();
+        let err = io(&path);
+        let tx = self.conn.transaction().map_err(&err)?;
         {
             let mut st = tx
                 .prepare_cached(
-                    "INSERT OR REPLACE INTO runs (key, idx, status, summary, error, seconds, finished)
-                     VALUES (?1, ?2, ?3, ?4, ?5, ?6, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))",
+                    "INSERT OR REPLACE INTO runs (key, idx, status, summary, error, seconds, finished, digest)
+                     VALUES (?1, ?2, ?3, ?4, ?5, ?6, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?7)",
                 )
-                .map_err(err)?;
+                .map_err(&err)?;
             for r in runs {
                 let (status, summary, error) = match &r.outcome {
                     Ok(s) => ("ok", Some(s.as_str()), None),
@@ -237,36 +338,96 @@ impl Store {
                     status,
                     summary,
                     error,
-                    r.seconds
+                    r.seconds,
+                    digest(&r.key, &r.outcome)
                 ])
-                .map_err(err)?;
+                .map_err(&err)?;
             }
         }
-        tx.commit().map_err(err)
+        tx.commit().map_err(&err)
     }
 
-    /// Every stored run: `(key, outcome)` with the summary's JSON text or the error message.
-    pub fn all(&self) -> Result<Vec<(String, Outcome)>, StoreError> {
-        let err = |e: rusqlite::Error| StoreError::Io(format!("study store: {e}"));
+    /// Every stored run, in study order, each with whether it is intact ([`Stored::intact`]).
+    pub fn all(&self) -> Result<Vec<Stored>, StoreError> {
+        let err = io(&self.path);
         let mut st = self
             .conn
-            .prepare("SELECT key, status, summary, error FROM runs ORDER BY idx")
-            .map_err(err)?;
+            .prepare("SELECT key, status, summary, error, digest FROM runs ORDER BY idx")
+            .map_err(&err)?;
         let rows = st
             .query_map([], |r| {
-                let key: String = r.get(0)?;
-                let status: String = r.get(1)?;
-                let outcome = if status == "ok" {
-                    Ok(r.get::<_, Option<String>>(2)?.unwrap_or_default())
-                } else {
-                    Err(r.get::<_, Option<String>>(3)?.unwrap_or_default())
+                // Read as values, not as typed columns: a damaged row (a number where text belongs) is a row
+                // to run again, not a failure of the store.
+                let text = |i: usize| -> rusqlite::Result<Option<String>> {
+                    Ok(match r.get_ref(i)? {
+                        rusqlite::types::ValueRef::Text(t) => {
+                            Some(String::from_utf8_lossy(t).into_owned())
+                        }
+                        _ => None,
+                    })
                 };
-                Ok((key, outcome))
+                let key = text(0)?.unwrap_or_default();
+                let (outcome, present) = match text(1)?.as_deref() {
+                    Some("ok") => text(2)?.map_or((Ok(String::new()), false), |s| (Ok(s), true)),
+                    Some("error") => {
+                        text(3)?.map_or((Err(String::new()), false), |e| (Err(e), true))
+                    }
+                    _ => (Err(String::new()), false),
+                };
+                let intact =
+                    present && text(4)?.as_deref() == Some(digest(&key, &outcome).as_str());
+                Ok(Stored {
+                    key,
+                    outcome,
+                    intact,
+                })
             })
             .and_then(|rows| rows.collect::<Result<Vec<_>, _>>())
-            .map_err(err);
+            .map_err(&err);
         rows
     }
+}
+
+/// Brings a store of layout [`FORMAT_1`] to [`FORMAT`] inside the opening transaction `tx`: a `digest`
+/// column, each row's digest from what it holds (its summaries are checked when read, as before), the new
+/// format. A store of the current layout is left as it is.
+fn migrate(tx: &rusqlite::Transaction<'_>) -> rusqlite::Result<()> {
+    if tx.prepare("SELECT digest FROM runs LIMIT 0").is_err() {
+        tx.execute_batch("ALTER TABLE runs ADD COLUMN digest TEXT")?;
+    }
+    let format: Option<String> = tx
+        .query_row("SELECT value FROM study WHERE name = 'format'", [], |r| {
+            r.get(0)
+        })
+        .optional()?;
+    if format.as_deref() != Some(FORMAT_1) {
+        return Ok(());
+    }
+    let rows: Vec<(String, Outcome)> = {
+        let mut st = tx.prepare(
+            "SELECT key, status, summary, error FROM runs WHERE typeof(key) = 'text' AND (
+                 (status = 'ok' AND typeof(summary) = 'text') OR (status = 'error' AND typeof(error) = 'text'))",
+        )?;
+        let rows = st.query_map([], |r| {
+            let key: String = r.get(0)?;
+            let outcome = if r.get::<_, String>(1)? == "ok" {
+                Ok(r.get(2)?)
+            } else {
+                Err(r.get(3)?)
+            };
+            Ok((key, outcome))
+        })?;
+        rows.collect::<Result<_, _>>()?
+    };
+    let mut st = tx.prepare("UPDATE runs SET digest = ?2 WHERE key = ?1")?;
+    for (key, outcome) in &rows {
+        st.execute(params![key, digest(key, outcome)])?;
+    }
+    tx.execute(
+        "UPDATE study SET value = ?1 WHERE name = 'format'",
+        params![FORMAT],
+    )?;
+    Ok(())
 }
 
 #[cfg(test)]
@@ -333,9 +494,119 @@ mod tests {
         let s = Store::open(&path, "a", 1).unwrap();
         assert_eq!(
             s.all().unwrap(),
-            vec![("k".to_string(), Err("failed".to_string()))]
+            vec![Stored {
+                key: "k".into(),
+                outcome: Err("failed".into()),
+                intact: true
+            }]
         );
         drop(s);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    fn finished(key: &str, index: usize, outcome: Outcome) -> Finished {
+        Finished {
+            key: key.into(),
+            index,
+            outcome,
+            seconds: 0.5,
+        }
+    }
+
+    #[test]
+    fn a_row_changed_after_its_commit_is_not_intact() {
+        let dir = scratch("digest");
+        let path = dir.join("study.sqlite");
+        let mut s = Store::open(&path, "a", 4).unwrap();
+        s.commit(&[
+            finished("k0", 0, Ok("{\"x\":1.5}".into())),
+            finished("k1", 1, Ok("{\"x\":2.5}".into())),
+            finished("k2", 2, Err("failed".into())),
+            finished("k3", 3, Ok("{\"x\":3.5}".into())),
+        ])
+        .unwrap();
+        drop(s);
+        let conn = Connection::open(&path).unwrap();
+        // A digit changed (still valid JSON), two summaries swapped between runs, a message nulled; k3 as it was.
+        conn.execute_batch(
+            "UPDATE runs SET summary = '{\"x\":1.6}' WHERE key = 'k0';
+             UPDATE runs SET summary = '{\"x\":1.5}' WHERE key = 'k1';
+             UPDATE runs SET error = NULL WHERE key = 'k2';",
+        )
+        .unwrap();
+        drop(conn);
+        let s = Store::open(&path, "a", 4).unwrap();
+        let intact: Vec<(String, bool)> = s
+            .all()
+            .unwrap()
+            .into_iter()
+            .map(|r| (r.key, r.intact))
+            .collect();
+        assert_eq!(
+            intact,
+            [("k0", false), ("k1", false), ("k2", false), ("k3", true)]
+                .map(|(k, i)| (k.to_string(), i))
+        );
+        drop(s);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_store_of_the_first_layout_gets_its_digests_when_opened() {
+        let dir = scratch("layout1");
+        let path = dir.join("study.sqlite");
+        let conn = Connection::open(&path).unwrap();
+        conn.execute_batch(
+            "CREATE TABLE study (name TEXT PRIMARY KEY, value TEXT NOT NULL);
+             CREATE TABLE runs (key TEXT PRIMARY KEY, idx INTEGER NOT NULL, status TEXT NOT NULL,
+                 summary TEXT, error TEXT, seconds REAL NOT NULL, finished TEXT NOT NULL);
+             INSERT INTO study VALUES ('format', 'pounding-study-1'), ('id', 'a'), ('runs', '2');
+             INSERT INTO runs VALUES ('k0', 0, 'ok', '{}', NULL, 0.1, 'then'),
+                                     ('k1', 1, 'ok', NULL, NULL, 0.1, 'then');",
+        )
+        .unwrap();
+        drop(conn);
+        assert_eq!(Store::check(&path, "a", 2), Ok(()));
+        let s = Store::open(&path, "a", 2).unwrap();
+        let rows = s.all().unwrap();
+        assert_eq!(rows.len(), 2);
+        assert!(rows[0].intact && !rows[1].intact, "{rows:?}");
+        drop(s);
+        let conn = Connection::open(&path).unwrap();
+        let format: String = conn
+            .query_row("SELECT value FROM study WHERE name = 'format'", [], |r| {
+                r.get(0)
+            })
+            .unwrap();
+        assert_eq!(format, FORMAT);
+        drop(conn);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_store_that_is_a_link_or_beside_one_is_refused() {
+        let dir = scratch("link");
+        let target = dir.join("elsewhere.sqlite");
+        drop(Store::open(&target, "a", 1).unwrap());
+        let path = dir.join("study.sqlite");
+        std::os::unix::fs::symlink(&target, &path).unwrap();
+        for result in [
+            Store::check(&path, "a", 1).err(),
+            Store::open(&path, "a", 1).err(),
+        ] {
+            assert!(
+                matches!(&result, Some(StoreError::Mismatch(m)) if m.contains("is a symbolic link")),
+                "{result:?}"
+            );
+        }
+        std::fs::remove_file(&path).unwrap();
+        // A lock or journal beside the store that leads elsewhere.
+        std::os::unix::fs::symlink("/dev/null", dir.join("study.sqlite-wal")).unwrap();
+        assert!(
+            matches!(Store::open(&path, "a", 1), Err(StoreError::Mismatch(m)) if m.contains("study.sqlite-wal is a symbolic link"))
+        );
+        assert!(!path.exists());
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -233,9 +233,21 @@ impl std::fmt::Display for SweepError {
     }
 }
 
+/// What a stored row says a run gave, if it can be trusted: intact ([`crate::store::Stored::intact`]) and,
+/// if ok, a summary that reads back as one.
+pub fn trusted(row: crate::store::Stored) -> Option<Result<RunSummary, String>> {
+    if !row.intact {
+        return None;
+    }
+    match row.outcome {
+        Ok(text) => RunSummary::from_json(&text).ok().map(Ok),
+        Err(e) => Some(Err(e)),
+    }
+}
+
 /// Runs every prepared scenario not already in `store`, on `workers` threads, and returns every run's outcome
 /// in input order (its summary or the error message; runs of equal key share one outcome). A stored summary
-/// that does not read back as one is not trusted: that run is run again and stored anew. `progress` is
+/// or row that is not intact or does not read back as one is not trusted: that run is run again and stored anew. `progress` is
 /// called on this thread at least every 0.2 s; returning `Break` cancels the sweep.
 pub fn run(
     prepared: &[Prepared],
@@ -250,18 +262,15 @@ pub fn run(
         // The study's own key strings (borrowed from `prepared`), found by value.
         let keys: std::collections::HashSet<&str> =
             prepared.iter().map(|p| p.key.as_str()).collect();
-        for (k, o) in st.all().map_err(SweepError::Store)? {
-            let Some(key) = keys.get(k.as_str()) else {
+        for row in st.all().map_err(SweepError::Store)? {
+            let Some(key) = keys.get(row.key.as_str()) else {
                 continue;
             };
-            match o.map(|text| RunSummary::from_json(&text)) {
-                Ok(Ok(summary)) => {
-                    outcomes.insert(*key, Ok(summary));
+            match trusted(row) {
+                Some(outcome) => {
+                    outcomes.insert(*key, outcome);
                 }
-                Ok(Err(_)) => damaged += 1,
-                Err(e) => {
-                    outcomes.insert(*key, Err(e));
-                }
+                None => damaged += 1,
             }
         }
     }

@@ -19,9 +19,7 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
         IdaError::Io(m) => CliError::Io(m),
     })?;
     drop(report);
-    if let Some(b) = &bar.borrow().bar {
-        b.finish_and_clear();
-    }
+    bar.borrow().finish();
     let v = &out.json;
     println!(
         "{} records x {} levels of {}: {} runs, {} failed",

@@ -85,10 +85,8 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     )
     .map_err(|e| CliError::Io(e.to_string()))?;
     drop(report);
-    let (skipped, damaged) = (bar.borrow().skipped, bar.borrow().damaged);
-    if let Some(b) = &bar.borrow().bar {
-        b.finish_and_clear();
-    }
+    bar.borrow().finish();
+    let skipped = bar.borrow().skipped;
     let runs_csv = a.out.join("runs.csv");
     let text = runs_csv_bytes(&study, &prepared, &outcomes)?;
     write_atomic(&runs_csv, &text)
@@ -105,12 +103,6 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         eprintln!(
             "... and {} more failed runs (see runs.csv)",
             failed.len() - 5
-        );
-    }
-    if damaged > 0 {
-        eprintln!(
-            "{} stored in study.sqlite did not read back as a summary and ran again",
-            pounding::words::count(damaged, "run", None)
         );
     }
     println!(
