@@ -586,6 +586,17 @@ fn bad_scenarios_get_one_line_with_file_and_line_exit_2_and_no_output() {
             "model = \"papy\"",
         ),
         (base.replace("e = 0.65 ", "e = 1.5 "), "e = 1.5", "e = 1.5"),
+        // A list where a table belongs is refused, not read by position as (duration, output_dt).
+        (
+            format!(
+                "analysis = [1.0, 0.01]\n{}",
+                base.replace("[analysis]\noutput_dt", "[xx]\noutput_dt")
+                    .replace("[xx]\n", "")
+                    .replace("output_dt = 0.005", "")
+            ),
+            "analysis is a list; allowed here: a table",
+            "analysis = [1.0, 0.01]",
+        ),
         (
             base.replace(
                 "damping_ratio = 0.05\n\n[[building]]",

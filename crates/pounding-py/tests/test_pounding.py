@@ -592,6 +592,9 @@ def test_ida_fits_agree_with_scipy_on_the_same_data(tmp_path):
 def test_bad_arguments_raise_input_error_naming_them(base, tmp_path):
     # Each call with an argument of the wrong type or range: InputError naming the argument, nothing written.
     store = tmp_path / "study.sqlite"
+    deep = [1.0]
+    for _ in range(100_000):
+        deep = [deep]
     calls = [
         (lambda: pounding.spectrum(None), "record = None"),
         (lambda: pounding.load_scenario(None), "path = None"),
@@ -604,6 +607,10 @@ def test_bad_arguments_raise_input_error_naming_them(base, tmp_path):
         (lambda: pounding.synthetic(-1), "seed = -1"),
         (lambda: pounding.synthetic(1, filter=5), "filter"),
         (lambda: pounding.ida(tmp_path / "ida.toml", tmp_path / "out", workers=True), "workers = True"),
+        # A list where a table belongs: refused, not read by position; nested past Python's recursion limit.
+        (lambda: pounding.run({**base, "analysis": [1.0, 0.01]}), "analysis is a list"),
+        (lambda: pounding.run({**base, "analysis": deep}), "nested too deeply"),
+        (lambda: pounding.sweep([{**base, "ground_motion": deep}], progress=False), "nested too deeply"),
     ]
     for call, needle in calls:
         with pytest.raises(pounding.InputError) as e:

@@ -241,6 +241,14 @@ pub fn build(
 
 /// `value` as a [`ScenarioDoc`]; a shape error (an unknown key, a string for a number) names its path.
 pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)> {
+    if let Some(key) = crate::schema::lists_where_tables_belong(value) {
+        let msg = if key.is_empty() {
+            "the scenario is a list; allowed: a table of named keys (docs/scenarios.md)".to_string()
+        } else {
+            format!("{key} is a list; allowed here: a table of named keys or a single value (docs/scenarios.md)")
+        };
+        return Err((Some(key), msg));
+    }
     parse_value(value)
 }
 

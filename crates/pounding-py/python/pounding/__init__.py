@@ -50,6 +50,8 @@ def _json(scenario: Dict[str, Any], what: str = "scenario") -> str:
         return json.dumps(scenario, allow_nan=False, default=_plain)
     except (TypeError, ValueError) as e:
         raise InputError(f"{what}: {e}") from None
+    except RecursionError:
+        raise InputError(f"{what}: lists or dicts nested too deeply; allowed: the tables of docs/scenarios.md") from None
 
 
 def _fspath(key: str, v: Any) -> str:
