@@ -25,7 +25,7 @@ impl Bar {
         }
         if self.damaged > 0 {
             eprintln!(
-                "{} stored in study.sqlite did not read back as stored (damaged) and ran again",
+                "{} stored in study.sqlite did not read back as stored (damaged, or of an older version) and ran again",
                 pounding::words::count(self.damaged, "run", None)
             );
         }

@@ -1634,6 +1634,14 @@ fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
             "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nmeasure = 5\nbuilding = \"right\"\nlevels = [1.0]\n",
             "measure = 5 is not allowed: one of \"sa\", \"pga\"",
         ),
+        // The run limit of a sweep holds for an IDA, checked before any record is read.
+        (
+            &format!(
+                "records = [\"synthetic-1..4000\"]\nlimit_states = [\"pounding\"]\n[intensity]\nbuilding = \"right\"\nlevels = [{}]\n",
+                (1..=2600).map(|l| format!("{}.0", l)).collect::<Vec<_>>().join(", ")
+            ),
+            "4000 records x 2600 levels make 10400000 runs; allowed: at most 1e7",
+        ),
     ];
     for (i, (text, needle)) in cases.iter().enumerate() {
         let file = dir.join(format!("bad{i}.toml"));

@@ -327,19 +327,29 @@ fn sweep_runs(
     progress: bool,
 ) -> PyResult<Vec<(String, bool, String)>> {
     let workers = sweep::check_workers("workers =", workers).map_err(input_err)?;
-    let prepared = prepare(py, scenarios, labels, workers);
+    let values: Vec<(Value, String)> = scenarios
+        .iter()
+        .zip(labels)
+        .map(|(s, l)| (serde_json::from_str(s).unwrap_or(Value::Null), l))
+        .collect();
     let mut st = match store {
-        Some(path) => Some(
-            Store::open(Path::new(path), &sweep::study_id(&prepared), prepared.len())
-                .map_err(store_err)?,
-        ),
+        Some(path) => {
+            // A list of scenarios is known by its runs' keys.
+            let prepared = py.allow_threads(|| sweep::prepare(values.clone(), workers));
+            let id = sweep::study_id(&prepared);
+            Some(
+                Store::open(Path::new(path), &id, values.len(), &|| id.clone())
+                    .map_err(store_err)?,
+            )
+        }
         None => None,
     };
     let mut interrupted: Option<PyErr> = None;
-    let outcomes = py.allow_threads(|| {
+    let swept = py.allow_threads(|| {
         let mut report = reporter(progress, &mut interrupted);
         let r = sweep::run(
-            &prepared,
+            values.len(),
+            &|i| values[i].clone(),
             workers,
             &RunOptions::summary_only(),
             st.as_mut(),
@@ -353,13 +363,14 @@ fn sweep_runs(
     if let Some(e) = interrupted {
         return Err(e);
     }
-    let outcomes = outcomes.map_err(|e| PyOSError::new_err(e.to_string()))?;
-    prepared
-        .iter()
-        .zip(outcomes)
-        .map(|(p, o)| match o {
-            Ok(s) => Ok((p.key.clone(), true, json_text(&s)?)),
-            Err(e) => Ok((p.key.clone(), false, e)),
+    let swept = swept.map_err(|e| PyOSError::new_err(e.to_string()))?;
+    (0..values.len())
+        .map(|i| {
+            let o = swept.outcome(i, st.as_ref()).map_err(store_err)?;
+            Ok(match o {
+                Ok(text) => (swept.key(i), true, text),
+                Err(e) => (swept.key(i), false, e),
+            })
         })
         .collect()
 }
@@ -377,7 +388,7 @@ impl PyStore {
     #[new]
     fn new(path: &str, id: &str, runs: usize) -> PyResult<Self> {
         Ok(PyStore {
-            store: Store::open(Path::new(path), id, runs).map_err(store_err)?,
+            store: Store::open(Path::new(path), id, runs, &|| id.to_string()).map_err(store_err)?,
         })
     }
 

@@ -370,19 +370,14 @@ impl Ida {
             .collect()
     }
 
-    /// The scenarios, record by record and level by level, with `(record index, level index, scale)`.
-    pub fn scenarios(&self, ims: &[f64]) -> Vec<((usize, usize, f64), Value)> {
-        let mut out = Vec::new();
-        for (i, r) in self.records.iter().enumerate() {
-            for (j, level) in self.levels.iter().enumerate() {
-                let mut v = self.base.clone();
-                set_record(&mut v, r);
-                let scale = level / ims[i];
-                v["ground_motion"]["scale"] = json!(scale);
-                out.push(((i, j, scale), v));
-            }
-        }
-        out
+    /// The run of record `i` at level `j` (the records' intensities at scale 1 are `ims`): its scale and
+    /// scenario.
+    pub fn scenario(&self, i: usize, j: usize, ims: &[f64]) -> (f64, Value) {
+        let mut v = self.base.clone();
+        set_record(&mut v, &self.records[i]);
+        let scale = self.levels[j] / ims[i];
+        v["ground_motion"]["scale"] = json!(scale);
+        (scale, v)
     }
 
     /// The unit of the intensity measure.
@@ -397,18 +392,24 @@ impl Ida {
         }
     }
 
-    /// Fits every limit state from the runs' summaries (`None` for a failed run), laid out record by record,
-    /// level by level.
-    pub fn fit(&self, summaries: &[Option<RunSummary>]) -> Vec<Fit> {
+    /// Each limit state's EDP of a run's summary, in [`Ida::limit_states`] order.
+    pub fn edps(&self, summary: &RunSummary) -> Vec<f64> {
+        self.limit_states
+            .iter()
+            .map(|ls| ls.edp.value(summary))
+            .collect()
+    }
+
+    /// Fits every limit state from the runs' EDPs ([`Ida::edps`]; `None` for a failed run), laid out record
+    /// by record, level by level.
+    pub fn fit(&self, edps: &[Option<Vec<f64>>]) -> Vec<Fit> {
         let nl = self.levels.len();
         self.limit_states
             .iter()
-            .map(|ls| {
-                let exceeded = |i: usize, j: usize| {
-                    summaries[i * nl + j]
-                        .as_ref()
-                        .map(|s| ls.edp.value(s) > ls.threshold)
-                };
+            .enumerate()
+            .map(|(k, ls)| {
+                let exceeded =
+                    |i: usize, j: usize| edps[i * nl + j].as_ref().map(|e| e[k] > ls.threshold);
                 let counts: Vec<(usize, usize)> = (0..nl)
                     .map(|j| {
                         let runs: Vec<bool> = (0..self.records.len())
@@ -560,8 +561,8 @@ pub struct IdaOutput {
     pub fragility_csv: String,
     /// The whole result: measure, levels, records, the fits.
     pub json: IdaReport,
-    /// Each run's summary (`None` for a failed run), record by record, level by level.
-    pub summaries: Vec<Option<RunSummary>>,
+    /// Each run's EDPs ([`Ida::edps`]; `None` for a failed run), record by record, level by level.
+    pub edps: Vec<Option<Vec<f64>>>,
 }
 
 /// How an IDA ended early.
@@ -582,37 +583,63 @@ pub fn run(
     progress: &mut dyn FnMut(crate::sweep::Progress) -> std::ops::ControlFlow<()>,
 ) -> Result<IdaOutput, IdaError> {
     use crate::store::{Store, StoreError};
+    let nl = ida.levels.len();
+    let len = ida.records.len().saturating_mul(nl);
+    if len > crate::study::MAX_RUNS {
+        return Err(IdaError::Input(err(
+            &ida.path,
+            format!(
+                "{} records x {nl} levels make {len} runs; allowed: at most 1e7",
+                ida.records.len()
+            ),
+        )));
+    }
     let ims = ida.intensities().map_err(IdaError::Input)?;
-    let variants = ida.scenarios(&ims);
     let label = ida.path.display().to_string();
-    let values: Vec<(Value, String)> = variants
-        .iter()
-        .enumerate()
-        .map(|(n, (_, v))| (v.clone(), format!("{label}#{n}")))
-        .collect();
-    let prepared = crate::sweep::prepare(values, workers);
-    let id = crate::sweep::study_id(&prepared);
+    let scenario = |n: usize| (ida.scenario(n / nl, n % nl, &ims).1, format!("{label}#{n}"));
+    let id = crate::key::definition_id(
+        &json!({"base": ida.base, "records": ida.records, "levels": ida.levels, "intensities": ims}),
+        ida.path.parent(),
+    );
+    // The identity a store of the first layout knows this IDA by: the hash of every run's key.
+    let legacy = || {
+        let values = (0..len).map(scenario).collect();
+        crate::sweep::study_id(&crate::sweep::prepare(values, workers))
+    };
     let db = out.join("study.sqlite");
     let store_err = |e: StoreError| match e {
         StoreError::Mismatch(m) => IdaError::Input(InputError::new(m)),
         StoreError::Io(m) => IdaError::Io(m),
     };
-    Store::check(&db, &id, prepared.len()).map_err(store_err)?;
+    Store::check(&db, &id, len, &legacy).map_err(store_err)?;
     std::fs::create_dir_all(out)
         .map_err(|e| IdaError::Io(format!("cannot create {}: {e}", out.display())))?;
-    let mut store = Store::open(&db, &id, prepared.len()).map_err(store_err)?;
-    let outcomes = crate::sweep::run(
-        &prepared,
+    let mut store = Store::open(&db, &id, len, &legacy).map_err(store_err)?;
+    let swept = crate::sweep::run(
+        len,
+        &scenario,
         workers,
         &pounding::analysis::RunOptions::summary_only(),
         Some(&mut store),
         progress,
     )
     .map_err(|e| IdaError::Io(e.to_string()))?;
-    let summaries: Vec<Option<RunSummary>> =
-        outcomes.iter().map(|o| o.as_ref().ok().cloned()).collect();
-    let runs = runs_csv(ida, &variants, &ims, &outcomes).map_err(IdaError::Io)?;
-    let fits = ida.fit(&summaries);
+    // Each run's outcome read back from the store, one at a time: its EDPs kept, its runs.csv row written.
+    let mut edps: Vec<Option<Vec<f64>>> = Vec::with_capacity(len);
+    let mut rows = RunsCsv::new(ida).map_err(IdaError::Io)?;
+    let mut failed = 0;
+    for n in 0..len {
+        let outcome = swept
+            .outcome(n, Some(&store))
+            .map_err(|e| IdaError::Io(e.to_string()))?
+            .and_then(|text| RunSummary::from_json(&text));
+        failed += usize::from(outcome.is_err());
+        let (i, j) = (n / nl, n % nl);
+        rows.row(ida, i, j, &ims, &outcome).map_err(IdaError::Io)?;
+        edps.push(outcome.ok().map(|s| ida.edps(&s)));
+    }
+    let runs = rows.finish().map_err(IdaError::Io)?;
+    let fits = ida.fit(&edps);
     let frag = fragility_csv(&fits).map_err(IdaError::Io)?;
     for (name, text) in [("runs.csv", &runs), ("fragility.csv", &frag)] {
         crate::input::write_atomic(&out.join(name), text.as_bytes())
@@ -631,8 +658,8 @@ pub fn run(
                 intensity,
             })
             .collect(),
-        runs: outcomes.len(),
-        failed: outcomes.iter().filter(|o| o.is_err()).count(),
+        runs: len,
+        failed,
         fragility: fragility_json(&fits),
         units: match units {
             Value::Object(m) => m,
@@ -643,57 +670,83 @@ pub fn run(
         runs_csv: runs,
         fragility_csv: frag,
         json,
-        summaries,
+        edps,
     })
 }
 
-/// `runs.csv` of an IDA: each run's record, intensity and scale, its status, its EDPs, its impacts and its
-/// error.
-fn runs_csv(
-    ida: &Ida,
-    variants: &[((usize, usize, f64), Value)],
-    ims: &[f64],
-    outcomes: &[Result<RunSummary, String>],
-) -> Result<String, String> {
-    let cols = edp_columns(&ida.buildings);
-    let mut wtr = csv::Writer::from_writer(Vec::new());
-    let fail = |e: csv::Error| format!("cannot write runs.csv: {e}");
-    let mut header = vec![
-        "record",
-        "intensity_m_per_s2",
-        "record_intensity_m_per_s2",
-        "scale",
-        "status",
-    ];
-    header.extend(cols.iter().map(|(c, _)| c.as_str()));
-    header.extend(["impacts", "error"]);
-    wtr.write_record(&header).map_err(fail)?;
-    let mut buf = crate::format::Shortest::new();
-    for ((ijs, _), o) in variants.iter().zip(outcomes) {
-        let (i, j, scale) = *ijs;
+/// `runs.csv` of an IDA, row by row: each run's record, intensity and scale, its status, its EDPs, its
+/// impacts and its error.
+struct RunsCsv {
+    cols: Vec<(String, Edp)>,
+    wtr: csv::Writer<Vec<u8>>,
+    buf: crate::format::Shortest,
+}
+
+fn csv_fail(e: csv::Error) -> String {
+    format!("cannot write runs.csv: {e}")
+}
+
+impl RunsCsv {
+    fn new(ida: &Ida) -> Result<RunsCsv, String> {
+        let cols = edp_columns(&ida.buildings);
+        let mut wtr = csv::Writer::from_writer(Vec::new());
+        let mut header = vec![
+            "record",
+            "intensity_m_per_s2",
+            "record_intensity_m_per_s2",
+            "scale",
+            "status",
+        ];
+        header.extend(cols.iter().map(|(c, _)| c.as_str()));
+        header.extend(["impacts", "error"]);
+        wtr.write_record(&header).map_err(csv_fail)?;
+        Ok(RunsCsv {
+            cols,
+            wtr,
+            buf: crate::format::Shortest::new(),
+        })
+    }
+
+    /// The row of record `i` at level `j`.
+    fn row(
+        &mut self,
+        ida: &Ida,
+        i: usize,
+        j: usize,
+        ims: &[f64],
+        o: &Result<RunSummary, String>,
+    ) -> Result<(), String> {
+        let buf = &mut self.buf;
         let mut row: Vec<String> = vec![
             ida.records[i].clone(),
             buf.format(ida.levels[j]).to_string(),
             buf.format(ims[i]).to_string(),
-            buf.format(scale).to_string(),
+            buf.format(ida.levels[j] / ims[i]).to_string(),
             if o.is_ok() { "ok" } else { "error" }.to_string(),
         ];
         match o {
             Ok(s) => {
-                row.extend(cols.iter().map(|(_, e)| buf.format(e.value(s)).to_string()));
+                row.extend(
+                    self.cols
+                        .iter()
+                        .map(|(_, e)| buf.format(e.value(s)).to_string()),
+                );
                 row.push(s.impacts().to_string());
                 row.push(String::new());
             }
             Err(e) => {
-                row.extend(cols.iter().map(|_| String::new()));
+                row.extend(self.cols.iter().map(|_| String::new()));
                 row.push(String::new());
                 row.push(e.clone());
             }
         }
-        wtr.write_record(&row).map_err(fail)?;
+        self.wtr.write_record(&row).map_err(csv_fail)
     }
-    let bytes = wtr.into_inner().map_err(|e| e.to_string())?;
-    String::from_utf8(bytes).map_err(|e| e.to_string())
+
+    fn finish(self) -> Result<String, String> {
+        let bytes = self.wtr.into_inner().map_err(|e| e.to_string())?;
+        String::from_utf8(bytes).map_err(|e| e.to_string())
+    }
 }
 
 /// `fragility.csv`: for each limit state and method, the fitted median and dispersion, or why there is none.

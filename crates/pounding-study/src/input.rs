@@ -45,6 +45,15 @@ pub fn read_text_file(path: &Path, what: &str, limit: u64) -> Result<String, Str
 
 /// Writes `contents` to `path` atomically: a temporary file in the same folder, flushed, then renamed.
 pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
+    write_atomic_with(path, |w| w.write_all(contents))
+}
+
+/// Writes what `write` gives to `path` atomically, without holding it in memory: a temporary file in the
+/// same folder, written through a buffer, flushed, then renamed. An error from `write` leaves no file.
+pub fn write_atomic_with(
+    path: &Path,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
+) -> std::io::Result<()> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => std::path::PathBuf::from("."),
@@ -56,8 +65,9 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
     remove_stale_tmp(&dir, name);
     let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
     let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        std::io::Write::write_all(&mut f, contents)?;
+        let mut f = std::io::BufWriter::new(std::fs::File::create(&tmp)?);
+        write(&mut f)?;
+        let f = f.into_inner().map_err(|e| e.into_error())?;
         f.sync_all()?;
         std::fs::rename(&tmp, path)
     })();
@@ -249,7 +259,37 @@ pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)>
         };
         return Err((Some(key), msg));
     }
+    if let Some((key, x)) = tiny_number("", value) {
+        return Err((
+            Some(key.clone()),
+            format!("{key} = {x:e} is not allowed: 0, or at least 1e-30 in magnitude (limits::MIN_MAGNITUDE: smaller numbers are zero for any structure and slow the analysis)"),
+        ));
+    }
     parse_value(value)
+}
+
+/// The first number of `v` that is neither 0 nor at least [`pounding::limits::MIN_MAGNITUDE`] in magnitude,
+/// with its dotted key.
+fn tiny_number(key: &str, v: &Value) -> Option<(String, f64)> {
+    let child = |k: &str| {
+        if key.is_empty() {
+            k.to_string()
+        } else {
+            format!("{key}.{k}")
+        }
+    };
+    match v {
+        Value::Number(n) => n
+            .as_f64()
+            .filter(|x| !pounding::limits::not_tiny(*x))
+            .map(|x| (key.to_string(), x)),
+        Value::Object(m) => m.iter().find_map(|(k, v)| tiny_number(&child(k), v)),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(i, v)| tiny_number(&child(&i.to_string()), v)),
+        _ => None,
+    }
 }
 
 /// `value` as a `T` (a scenario, or another set of named parameters such as Python's synthetic record's),

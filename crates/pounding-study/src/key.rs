@@ -55,6 +55,18 @@ pub fn key_of(value: &Value) -> String {
     format!("{:032x}", fnv1a_128(canonical(value).as_bytes()))
 }
 
+/// The identity of a study from its definition `def` (its base, its axes or runs): `def-` and the hash of its
+/// canonical form, with the folder `dir` (the study file's) taken out of every path, so that the identity
+/// holds when the folder moves.
+pub fn definition_id(def: &Value, dir: Option<&std::path::Path>) -> String {
+    let mut text = canonical(def);
+    if let Some(dir) = dir.filter(|d| !d.as_os_str().is_empty()) {
+        let quoted = Value::String(format!("{}/", dir.display())).to_string();
+        text = text.replace(&quoted[1..quoted.len() - 1], "");
+    }
+    format!("def-{:032x}", fnv1a_128(text.as_bytes()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

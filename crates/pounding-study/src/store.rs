@@ -73,7 +73,8 @@ pub fn digest(key: &str, outcome: &Outcome) -> String {
 pub struct Store {
     conn: Connection,
     path: std::path::PathBuf,
-    _lock: std::fs::File,
+    /// The lock of the writing store; none for a reader ([`Store::reader`]).
+    _lock: Option<std::fs::File>,
 }
 
 /// Why a store cannot be used: one line.
@@ -170,8 +171,14 @@ fn regular_files(path: &Path) -> Result<(), StoreError> {
 
 impl Store {
     /// Checks, without writing anything, that the file at `path` is absent or a store of the study `id`
-    /// with `runs` runs.
-    pub fn check(path: &Path, id: &str, runs: usize) -> Result<(), StoreError> {
+    /// with `runs` runs. A store of the first layout knew its study by another identity, `legacy()`
+    /// (computed only for such a store).
+    pub fn check(
+        path: &Path,
+        id: &str,
+        runs: usize,
+        legacy: &dyn Fn() -> String,
+    ) -> Result<(), StoreError> {
         regular_files(path)?;
         if !path.exists() {
             return Ok(());
@@ -230,7 +237,10 @@ impl Store {
                 format.unwrap_or_default()
             )));
         }
-        if stored.as_deref() != Some(id) {
+        let same = stored.as_deref() == Some(id)
+            || (format.as_deref() == Some(FORMAT_1)
+                && stored.as_deref() == Some(legacy().as_str()));
+        if !same {
             let n = get("runs").ok().flatten().unwrap_or_default();
             return Err(mismatch(format!(
                 "was written by a different study (id {}, {n} runs; this study: id {id}, {runs} runs)",
@@ -243,7 +253,12 @@ impl Store {
     /// Opens (or creates) the store of study `id` with `runs` runs at `path`: takes its lock (another process
     /// holding it is refused at once), checks it ([`Store::check`]), and creates its tables and study rows in
     /// one transaction, so that a kill leaves no store without its study.
-    pub fn open(path: &Path, id: &str, runs: usize) -> Result<Store, StoreError> {
+    pub fn open(
+        path: &Path,
+        id: &str,
+        runs: usize,
+        legacy: &dyn Fn() -> String,
+    ) -> Result<Store, StoreError> {
         regular_files(path)?;
         let lp = lock_path(path);
         let lock = std::fs::OpenOptions::new()
@@ -265,7 +280,7 @@ impl Store {
                 return Err(StoreError::Io(format!("cannot lock {}: {e}", lp.display())))
             }
         }
-        Self::check(path, id, runs)?;
+        Self::check(path, id, runs, legacy)?;
         let mut conn = Connection::open(path).map_err(io(path))?;
         // WAL: a commit is durable against a killed process, and readers (pandas) never block the sweep.
         conn.pragma_update(None, "journal_mode", "WAL")
@@ -289,7 +304,7 @@ impl Store {
              );",
         )
         .map_err(io(path))?;
-        migrate(&tx).map_err(io(path))?;
+        migrate(&tx, id).map_err(io(path))?;
         tx.execute(
             "INSERT OR IGNORE INTO study (name, value) VALUES ('format', ?1), ('id', ?2), ('runs', ?3), ('created', datetime('now'))",
             params![FORMAT, id, runs.to_string()],
@@ -299,7 +314,7 @@ impl Store {
         Ok(Store {
             conn,
             path: path.to_path_buf(),
-            _lock: lock,
+            _lock: Some(lock),
         })
     }
 
@@ -355,43 +370,68 @@ impl Store {
             .prepare("SELECT key, status, summary, error, digest FROM runs ORDER BY idx")
             .map_err(&err)?;
         let rows = st
-            .query_map([], |r| {
-                // Read as values, not as typed columns: a damaged row (a number where text belongs) is a row
-                // to run again, not a failure of the store.
-                let text = |i: usize| -> rusqlite::Result<Option<String>> {
-                    Ok(match r.get_ref(i)? {
-                        rusqlite::types::ValueRef::Text(t) => {
-                            Some(String::from_utf8_lossy(t).into_owned())
-                        }
-                        _ => None,
-                    })
-                };
-                let key = text(0)?.unwrap_or_default();
-                let (outcome, present) = match text(1)?.as_deref() {
-                    Some("ok") => text(2)?.map_or((Ok(String::new()), false), |s| (Ok(s), true)),
-                    Some("error") => {
-                        text(3)?.map_or((Err(String::new()), false), |e| (Err(e), true))
-                    }
-                    _ => (Err(String::new()), false),
-                };
-                let intact =
-                    present && text(4)?.as_deref() == Some(digest(&key, &outcome).as_str());
-                Ok(Stored {
-                    key,
-                    outcome,
-                    intact,
-                })
-            })
+            .query_map([], stored_row)
             .and_then(|rows| rows.collect::<Result<Vec<_>, _>>())
             .map_err(&err);
         rows
     }
+
+    /// The stored run of `key`, if any.
+    pub fn get(&self, key: &str) -> Result<Option<Stored>, StoreError> {
+        let err = io(&self.path);
+        let mut st = self
+            .conn
+            .prepare_cached("SELECT key, status, summary, error, digest FROM runs WHERE key = ?1")
+            .map_err(&err)?;
+        st.query_row(params![key], stored_row)
+            .optional()
+            .map_err(&err)
+    }
+
+    /// A second, read-only connection to this store (for a worker thread to look up stored runs while this
+    /// one commits: the store's WAL lets readers and the writer work at once).
+    pub fn reader(&self) -> Result<Store, StoreError> {
+        let conn = Connection::open_with_flags(
+            &self.path,
+            OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX,
+        )
+        .map_err(io(&self.path))?;
+        Ok(Store {
+            conn,
+            path: self.path.clone(),
+            _lock: None,
+        })
+    }
 }
 
-/// Brings a store of layout [`FORMAT_1`] to [`FORMAT`] inside the opening transaction `tx`: a `digest`
-/// column, each row's digest from what it holds (its summaries are checked when read, as before), the new
-/// format. A store of the current layout is left as it is.
-fn migrate(tx: &rusqlite::Transaction<'_>) -> rusqlite::Result<()> {
+/// A row `(key, status, summary, error, digest)` as [`Stored`]. Read as values, not as typed columns: a
+/// damaged row (a number where text belongs) is a run to run again, not a failure of the store.
+fn stored_row(r: &rusqlite::Row<'_>) -> rusqlite::Result<Stored> {
+    let text = |i: usize| -> rusqlite::Result<Option<String>> {
+        Ok(match r.get_ref(i)? {
+            rusqlite::types::ValueRef::Text(t) => Some(String::from_utf8_lossy(t).into_owned()),
+            _ => None,
+        })
+    };
+    let key = text(0)?.unwrap_or_default();
+    let (outcome, present) = match text(1)?.as_deref() {
+        Some("ok") => text(2)?.map_or((Ok(String::new()), false), |s| (Ok(s), true)),
+        Some("error") => text(3)?.map_or((Err(String::new()), false), |e| (Err(e), true)),
+        _ => (Err(String::new()), false),
+    };
+    let intact = present && text(4)?.as_deref() == Some(digest(&key, &outcome).as_str());
+    Ok(Stored {
+        key,
+        outcome,
+        intact,
+    })
+}
+
+/// Brings a store of layout [`FORMAT_1`] (already checked to be of this study) to [`FORMAT`] inside the
+/// opening transaction `tx`: a `digest` column, each row's digest from what it holds (its summaries are
+/// checked when read, as before), the study's identity `id`, the new format. A store of the current layout is
+/// left as it is.
+fn migrate(tx: &rusqlite::Transaction<'_>, id: &str) -> rusqlite::Result<()> {
     if tx.prepare("SELECT digest FROM runs LIMIT 0").is_err() {
         tx.execute_batch("ALTER TABLE runs ADD COLUMN digest TEXT")?;
     }
@@ -427,12 +467,18 @@ fn migrate(tx: &rusqlite::Transaction<'_>) -> rusqlite::Result<()> {
         "UPDATE study SET value = ?1 WHERE name = 'format'",
         params![FORMAT],
     )?;
+    tx.execute("UPDATE study SET value = ?1 WHERE name = 'id'", params![id])?;
     Ok(())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// No first-layout identity.
+    fn none() -> String {
+        String::new()
+    }
 
     fn scratch(name: &str) -> std::path::PathBuf {
         let dir =
@@ -446,19 +492,19 @@ mod tests {
     fn a_second_open_of_a_store_in_use_is_refused_at_once() {
         let dir = scratch("lock");
         let path = dir.join("study.sqlite");
-        let first = Store::open(&path, "a", 2).unwrap();
+        let first = Store::open(&path, "a", 2, &none).unwrap();
         // Another study, or the same one: refused while the first holds the store.
         for id in ["b", "a"] {
-            match Store::open(&path, id, 2) {
+            match Store::open(&path, id, 2, &none) {
                 Err(StoreError::Mismatch(m)) => assert!(m.contains("in use"), "{m}"),
                 Err(e) => panic!("{e}"),
                 Ok(_) => panic!("two holders of one store"),
             }
         }
         drop(first);
-        assert!(Store::open(&path, "a", 2).is_ok());
+        assert!(Store::open(&path, "a", 2, &none).is_ok());
         assert!(
-            matches!(Store::open(&path, "b", 2), Err(StoreError::Mismatch(m)) if m.contains("different study"))
+            matches!(Store::open(&path, "b", 2, &none), Err(StoreError::Mismatch(m)) if m.contains("different study"))
         );
         std::fs::remove_dir_all(&dir).unwrap();
     }
@@ -476,8 +522,8 @@ mod tests {
         )
         .unwrap();
         drop(conn);
-        assert_eq!(Store::check(&path, "a", 1), Ok(()));
-        let mut s = Store::open(&path, "a", 1).unwrap();
+        assert_eq!(Store::check(&path, "a", 1, &none), Ok(()));
+        let mut s = Store::open(&path, "a", 1, &none).unwrap();
         let run = Finished {
             key: "k".into(),
             index: 0,
@@ -488,10 +534,10 @@ mod tests {
         drop(s);
         // Now it is study a's, with its run.
         assert!(matches!(
-            Store::check(&path, "b", 1),
+            Store::check(&path, "b", 1, &none),
             Err(StoreError::Mismatch(_))
         ));
-        let s = Store::open(&path, "a", 1).unwrap();
+        let s = Store::open(&path, "a", 1, &none).unwrap();
         assert_eq!(
             s.all().unwrap(),
             vec![Stored {
@@ -517,7 +563,7 @@ mod tests {
     fn a_row_changed_after_its_commit_is_not_intact() {
         let dir = scratch("digest");
         let path = dir.join("study.sqlite");
-        let mut s = Store::open(&path, "a", 4).unwrap();
+        let mut s = Store::open(&path, "a", 4, &none).unwrap();
         s.commit(&[
             finished("k0", 0, Ok("{\"x\":1.5}".into())),
             finished("k1", 1, Ok("{\"x\":2.5}".into())),
@@ -535,7 +581,7 @@ mod tests {
         )
         .unwrap();
         drop(conn);
-        let s = Store::open(&path, "a", 4).unwrap();
+        let s = Store::open(&path, "a", 4, &none).unwrap();
         let intact: Vec<(String, bool)> = s
             .all()
             .unwrap()
@@ -566,8 +612,11 @@ mod tests {
         )
         .unwrap();
         drop(conn);
-        assert_eq!(Store::check(&path, "a", 2), Ok(()));
-        let s = Store::open(&path, "a", 2).unwrap();
+        // Known by its first-layout identity "a"; the study's identity is now "new".
+        assert!(Store::check(&path, "new", 2, &none).is_err());
+        let legacy = || "a".to_string();
+        assert_eq!(Store::check(&path, "new", 2, &legacy), Ok(()));
+        let s = Store::open(&path, "new", 2, &legacy).unwrap();
         let rows = s.all().unwrap();
         assert_eq!(rows.len(), 2);
         assert!(rows[0].intact && !rows[1].intact, "{rows:?}");
@@ -580,6 +629,8 @@ mod tests {
             .unwrap();
         assert_eq!(format, FORMAT);
         drop(conn);
+        assert_eq!(Store::check(&path, "new", 2, &none), Ok(()));
+        assert!(Store::check(&path, "a", 2, &legacy).is_err());
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
@@ -588,12 +639,12 @@ mod tests {
     fn a_store_that_is_a_link_or_beside_one_is_refused() {
         let dir = scratch("link");
         let target = dir.join("elsewhere.sqlite");
-        drop(Store::open(&target, "a", 1).unwrap());
+        drop(Store::open(&target, "a", 1, &none).unwrap());
         let path = dir.join("study.sqlite");
         std::os::unix::fs::symlink(&target, &path).unwrap();
         for result in [
-            Store::check(&path, "a", 1).err(),
-            Store::open(&path, "a", 1).err(),
+            Store::check(&path, "a", 1, &none).err(),
+            Store::open(&path, "a", 1, &none).err(),
         ] {
             assert!(
                 matches!(&result, Some(StoreError::Mismatch(m)) if m.contains("is a symbolic link")),
@@ -604,7 +655,7 @@ mod tests {
         // A lock or journal beside the store that leads elsewhere.
         std::os::unix::fs::symlink("/dev/null", dir.join("study.sqlite-wal")).unwrap();
         assert!(
-            matches!(Store::open(&path, "a", 1), Err(StoreError::Mismatch(m)) if m.contains("study.sqlite-wal is a symbolic link"))
+            matches!(Store::open(&path, "a", 1, &none), Err(StoreError::Mismatch(m)) if m.contains("study.sqlite-wal is a symbolic link"))
         );
         assert!(!path.exists());
         std::fs::remove_dir_all(&dir).unwrap();
@@ -616,7 +667,7 @@ mod tests {
         let path = dir.join("study.sqlite");
         std::fs::write(&path, vec![7u8; 4096]).unwrap();
         assert!(
-            matches!(Store::check(&path, "a", 1), Err(StoreError::Mismatch(m)) if m.contains("not an SQLite database"))
+            matches!(Store::check(&path, "a", 1, &none), Err(StoreError::Mismatch(m)) if m.contains("not an SQLite database"))
         );
         std::fs::remove_dir_all(&dir).unwrap();
     }

@@ -35,7 +35,8 @@ pub struct Variant {
     pub coords: Vec<String>,
 }
 
-/// A study read from its file, expanded.
+/// A study read from its file. Its runs are made on demand ([`Study::scenario`]), so that a study of
+/// millions of runs starts at once and holds no more than its definition.
 #[derive(Clone, Debug)]
 pub struct Study {
     /// The study file.
@@ -44,8 +45,16 @@ pub struct Study {
     pub base: PathBuf,
     /// The axes (for an explicit list: every key any entry sets).
     pub axes: Vec<Axis>,
-    /// The scenarios, in study order.
-    pub variants: Vec<Variant>,
+    runs: Runs,
+}
+
+/// How a study's runs are made.
+#[derive(Clone, Debug)]
+enum Runs {
+    /// The Cartesian product of the axes over the base scenario (the last axis varying fastest).
+    Product { base: Value, len: usize },
+    /// An explicit list of `[[run]]` entries.
+    List(Vec<Variant>),
 }
 
 /// Largest number of runs in one study.
@@ -318,9 +327,12 @@ impl Study {
             }
         };
         let base_file = ScenarioFile::read(&base)?;
-        let (axes, variants) = match (top.get("axes"), top.get("run")) {
+        let (axes, runs) = match (top.get("axes"), top.get("run")) {
             (Some(Value::Object(a)), None) => product(path, &dir, &base_file.value, a)?,
-            (None, Some(Value::Array(runs))) => list(path, &dir, &base_file.value, runs)?,
+            (None, Some(Value::Array(runs))) => {
+                let (axes, variants) = list(path, &dir, &base_file.value, runs)?;
+                (axes, Runs::List(variants))
+            }
             (None, None) => {
                 return Err(err(
                     path,
@@ -354,16 +366,37 @@ impl Study {
             path: path.to_path_buf(),
             base,
             axes,
-            variants,
+            runs,
         };
         study.check_keys()?;
         Ok(study)
     }
 
-    /// Every key an axis sets must be a key of the scenario schema.
+    /// The scenarios whose keys [`Study::check_keys`] reads: for a product, the base with one axis set to
+    /// each of its values in turn (axes set disjoint keys, so every run's keys are among these); for a list,
+    /// every entry.
+    fn probes(&self) -> Vec<Value> {
+        match &self.runs {
+            Runs::List(variants) => variants.iter().map(|v| v.value.clone()).collect(),
+            Runs::Product { base, .. } => {
+                let mut out = Vec::new();
+                for axis in &self.axes {
+                    for v in &axis.values {
+                        let mut value = base.clone();
+                        if apply(&mut value, &axis.name, v).is_ok() {
+                            out.push(value);
+                        }
+                    }
+                }
+                out
+            }
+        }
+    }
+
+    /// Every key an axis sets must be a key of the scenario schema, with a value of the right type.
     fn check_keys(&self) -> Result<(), InputError> {
-        for v in &self.variants {
-            if let Err((Some(k), m)) = crate::input::parse_doc(&v.value) {
+        for value in self.probes() {
+            if let Err((Some(k), m)) = crate::input::parse_doc(&value) {
                 let axis = self.axes.iter().find(|a| {
                     a.name == k
                         || k.starts_with(&format!("{}.", a.name))
@@ -391,13 +424,53 @@ impl Study {
         Ok(())
     }
 
-    /// The scenarios with their labels, for [`crate::sweep::prepare`].
-    pub fn scenarios(&self) -> Vec<(Value, String)> {
-        self.variants
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (v.value.clone(), format!("{}#{i}", self.path.display())))
-            .collect()
+    /// The number of runs.
+    pub fn len(&self) -> usize {
+        match &self.runs {
+            Runs::Product { len, .. } => *len,
+            Runs::List(v) => v.len(),
+        }
+    }
+
+    /// Whether the study has no runs (never, once read).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Run `i`: its scenario and label (`STUDY#i`), and the value of each axis as shown in `runs.csv`.
+    pub fn variant(&self, i: usize) -> (Value, String, Vec<String>) {
+        let label = format!("{}#{i}", self.path.display());
+        match &self.runs {
+            Runs::List(v) => (v[i].value.clone(), label, v[i].coords.clone()),
+            Runs::Product { base, .. } => {
+                let mut value = base.clone();
+                let mut coords = vec![String::new(); self.axes.len()];
+                let mut rest = i;
+                for (a, axis) in self.axes.iter().enumerate().rev() {
+                    let v = &axis.values[rest % axis.values.len()];
+                    rest /= axis.values.len();
+                    // Every value of every axis was applied to the base when the study was read.
+                    let _ = apply(&mut value, &axis.name, v);
+                    coords[a] = show(v);
+                }
+                (value, label, coords)
+            }
+        }
+    }
+
+    /// The study's identity: a hash of its definition (the base scenario, and the axes with their values or
+    /// the list of runs), so that a store is known as this study's without making its runs.
+    pub fn id(&self) -> String {
+        let def = match &self.runs {
+            Runs::Product { base, .. } => serde_json::json!({
+                "base": base,
+                "axes": self.axes.iter().map(|a| (a.name.clone(), a.values.clone())).collect::<Vec<_>>(),
+            }),
+            Runs::List(v) => serde_json::json!({
+                "runs": v.iter().map(|v| v.value.clone()).collect::<Vec<_>>(),
+            }),
+        };
+        crate::key::definition_id(&def, self.path.parent())
     }
 }
 
@@ -407,7 +480,7 @@ fn product(
     dir: &Path,
     base: &Value,
     axes_table: &Map<String, Value>,
-) -> Result<(Vec<Axis>, Vec<Variant>), InputError> {
+) -> Result<(Vec<Axis>, Runs), InputError> {
     let mut flat = Vec::new();
     flatten("", axes_table, &mut flat);
     if flat.is_empty() {
@@ -457,25 +530,13 @@ fn product(
             format!("the axes make {total} runs; allowed: at most 1e7"),
         ));
     }
-    let mut variants = Vec::with_capacity(total);
-    for n in 0..total {
-        let mut value = base.clone();
-        let mut coords = Vec::with_capacity(axes.len());
-        let mut rest = n;
-        let mut idx = vec![0; axes.len()];
-        for (a, axis) in axes.iter().enumerate().rev() {
-            idx[a] = rest % axis.values.len();
-            rest /= axis.values.len();
-        }
-        for (a, axis) in axes.iter().enumerate() {
-            let v = &axis.values[idx[a]];
-            apply(&mut value, &axis.name, v)
-                .map_err(|m| err(path, format!("axis {:?}: {m}", axis.name)))?;
-            coords.push(show(v));
-        }
-        variants.push(Variant { value, coords });
-    }
-    Ok((axes, variants))
+    Ok((
+        axes,
+        Runs::Product {
+            base: base.clone(),
+            len: total,
+        },
+    ))
 }
 
 /// The explicit list of `[[run]]` entries over `base`.

@@ -4,13 +4,13 @@
 
 use crate::input::{self, dict_message, Loaded};
 use crate::key::{fnv1a_128, key_of};
-use crate::store::{Finished, Store, StoreError};
+use crate::store::{Finished, Outcome, Store, StoreError};
 use crate::summary::RunSummary;
 use pounding::analysis::RunOptions;
 use pounding::ground_motion::Record;
 use pounding::scenario::{RecordSpec, ScenarioDoc};
 use serde_json::Value;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::ops::ControlFlow;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{mpsc, Arc, Mutex};
@@ -201,15 +201,16 @@ pub fn run_one(
 /// Where a sweep stands, given to the progress callback.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Progress {
-    /// Runs finished so far in this session (ok or error).
+    /// Runs of the study handled so far in this session: run (ok or error), found in the store, or the
+    /// same as an earlier run.
     pub done: usize,
-    /// Runs this session has to do (the study's distinct runs not yet in the store).
+    /// Runs of the study.
     pub todo: usize,
     /// Runs found finished in the store and not run again.
     pub skipped: usize,
-    /// Runs found in the store with a summary that does not read as one (damaged), run again.
+    /// Runs found in the store damaged (not intact, or a summary that does not read as one), run again.
     pub damaged: usize,
-    /// Runs that ended with an error so far.
+    /// Runs that ended with an error so far in this session.
     pub failed: usize,
     /// Wall time since the runs began, s.
     pub elapsed: f64,
@@ -222,6 +223,8 @@ pub enum SweepError {
     Cancelled,
     /// The store failed.
     Store(StoreError),
+    /// The operating system refused a worker thread.
+    Thread(String),
 }
 
 impl std::fmt::Display for SweepError {
@@ -229,6 +232,7 @@ impl std::fmt::Display for SweepError {
         match self {
             SweepError::Cancelled => f.write_str("cancelled; finished runs are in the store"),
             SweepError::Store(e) => e.fmt(f),
+            SweepError::Thread(m) => f.write_str(m),
         }
     }
 }
@@ -245,95 +249,225 @@ pub fn trusted(row: crate::store::Stored) -> Option<Result<RunSummary, String>> 
     }
 }
 
-/// Runs every prepared scenario not already in `store`, on `workers` threads, and returns every run's outcome
-/// in input order (its summary or the error message; runs of equal key share one outcome). A stored summary
-/// or row that is not intact or does not read back as one is not trusted: that run is run again and stored anew. `progress` is
-/// called on this thread at least every 0.2 s; returning `Break` cancels the sweep.
+/// What a study's run `i` is: its scenario and its label.
+pub type Scenarios<'a> = &'a (dyn Fn(usize) -> (Value, String) + Sync);
+
+/// What a sweep leaves: each run's key, in study order, and (without a store) each key's outcome. With a
+/// store the outcomes are in it, read back by [`Swept::outcome`], so that a study of millions of runs holds
+/// only its keys.
+pub struct Swept {
+    /// Each run's key, in study order.
+    pub keys: Vec<u128>,
+    outcomes: HashMap<u128, Outcome>,
+}
+
+impl Swept {
+    /// Run `i`'s outcome: its summary (JSON text) or its one-line error, from the store if there is one.
+    pub fn outcome(&self, i: usize, store: Option<&Store>) -> Result<Outcome, StoreError> {
+        let key = self.keys[i];
+        if let Some(o) = self.outcomes.get(&key) {
+            return Ok(o.clone());
+        }
+        let stored = match store {
+            Some(st) => st.get(&hex(key))?,
+            None => None,
+        };
+        Ok(stored
+            .map(|row| row.outcome)
+            .unwrap_or_else(|| Err("not run".into())))
+    }
+
+    /// Run `i`'s key as stored (32 hexadecimal digits).
+    pub fn key(&self, i: usize) -> String {
+        hex(self.keys[i])
+    }
+}
+
+/// A key as text.
+fn hex(key: u128) -> String {
+    format!("{key:032x}")
+}
+
+/// What a worker tells the committing thread.
+enum Message {
+    /// Run `index` has `key` and needs nothing more (found in the store, or an earlier run's twin).
+    Keyed {
+        index: usize,
+        key: u128,
+        stored: bool,
+    },
+    /// Run `index` was run.
+    Ran { key: u128, finished: Finished },
+}
+
+/// One worker: takes the next run, keys it, and runs it unless the store holds it intact or another run has
+/// the same key.
+struct Worker<'a> {
+    scenarios: Scenarios<'a>,
+    len: usize,
+    options: &'a RunOptions,
+    next: &'a AtomicUsize,
+    cancel: &'a AtomicBool,
+    claimed: &'a Mutex<HashSet<u128>>,
+    damaged: &'a AtomicUsize,
+    cache: &'a RecordCache,
+}
+
+impl Worker<'_> {
+    fn work(&self, reader: Option<Store>, tx: mpsc::Sender<Message>) {
+        while !self.cancel.load(Ordering::Relaxed) {
+            let index = self.next.fetch_add(1, Ordering::Relaxed);
+            if index >= self.len {
+                break;
+            }
+            let (value, label) = (self.scenarios)(index);
+            let p = prepare_one(&value, label, self.cache);
+            let key = u128::from_str_radix(&p.key, 16).unwrap_or_default();
+            let first = self
+                .claimed
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .insert(key);
+            let stored = match (&reader, first) {
+                (Some(r), true) => r.get(&p.key).ok().flatten(),
+                _ => None,
+            };
+            let in_store = stored.is_some();
+            let needed = first
+                && match stored {
+                    None => true,
+                    Some(row) => {
+                        let bad = trusted(row).is_none();
+                        if bad {
+                            self.damaged.fetch_add(1, Ordering::Relaxed);
+                        }
+                        bad
+                    }
+                };
+            let message = if needed {
+                let t0 = Instant::now();
+                let outcome = run_one(&p, self.options, self.cancel);
+                if self.cancel.load(Ordering::Relaxed) {
+                    // A run cut short is not a result.
+                    break;
+                }
+                Message::Ran {
+                    key,
+                    finished: Finished {
+                        key: p.key,
+                        index,
+                        outcome: outcome.map(|s| s.to_value().to_string()),
+                        seconds: t0.elapsed().as_secs_f64(),
+                    },
+                }
+            } else {
+                Message::Keyed {
+                    index,
+                    key,
+                    stored: first && in_store,
+                }
+            };
+            if tx.send(message).is_err() {
+                break;
+            }
+        }
+    }
+}
+
+/// Runs the `len` runs that `scenarios` makes on demand, on `workers` threads, and commits each finished run
+/// to `store` (if any). A run whose key the store holds intact, with a summary that reads as one, is not run
+/// again; a damaged row is run again and replaced (counted in [`Progress::damaged`]); runs of equal key are
+/// run once. Runs are made, keyed and run as the workers reach them: the first run starts at once whatever
+/// the study's size, and memory holds one key per run. `progress` is called on this thread at least every
+/// 0.2 s; returning `Break` cancels the sweep.
 pub fn run(
-    prepared: &[Prepared],
+    len: usize,
+    scenarios: Scenarios<'_>,
     workers: usize,
     options: &RunOptions,
     mut store: Option<&mut Store>,
     progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
-) -> Result<Vec<Result<RunSummary, String>>, SweepError> {
-    let mut outcomes: HashMap<&str, Result<RunSummary, String>> = HashMap::new();
-    let mut damaged = 0;
-    if let Some(st) = store.as_deref() {
-        // The study's own key strings (borrowed from `prepared`), found by value.
-        let keys: std::collections::HashSet<&str> =
-            prepared.iter().map(|p| p.key.as_str()).collect();
-        for row in st.all().map_err(SweepError::Store)? {
-            let Some(key) = keys.get(row.key.as_str()) else {
-                continue;
-            };
-            match trusted(row) {
-                Some(outcome) => {
-                    outcomes.insert(*key, outcome);
-                }
-                None => damaged += 1,
-            }
-        }
-    }
-    let skipped = outcomes.len();
-    // One run per distinct key not yet finished, in study order.
-    let mut todo: Vec<usize> = Vec::new();
-    let mut seen: std::collections::HashSet<&str> = outcomes.keys().copied().collect();
-    for (i, p) in prepared.iter().enumerate() {
-        if seen.insert(p.key.as_str()) {
-            todo.push(i);
-        }
-    }
-    let cancel = AtomicBool::new(false);
-    let next = AtomicUsize::new(0);
-    let (tx, rx) = mpsc::channel::<Finished>();
+) -> Result<Swept, SweepError> {
+    let mut keys = vec![0u128; len];
+    let mut outcomes: HashMap<u128, Outcome> = HashMap::new();
+    let (cancel, next, damaged) = (
+        AtomicBool::new(false),
+        AtomicUsize::new(0),
+        AtomicUsize::new(0),
+    );
+    let claimed = Mutex::new(HashSet::new());
+    let cache = RecordCache::default();
+    let worker = Worker {
+        scenarios,
+        len,
+        options,
+        next: &next,
+        cancel: &cancel,
+        claimed: &claimed,
+        damaged: &damaged,
+        cache: &cache,
+    };
+    let (tx, rx) = mpsc::channel::<Message>();
     let start = Instant::now();
     let mut state = Progress {
         done: 0,
-        todo: todo.len(),
-        skipped,
-        damaged,
+        todo: len,
+        skipped: 0,
+        damaged: 0,
         failed: 0,
         elapsed: 0.0,
     };
     let mut failure = None;
     std::thread::scope(|s| {
-        for _ in 0..workers.max(1).min(todo.len().max(1)) {
+        for n in 0..workers.clamp(1, len.max(1)) {
+            let reader = match store.as_deref().map(Store::reader).transpose() {
+                Ok(r) => r,
+                Err(e) => {
+                    failure = Some(SweepError::Store(e));
+                    break;
+                }
+            };
             let tx = tx.clone();
-            let (todo, next, cancel) = (&todo, &next, &cancel);
-            s.spawn(move || loop {
-                if cancel.load(Ordering::Relaxed) {
-                    break;
+            let w = &worker;
+            let spawned = std::thread::Builder::new()
+                .name(format!("pounding-worker-{n}"))
+                .spawn_scoped(s, move || w.work(reader, tx));
+            if let Err(e) = spawned {
+                // Runs go on with the workers there are; none at all is an error.
+                if n == 0 {
+                    failure = Some(SweepError::Thread(format!(
+                        "the operating system refused a worker thread: {e}; allowed: fewer --workers"
+                    )));
                 }
-                let Some(&i) = todo.get(next.fetch_add(1, Ordering::Relaxed)) else {
-                    break;
-                };
-                let t0 = Instant::now();
-                let outcome = run_one(&prepared[i], options, cancel);
-                if cancel.load(Ordering::Relaxed) {
-                    // A run cut short is not a result.
-                    break;
-                }
-                let f = Finished {
-                    key: prepared[i].key.clone(),
-                    index: i,
-                    outcome: outcome.map(|s| s.to_value().to_string()),
-                    seconds: t0.elapsed().as_secs_f64(),
-                };
-                if tx.send(f).is_err() {
-                    break;
-                }
-            });
+                break;
+            }
+        }
+        if failure.is_some() {
+            cancel.store(true, Ordering::Relaxed);
         }
         drop(tx);
         let mut batch: Vec<Finished> = Vec::new();
         let mut last = Instant::now();
         let mut open = true;
         while open {
+            let mut take = |m: Message, batch: &mut Vec<Finished>| match m {
+                Message::Keyed { index, key, stored } => {
+                    keys[index] = key;
+                    state.done += 1;
+                    state.skipped += usize::from(stored);
+                }
+                Message::Ran { key, finished } => {
+                    keys[finished.index] = key;
+                    batch.push(finished);
+                }
+            };
             match rx.recv_timeout(Duration::from_millis(100)) {
-                Ok(f) => {
-                    batch.push(f);
+                Ok(m) => {
+                    take(m, &mut batch);
                     // Whatever else has finished goes into the same transaction.
-                    batch.extend(rx.try_iter());
+                    for m in rx.try_iter() {
+                        take(m, &mut batch);
+                    }
                 }
                 Err(mpsc::RecvTimeoutError::Timeout) => {}
                 Err(mpsc::RecvTimeoutError::Disconnected) => open = false,
@@ -341,20 +475,22 @@ pub fn run(
             if !batch.is_empty() {
                 if let Some(st) = store.as_deref_mut() {
                     if let Err(e) = st.commit(&batch) {
-                        failure = Some(SweepError::Store(e));
+                        failure.get_or_insert(SweepError::Store(e));
                         cancel.store(true, Ordering::Relaxed);
                     }
                 }
                 for f in batch.drain(..) {
                     state.done += 1;
                     state.failed += usize::from(f.outcome.is_err());
-                    let outcome = f.outcome.and_then(|text| RunSummary::from_json(&text));
-                    outcomes.insert(prepared[f.index].key.as_str(), outcome);
+                    if store.is_none() {
+                        outcomes.insert(keys[f.index], f.outcome);
+                    }
                 }
             }
             if last.elapsed() >= Duration::from_millis(100) || !open {
                 last = Instant::now();
                 state.elapsed = start.elapsed().as_secs_f64();
+                state.damaged = damaged.load(Ordering::Relaxed);
                 if progress(state).is_break() && failure.is_none() {
                     failure = Some(SweepError::Cancelled);
                     cancel.store(true, Ordering::Relaxed);
@@ -365,13 +501,5 @@ pub fn run(
     if let Some(f) = failure {
         return Err(f);
     }
-    Ok(prepared
-        .iter()
-        .map(|p| {
-            outcomes
-                .get(p.key.as_str())
-                .cloned()
-                .unwrap_or_else(|| Err("not run".into()))
-        })
-        .collect())
+    Ok(Swept { keys, outcomes })
 }

@@ -51,11 +51,12 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
     let edps: Vec<Vec<Vec<Option<f64>>>> = study
         .limit_states
         .iter()
-        .map(|ls| {
+        .enumerate()
+        .map(|(k, _)| {
             (0..study.records.len())
                 .map(|i| {
                     (0..nl)
-                        .map(|j| out.summaries[i * nl + j].as_ref().map(|s| ls.edp.value(s)))
+                        .map(|j| out.edps[i * nl + j].as_ref().map(|e| e[k]))
                         .collect()
                 })
                 .collect()

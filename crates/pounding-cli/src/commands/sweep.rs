@@ -7,77 +7,124 @@ use crate::error::{input, CliError};
 use crate::progress::{progress, workers};
 use pounding::analysis::RunOptions;
 use pounding_study::headline::{headline, Cell};
-use pounding_study::input::write_atomic;
+use pounding_study::input::write_atomic_with;
 use pounding_study::store::{Store, StoreError};
 use pounding_study::study::Study;
 use pounding_study::summary::RunSummary;
-use pounding_study::sweep;
+use pounding_study::sweep::{self, Swept};
+
+/// Each run's outcome read back from the store, one at a time, in study order: summaries are not held.
+fn each_outcome(
+    swept: &Swept,
+    store: &Store,
+    mut f: impl FnMut(usize, Result<RunSummary, String>) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    for i in 0..swept.keys.len() {
+        let outcome = swept
+            .outcome(i, Some(store))
+            .map_err(|e| CliError::Io(e.to_string()))?
+            .and_then(|text| RunSummary::from_json(&text));
+        f(i, outcome)?;
+    }
+    Ok(())
+}
 
 /// `runs.csv`: index, key, status, the axes' values, the headline results (the union of every run's
-/// columns, in the order they first appear), the error.
-fn runs_csv(
+/// columns, in the order they first appear), the error; written row by row. Returns the failed runs'
+/// count and the first five with their messages.
+fn write_runs_csv(
     study: &Study,
-    prepared: &[sweep::Prepared],
-    outcomes: &[Result<RunSummary, String>],
-) -> Result<Vec<u8>, csv::Error> {
-    let rows: Vec<Option<Vec<(String, Cell)>>> = outcomes
-        .iter()
-        .map(|o| o.as_ref().ok().map(headline))
-        .collect();
-    let mut columns: Vec<&str> = Vec::new();
-    for (c, _) in rows.iter().flatten().flatten() {
-        if !columns.contains(&c.as_str()) {
-            columns.push(c);
-        }
-    }
-    let mut wtr = csv::Writer::from_writer(Vec::new());
-    let mut header = vec!["index", "key", "status"];
-    header.extend(study.axes.iter().map(|a| a.name.as_str()));
-    header.extend(columns.iter().copied());
-    header.push("error");
-    wtr.write_record(&header)?;
-    let mut buf = pounding_study::format::Shortest::new();
-    for (i, ((p, o), row)) in prepared.iter().zip(outcomes).zip(&rows).enumerate() {
-        wtr.write_field(i.to_string())?;
-        wtr.write_field(&p.key)?;
-        wtr.write_field(if o.is_ok() { "ok" } else { "error" })?;
-        for c in &study.variants[i].coords {
-            wtr.write_field(c)?;
-        }
-        for c in &columns {
-            let cell = row.iter().flatten().find(|(k, _)| k == c).map(|(_, v)| *v);
-            match cell {
-                Some(Cell::Number(x)) => wtr.write_field(buf.format(x))?,
-                Some(Cell::Count(n)) => wtr.write_field(n.to_string())?,
-                None => wtr.write_field("")?,
+    swept: &Swept,
+    store: &Store,
+    path: &std::path::Path,
+) -> Result<(usize, Vec<(usize, String)>), CliError> {
+    let mut columns: Vec<String> = Vec::new();
+    each_outcome(swept, store, |_, o| {
+        for (c, _) in o.as_ref().map(headline).unwrap_or_default() {
+            if !columns.contains(&c) {
+                columns.push(c);
             }
         }
-        wtr.write_field(o.as_ref().err().map_or("", String::as_str))?;
-        wtr.write_record(None::<&[u8]>)?;
-    }
-    wtr.into_inner().map_err(|e| e.into_error().into())
+        Ok(())
+    })?;
+    let mut failed = (0, Vec::new());
+    let mut header = vec!["index", "key", "status"];
+    header.extend(study.axes.iter().map(|a| a.name.as_str()));
+    header.extend(columns.iter().map(String::as_str));
+    header.push("error");
+    let io = |e: std::io::Error| CliError::Io(format!("cannot write {}: {e}", path.display()));
+    let mut inner = None;
+    write_atomic_with(path, |w| {
+        let mut wtr = csv::Writer::from_writer(w);
+        let mut buf = pounding_study::format::Shortest::new();
+        wtr.write_record(&header)?;
+        let r = each_outcome(swept, store, |i, o| {
+            let csv_err = |e: csv::Error| CliError::Io(format!("cannot write runs.csv: {e}"));
+            let row = o.as_ref().map(headline).unwrap_or_default();
+            wtr.write_field(i.to_string()).map_err(csv_err)?;
+            wtr.write_field(swept.key(i)).map_err(csv_err)?;
+            wtr.write_field(if o.is_ok() { "ok" } else { "error" })
+                .map_err(csv_err)?;
+            for c in study.variant(i).2 {
+                wtr.write_field(c).map_err(csv_err)?;
+            }
+            for c in &columns {
+                match row.iter().find(|(k, _)| k == c).map(|(_, v)| *v) {
+                    Some(Cell::Number(x)) => wtr.write_field(buf.format(x)),
+                    Some(Cell::Count(n)) => wtr.write_field(n.to_string()),
+                    None => wtr.write_field(""),
+                }
+                .map_err(csv_err)?;
+            }
+            let error = o.as_ref().err().map_or("", String::as_str);
+            wtr.write_field(error).map_err(csv_err)?;
+            wtr.write_record(None::<&[u8]>).map_err(csv_err)?;
+            if let Err(e) = o {
+                failed.0 += 1;
+                if failed.1.len() < 5 {
+                    failed.1.push((i, e));
+                }
+            }
+            Ok(())
+        });
+        wtr.flush()?;
+        // A failure to read the store is kept to say it as it is; the file is not written.
+        r.map_err(|e| {
+            inner = Some(e);
+            std::io::Error::other("store")
+        })
+    })
+    .map_err(|e| inner.take().unwrap_or_else(|| io(e)))?;
+    Ok(failed)
 }
 
 /// `pounding sweep`.
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     let workers = workers(a)?;
     let study = Study::read(&a.study).map_err(|e| input(e.0))?;
-    let prepared = sweep::prepare(study.scenarios(), workers);
-    let id = sweep::study_id(&prepared);
+    let n = study.len();
+    let id = study.id();
+    let scenario = |i: usize| {
+        let (value, label, _) = study.variant(i);
+        (value, label)
+    };
+    // The identity a store of the first layout knows this study by: the hash of every run's key.
+    let legacy = || sweep::study_id(&sweep::prepare((0..n).map(scenario).collect(), workers));
     let store_path = a.out.join("study.sqlite");
     let store_err = |e: StoreError| match e {
         StoreError::Mismatch(m) => input(m),
         StoreError::Io(m) => CliError::Io(m),
     };
     // Everything about the input is checked before the folder or the store is touched.
-    Store::check(&store_path, &id, prepared.len()).map_err(store_err)?;
+    Store::check(&store_path, &id, n, &legacy).map_err(store_err)?;
     std::fs::create_dir_all(&a.out)
         .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
-    let mut store = Store::open(&store_path, &id, prepared.len()).map_err(store_err)?;
+    let mut store = Store::open(&store_path, &id, n, &legacy).map_err(store_err)?;
 
     let (bar, mut report) = progress(a.quiet);
-    let outcomes = sweep::run(
-        &prepared,
+    let swept = sweep::run(
+        n,
+        &scenario,
         workers,
         &RunOptions::summary_only(),
         Some(&mut store),
@@ -87,41 +134,23 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     drop(report);
     bar.borrow().finish();
     let skipped = bar.borrow().skipped;
-    let runs_csv = a.out.join("runs.csv");
-    let text = runs_csv_bytes(&study, &prepared, &outcomes)?;
-    write_atomic(&runs_csv, &text)
-        .map_err(|e| CliError::Io(format!("cannot write {}: {e}", runs_csv.display())))?;
-    let failed: Vec<(usize, &String)> = outcomes
-        .iter()
-        .enumerate()
-        .filter_map(|(i, o)| o.as_ref().err().map(|e| (i, e)))
-        .collect();
-    for (i, e) in failed.iter().take(5) {
+    let (failed, first) = write_runs_csv(&study, &swept, &store, &a.out.join("runs.csv"))?;
+    for (i, e) in &first {
         eprintln!("run {i}: {e}");
     }
-    if failed.len() > 5 {
+    if failed > first.len() {
         eprintln!(
             "... and {} more failed runs (see runs.csv)",
-            failed.len() - 5
+            failed - first.len()
         );
     }
     println!(
         "{}: {} ok, {} failed ({} already in the store); wrote {}: study.sqlite, runs.csv",
-        pounding::words::count(prepared.len(), "run", None),
-        prepared.len() - failed.len(),
-        failed.len(),
+        pounding::words::count(n, "run", None),
+        n - failed,
+        failed,
         skipped,
         a.out.display()
     );
     Ok(())
-}
-
-/// `runs.csv`'s bytes, or the failure to format them.
-fn runs_csv_bytes(
-    study: &Study,
-    prepared: &[sweep::Prepared],
-    outcomes: &[Result<RunSummary, String>],
-) -> Result<Vec<u8>, CliError> {
-    runs_csv(study, prepared, outcomes)
-        .map_err(|e| CliError::Io(format!("cannot write runs.csv: {e}")))
 }

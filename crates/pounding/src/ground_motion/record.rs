@@ -44,10 +44,27 @@ pub struct Peaks {
     pub pgd: f64,
 }
 
+/// Accelerations below [`crate::limits::MIN_MAGNITUDE`] in magnitude set to 0: zero for any structure, and
+/// they would carry subnormal numbers into the analysis.
+fn flush_tiny(acc: &mut [f64]) {
+    for a in acc.iter_mut() {
+        if !crate::limits::not_tiny(*a) {
+            *a = 0.0;
+        }
+    }
+}
+
 impl Record {
     /// A record named `name` with time step `dt` (s, > 0), first sample time `t0` (s, >= 0) and accelerations
     /// in m/s^2 (at least one, all finite).
-    pub fn new(name: impl Into<String>, dt: f64, t0: f64, acc: Vec<f64>) -> Result<Self, Error> {
+    ///
+    /// Accelerations smaller than [`crate::limits::MIN_MAGNITUDE`] in magnitude are read as 0.
+    pub fn new(
+        name: impl Into<String>,
+        dt: f64,
+        t0: f64,
+        mut acc: Vec<f64>,
+    ) -> Result<Self, Error> {
         check(
             "dt",
             dt,
@@ -72,6 +89,7 @@ impl Record {
                 allowed: "finite values of at most 1e5 m/s^2 (about 1e4 g) in magnitude",
             });
         }
+        flush_tiny(&mut acc);
         Ok(Self {
             name: name.into(),
             dt,
@@ -164,10 +182,12 @@ impl Record {
         check(
             "scale",
             scale,
-            (peak * scale).abs() <= crate::limits::MAX_GROUND_ACCELERATION,
-            "a finite scale that keeps the peak acceleration at most 1e5 m/s^2",
+            (peak * scale).abs() <= crate::limits::MAX_GROUND_ACCELERATION
+                && crate::limits::not_tiny(scale),
+            "a finite scale, 0 or at least 1e-30 in magnitude, that keeps the peak acceleration at most 1e5 m/s^2",
         )?;
         self.acc.iter_mut().for_each(|a| *a *= scale);
+        flush_tiny(&mut self.acc);
         Ok(self)
     }
 
