@@ -212,22 +212,9 @@ fn run<'py>(
         ..RunOptions::default()
     };
     let mut interrupted = None;
-    let mut last = std::time::Instant::now();
     let results = py.allow_threads(|| {
-        loaded.scenario.run_with_options(&options, &mut |_| {
-            // Ctrl-C reaches Python only with the GIL: look for it every 0.1 s.
-            if last.elapsed().as_secs_f64() < 0.1 {
-                return ControlFlow::Continue(());
-            }
-            last = std::time::Instant::now();
-            match Python::with_gil(|py| py.check_signals()) {
-                Ok(()) => ControlFlow::Continue(()),
-                Err(e) => {
-                    interrupted = Some(e);
-                    ControlFlow::Break(())
-                }
-            }
-        })
+        let mut go_on = ctrl_c(&mut interrupted);
+        loaded.scenario.run_with_options(&options, &mut |_| go_on())
     });
     if let Some(e) = interrupted {
         return Err(e);
@@ -272,6 +259,26 @@ fn keys(py: Python<'_>, scenarios: Vec<String>) -> (Vec<String>, String) {
     let p = prepare(py, scenarios, vec![String::new(); n], 1);
     let id = sweep::study_id(&p);
     (p.into_iter().map(|p| p.key).collect(), id)
+}
+
+/// A callback for long work on this (the calling) thread with the GIL released: Ctrl-C reaches Python only
+/// with the GIL, so it takes the GIL and looks for a signal at most every 0.1 s; a KeyboardInterrupt is kept
+/// in `interrupted` and the work told to stop.
+fn ctrl_c(interrupted: &mut Option<PyErr>) -> impl FnMut() -> ControlFlow<()> + '_ {
+    let mut last = std::time::Instant::now();
+    move || {
+        if last.elapsed().as_secs_f64() < 0.1 {
+            return ControlFlow::Continue(());
+        }
+        last = std::time::Instant::now();
+        match Python::with_gil(|py| py.check_signals()) {
+            Ok(()) => ControlFlow::Continue(()),
+            Err(e) => {
+                *interrupted = Some(e);
+                ControlFlow::Break(())
+            }
+        }
+    }
 }
 
 /// A one-line progress report on stderr: `runs 1234/10000, 3 failed, 12.3 s, about 4 s left`.
@@ -491,9 +498,19 @@ fn spectrum(
                 .map_err(pounding::ground_motion::RecordError::Value)
         })
         .map_err(|e| input_err(pounding_study::input::record_message(&spec, e)))?;
-    let s = py
-        .allow_threads(|| pounding::ground_motion::spectrum::spectrum(&r, damping, &periods))
-        .map_err(|e| input_err(e.to_string()))?;
+    let mut interrupted = None;
+    let s = py.allow_threads(|| {
+        pounding::ground_motion::spectrum::spectrum_with(
+            &r,
+            damping,
+            &periods,
+            &mut ctrl_c(&mut interrupted),
+        )
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let s = s.map_err(|e| input_err(e.to_string()))?;
     Ok((s.sd, s.psv, s.psa))
 }
 
@@ -521,11 +538,20 @@ fn separation(
         ),
         (None, None) => return Err(input_err("scenario: give a dict or a path")),
     };
-    let v = py
-        .allow_threads(|| {
-            pounding_study::separation::report_message(&value, &label, &records, aligned_factor)
-        })
-        .map_err(input_err)?;
+    let mut interrupted = None;
+    let v = py.allow_threads(|| {
+        pounding_study::separation::report_with(
+            &value,
+            &label,
+            &records,
+            aligned_factor,
+            &mut ctrl_c(&mut interrupted),
+        )
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let v = v.map_err(|(k, m)| input_err(dict_message(k, m)))?;
     json_text(&v)
 }
 

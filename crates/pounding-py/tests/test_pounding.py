@@ -619,3 +619,29 @@ def test_bad_arguments_raise_input_error_naming_them(base, tmp_path):
         assert "\n" not in str(e.value) and len(str(e.value)) < 300
     assert not store.exists()
     assert not (tmp_path / "out").exists()
+
+
+def test_ctrl_c_stops_long_calls_within_half_a_second(base):
+    # Each call takes seconds; SIGINT 0.3 s in must end it with KeyboardInterrupt within 0.5 s.
+    import threading
+
+    tall = copy.deepcopy(base)  # two buildings of 150 storeys: seconds of analysis
+    for b in tall["building"]:
+        b["masses"] = b["masses"] * 150
+        b["stiffnesses"] = [b["stiffnesses"][0] * 150] * 150
+        b["heights"] = [3.0] * 150
+    suite = [f"synthetic-{i}" for i in range(1, 400)]
+    calls = {
+        "spectrum": lambda: pounding.spectrum("el-centro-1940", periods=[1e-3] * 790),
+        "separation": lambda: pounding.separation(base, records=suite),
+        "run": lambda: pounding.run(tall, histories=False),
+    }
+    for name, call in calls.items():
+        timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+        t0 = time.monotonic()
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            call()
+        late = time.monotonic() - t0 - 0.3
+        timer.join()
+        assert late < 0.5, f"{name}: stopped {late:.2f} s after Ctrl-C"

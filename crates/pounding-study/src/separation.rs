@@ -4,9 +4,11 @@
 use crate::input::{dict_message, from_value};
 use crate::study::set_record;
 use pounding::analysis::RunOptions;
-use pounding::separation::{separation, Level};
+use pounding::separation::{separation_with, Level};
 use serde::Serialize;
 use serde_json::{json, Map, Value};
+use std::ops::ControlFlow;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The contact levels of one pair of neighbours under one record.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -176,6 +178,20 @@ pub fn report(
     records: &[String],
     aligned_factor: Option<f64>,
 ) -> Result<SeparationReport, (Option<String>, String)> {
+    report_with(scenario, label, records, aligned_factor, &mut || {
+        ControlFlow::Continue(())
+    })
+}
+
+/// [`report`], asking `go_on` on the calling thread about every 0.05 s whether to go on while the runs work
+/// on other threads; `Break` stops every run within one progress report and ends in an error that says so.
+pub fn report_with(
+    scenario: &Value,
+    label: &str,
+    records: &[String],
+    aligned_factor: Option<f64>,
+    go_on: &mut dyn FnMut() -> ControlFlow<()>,
+) -> Result<SeparationReport, (Option<String>, String)> {
     let variants: Vec<(Option<&String>, Value)> = if records.is_empty() {
         vec![(None, scenario.clone())]
     } else {
@@ -188,6 +204,7 @@ pub fn report(
             })
             .collect()
     };
+    let cancel = AtomicBool::new(false);
     // Each record's run is independent: on every core, in order.
     let one =
         |(record, v): &(Option<&String>, Value)| -> Result<RecordReport, (Option<String>, String)> {
@@ -198,10 +215,17 @@ pub fn report(
                 .iter()
                 .map(|b| b.name.clone())
                 .collect();
-            let pairs = separation(
+            let pairs = separation_with(
                 &loaded.scenario,
                 aligned_factor,
                 &RunOptions::summary_only(),
+                &mut |_| {
+                    if cancel.load(Ordering::Relaxed) {
+                        ControlFlow::Break(())
+                    } else {
+                        ControlFlow::Continue(())
+                    }
+                },
             )
             .map_err(|e| match e {
                 pounding::Error::Parameter { .. } => (None, e.to_string()),
@@ -219,7 +243,39 @@ pub fn report(
             })
         };
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let results = crate::sweep::parallel_map(&variants, threads, one);
+    let finished = AtomicBool::new(false);
+    let work = || {
+        let r = crate::sweep::parallel_map(&variants, threads, |v| {
+            if cancel.load(Ordering::Relaxed) {
+                Err((None, String::new()))
+            } else {
+                one(v)
+            }
+        });
+        finished.store(true, Ordering::Release);
+        r
+    };
+    let results = std::thread::scope(|s| {
+        match std::thread::Builder::new().spawn_scoped(s, work) {
+            Ok(h) => {
+                while !finished.load(Ordering::Acquire) {
+                    std::thread::sleep(std::time::Duration::from_millis(50));
+                    if go_on().is_break() {
+                        cancel.store(true, Ordering::Relaxed);
+                    }
+                }
+                h.join().ok()
+            }
+            // No thread for the waiting: the work here, without asking.
+            Err(_) => Some(work()),
+        }
+    });
+    let Some(results) = results else {
+        return Err((None, "separation failed: a worker thread stopped".into()));
+    };
+    if cancel.load(Ordering::Relaxed) {
+        return Err((None, "separation cancelled".into()));
+    }
     // The first error in record order, as a sequential loop would give.
     let mut runs = results.into_iter().collect::<Result<Vec<_>, _>>()?;
     if runs.len() == 1 {

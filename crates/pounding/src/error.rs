@@ -71,6 +71,12 @@ pub enum Error {
         /// Time reached, s.
         t: f64,
     },
+    /// The caller stopped a computation other than a run (a spectrum) through its callback.
+    #[error("the {what} was cancelled")]
+    Interrupted {
+        /// What was stopped.
+        what: &'static str,
+    },
     /// A result is not a finite number (the scenario's scales leave the range of `f64`).
     #[error("the result {what} is not a finite number: the scenario's scales leave the range of floating-point numbers")]
     NotFinite {

@@ -81,6 +81,19 @@ pub fn separation(
     aligned_factor: Option<f64>,
     options: &RunOptions,
 ) -> Result<Vec<Pair>, Error> {
+    separation_with(scenario, aligned_factor, options, &mut |_| {
+        ControlFlow::Continue(())
+    })
+}
+
+/// [`separation`], with the run without contact reporting to `progress` as
+/// [`Scenario::run_with_options`] does (`Break` cancels it: [`Error::Cancelled`]).
+pub fn separation_with(
+    scenario: &Scenario,
+    aligned_factor: Option<f64>,
+    options: &RunOptions,
+    progress: &mut dyn FnMut(crate::analysis::Progress) -> ControlFlow<()>,
+) -> Result<Vec<Pair>, Error> {
     if let Some(f) = aligned_factor {
         crate::error::check(
             "aligned_factor",
@@ -94,7 +107,7 @@ pub fn separation(
         histories: false,
         ..options.clone()
     };
-    let r = free.run_with_options(&options, &mut |_| ControlFlow::Continue(()))?;
+    let r = free.run_with_options(&options, progress)?;
     let b = free.buildings();
     let pairs = free.sites().iter().zip(&r.sites).filter_map(|(site, lr)| {
         let SiteKind::Between { left, right } = site.kind else {

@@ -19,6 +19,9 @@ pub(super) struct Recorders<'p> {
     cancelled: bool,
     pub t_end: f64,
     last_report: f64,
+    /// Segments since the last report: a run that crawls (tiny steps) still reports, so that it can be
+    /// cancelled promptly.
+    unreported: u32,
 }
 
 impl<'p> Recorders<'p> {
@@ -40,6 +43,7 @@ impl<'p> Recorders<'p> {
             cancelled: false,
             t_end,
             last_report: f64::NEG_INFINITY,
+            unreported: 0,
         }
     }
 }
@@ -53,8 +57,13 @@ impl Observer for Recorders<'_> {
         if let Some(h) = self.histories.as_mut() {
             h.segment(seg);
         }
-        if seg.t1 - self.last_report >= 0.005 * self.t_end || seg.t1 >= self.t_end {
+        self.unreported += 1;
+        if seg.t1 - self.last_report >= 0.005 * self.t_end
+            || seg.t1 >= self.t_end
+            || self.unreported >= 256
+        {
             self.last_report = seg.t1;
+            self.unreported = 0;
             let flow = (self.progress)(Progress {
                 t: seg.t1,
                 duration: self.t_end,

@@ -63,8 +63,9 @@ impl Scenario {
         })
     }
 
-    /// Runs the analysis, telling `progress` how far it has got (for progress bars); `progress` returns
-    /// `ControlFlow::Break(())` to cancel the run ([`Error::Cancelled`]).
+    /// Runs the analysis, telling `progress` how far it has got (for progress bars) each time the run advances
+    /// 0.5 % of its duration and at least every 256 steps (so that a run that crawls can be cancelled
+    /// promptly); `progress` returns `ControlFlow::Break(())` to cancel the run ([`Error::Cancelled`]).
     pub fn run_with(
         &self,
         progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
