@@ -1,12 +1,16 @@
-//! What can stop a command: bad input (exit code 2) or a failure to write output (exit code 1).
+//! What can stop a command: bad input (exit code 2), a failure to write output (exit code 1), or Ctrl-C
+//! (exit code 130).
 
-/// What can stop a command: bad input (exit code 2) or a failure to write output (exit code 1).
+/// What can stop a command: bad input (exit code 2), a failure to write output (exit code 1), or Ctrl-C
+/// (exit code 130).
 #[derive(Debug)]
 pub enum CliError {
     /// Bad input: one line naming the parameter, the value and what is allowed.
     Input(String),
     /// An output could not be written.
     Io(String),
+    /// Ctrl-C stopped the work: what was kept.
+    Interrupted(String),
 }
 
 impl From<pounding::Error> for CliError {
@@ -20,6 +24,12 @@ impl From<pounding::Error> for CliError {
                 "--{} {value} is not allowed: {allowed}",
                 name.replace('_', "-")
             )),
+            pounding::Error::Cancelled { t } => CliError::Interrupted(format!(
+                "the run stopped at t = {t:.3} s; nothing was written"
+            )),
+            pounding::Error::Interrupted { what } => {
+                CliError::Interrupted(format!("the {what} stopped; nothing was written"))
+            }
             other => CliError::Input(other.to_string()),
         }
     }

@@ -5,6 +5,7 @@ mod commands;
 mod describe;
 mod error;
 mod files;
+mod interrupt;
 mod output;
 mod output_set;
 mod plot;
@@ -78,6 +79,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    interrupt::install();
     match commands::run(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(CliError::Input(msg)) => {
@@ -87,6 +89,10 @@ fn main() -> ExitCode {
         Err(CliError::Io(msg)) => {
             eprintln!("error: {msg}");
             ExitCode::from(1)
+        }
+        Err(CliError::Interrupted(msg)) => {
+            eprintln!("interrupted: {msg}");
+            ExitCode::from(interrupt::EXIT_CODE)
         }
     }
 }

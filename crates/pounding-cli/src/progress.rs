@@ -65,9 +65,20 @@ pub fn progress(
             b.set_position(p.done as u64);
             b.set_message(format!("{} failed, {} from the store", p.failed, p.skipped));
         }
-        ControlFlow::Continue(())
+        crate::interrupt::go_on()
     };
     (state, report)
+}
+
+/// The error of a sweep or an IDA that ended early: Ctrl-C (what the store kept), or the store's failure.
+pub fn ended_early(e: pounding_study::sweep::SweepError, store: &std::path::Path) -> CliError {
+    match e {
+        pounding_study::sweep::SweepError::Cancelled => CliError::Interrupted(format!(
+            "every run that finished is in {}; the same command resumes from there",
+            store.display()
+        )),
+        other => CliError::Io(other.to_string()),
+    }
 }
 
 /// The threads of `--workers`, by default the machine's cores.

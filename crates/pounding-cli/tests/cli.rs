@@ -2266,3 +2266,111 @@ fn workers_beyond_sixteen_per_core_are_refused_before_any_work() {
     assert_eq!(err.trim_end().lines().count(), 1, "{err}");
     assert!(!out.exists());
 }
+
+/// Sends SIGINT (Ctrl-C) to `child` once `ready()` holds (or after 30 s), and returns its output and how long
+/// it took to end after the signal, s.
+fn ctrl_c(child: std::process::Child, ready: impl Fn() -> bool) -> (Output, f64) {
+    let start = std::time::Instant::now();
+    while !ready() && start.elapsed().as_secs() < 30 {
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    let pid = child.id().to_string();
+    let sent = std::time::Instant::now();
+    assert!(Command::new("kill")
+        .args(["-INT", &pid])
+        .status()
+        .unwrap()
+        .success());
+    let out = child.wait_with_output().unwrap();
+    (out, sent.elapsed().as_secs_f64())
+}
+
+#[test]
+fn ctrl_c_stops_a_run_and_a_sweep_at_once_and_says_what_was_kept() {
+    let dir = tmp("ctrl-c");
+    // A run of two 150-storey buildings takes seconds: stopped, nothing written.
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let many = |x: &str| vec![x; 150].join(", ");
+    let tall = base
+        .replace("masses = [5.0e5]", &format!("masses = [{}]", many("5.0e5")))
+        .replace("heights = [3.0]", &format!("heights = [{}]", many("3.0")))
+        .replace(
+            "stiffnesses = [7.8957e7]",
+            &format!("stiffnesses = [{}]", many("1.18e10")),
+        )
+        .replace(
+            "stiffnesses = [1.9739e7]",
+            &format!("stiffnesses = [{}]", many("2.96e9")),
+        );
+    let file = dir.join("tall.toml");
+    std::fs::write(&file, tall).unwrap();
+    let out = dir.join("tall");
+    let child = Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args([
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "-q",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let t0 = std::time::Instant::now();
+    let (o, late) = ctrl_c(child, || t0.elapsed().as_secs_f64() > 1.5);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(130), "{err}");
+    assert!(late < 0.5, "{late} s");
+    assert!(
+        err.starts_with("interrupted: the run stopped at t = "),
+        "{err}"
+    );
+    assert!(err.trim_end().ends_with("nothing was written"), "{err}");
+    assert!(!out.exists());
+    // A sweep: stopped with its finished runs in the store, resumed to the end.
+    let gaps: Vec<String> = (0..200).map(|i| format!("{:e}", 1e-4 * i as f64)).collect();
+    let file = study(
+        &dir,
+        "study.toml",
+        &format!("contact.0.gap = [{}]", gaps.join(", ")),
+    );
+    let out = dir.join("sweep");
+    let args = [
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--workers",
+        "1",
+    ];
+    let child = Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let db = out.join("study.sqlite");
+    let (o, late) = ctrl_c(child, || store_count(&db) >= 5);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(130), "{err}");
+    assert!(late < 0.5, "{late} s");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("every run that finished is in") && err.contains("the same command resumes"),
+        "{err}"
+    );
+    let kept = store_count(&db);
+    assert!((5..200).contains(&kept), "{kept}");
+    assert!(!out.join("runs.csv").exists());
+    let o = pounding(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains(&format!("({kept} already in the store)")));
+    assert_eq!(store_count(&db), 200);
+}
+
+fn store_count(db: &std::path::Path) -> usize {
+    rusqlite::Connection::open_with_flags(db, rusqlite::OpenFlags::SQLITE_OPEN_READ_ONLY)
+        .and_then(|c| c.query_row("SELECT count(*) FROM runs", [], |r| r.get::<_, i64>(0)))
+        .map_or(0, |n| n as usize)
+}

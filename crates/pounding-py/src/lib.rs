@@ -607,6 +607,10 @@ fn ida(py: Python<'_>, study: &str, out: &str, workers: usize, progress: bool) -
         Ok(o) => json_text(&o.json),
         Err(IdaError::Input(e)) => Err(input_err(e.0)),
         Err(IdaError::Io(m)) => Err(PyOSError::new_err(m)),
+        // Only Ctrl-C cancels, and it was raised above.
+        Err(IdaError::Cancelled) => Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(
+            "every run that finished is in the store",
+        )),
     }
 }
 

@@ -572,6 +572,8 @@ pub enum IdaError {
     Input(InputError),
     /// The store or the files could not be written.
     Io(String),
+    /// The progress callback asked to stop; every finished run is in the store.
+    Cancelled,
 }
 
 /// Runs the IDA `ida` into `out` (created if missing): `out/study.sqlite` (resumable), `out/runs.csv` and
@@ -623,7 +625,10 @@ pub fn run(
         Some(&mut store),
         progress,
     )
-    .map_err(|e| IdaError::Io(e.to_string()))?;
+    .map_err(|e| match e {
+        crate::sweep::SweepError::Cancelled => IdaError::Cancelled,
+        e => IdaError::Io(e.to_string()),
+    })?;
     // Each run's outcome read back from the store, one at a time: its EDPs kept, its runs.csv row written.
     let mut edps: Vec<Option<Vec<f64>>> = Vec::with_capacity(len);
     let mut rows = RunsCsv::new(ida).map_err(IdaError::Io)?;

@@ -1,7 +1,7 @@
 //! Required separation over one record or a suite: the library's [`pounding::separation`] per record
 //! ([`SeparationReport`]), with the mean, median and 84th percentile of each quantity over the suite.
 
-use crate::input::{dict_message, from_value};
+use crate::input::from_value;
 use crate::study::set_record;
 use pounding::analysis::RunOptions;
 use pounding::separation::{separation_with, Level};
@@ -290,14 +290,4 @@ pub fn report_with(
         records: runs,
         units: units(),
     })
-}
-
-/// [`report`] with a dict's error message.
-pub fn report_message(
-    scenario: &Value,
-    label: &str,
-    records: &[String],
-    aligned_factor: Option<f64>,
-) -> Result<SeparationReport, String> {
-    report(scenario, label, records, aligned_factor).map_err(|(k, m)| dict_message(k, m))
 }

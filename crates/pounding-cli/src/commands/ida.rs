@@ -17,6 +17,10 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
     let out = ida::run(&study, &a.out, workers, &mut report).map_err(|e| match e {
         IdaError::Input(e) => input(e.0),
         IdaError::Io(m) => CliError::Io(m),
+        IdaError::Cancelled => crate::progress::ended_early(
+            pounding_study::sweep::SweepError::Cancelled,
+            &a.out.join("study.sqlite"),
+        ),
     })?;
     drop(report);
     bar.borrow().finish();

@@ -57,7 +57,12 @@ fn record_spectrum(a: &SpectrumArgs) -> Result<(), CliError> {
     check_out(&a.out)?;
     let r = load_record(&a.record)?;
     let periods = a.periods.clone().unwrap_or_else(default_periods);
-    let s = pounding::ground_motion::spectrum::spectrum(&r, a.damping, &periods)?;
+    let s = pounding::ground_motion::spectrum::spectrum_with(
+        &r,
+        a.damping,
+        &periods,
+        &mut crate::interrupt::go_on,
+    )?;
     let figs = vec![
         crate::plot::analyses::record(
             &r,

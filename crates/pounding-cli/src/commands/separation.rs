@@ -23,9 +23,21 @@ pub fn run(a: &SeparationArgs) -> Result<(), CliError> {
     }
     let label = a.scenario.display().to_string();
     check_out(&a.out)?;
-    let v =
-        pounding_study::separation::report_message(&file.value, &label, &records, a.aligned_factor)
-            .map_err(|m| input(m.replace("aligned_factor = ", "--aligned-factor ")))?;
+    let v = pounding_study::separation::report_with(
+        &file.value,
+        &label,
+        &records,
+        a.aligned_factor,
+        &mut crate::interrupt::go_on,
+    )
+    .map_err(|(k, m)| {
+        if crate::interrupt::pressed() {
+            CliError::Interrupted("the separation stopped; nothing was written".into())
+        } else {
+            let m = pounding_study::input::dict_message(k, m);
+            input(m.replace("aligned_factor = ", "--aligned-factor "))
+        }
+    })?;
     let fig = crate::plot::analyses::separation(
         &v,
         &format!("{label}; {} record(s)", records.len().max(1)),

@@ -130,7 +130,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         Some(&mut store),
         &mut report,
     )
-    .map_err(|e| CliError::Io(e.to_string()))?;
+    .map_err(|e| crate::progress::ended_early(e, &store_path))?;
     drop(report);
     bar.borrow().finish();
     let skipped = bar.borrow().skipped;

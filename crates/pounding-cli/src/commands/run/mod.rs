@@ -93,12 +93,15 @@ fn analyse(loaded: &Loaded, quiet: bool) -> Result<Results, CliError> {
                 pounding::words::count(p.impacts, "impact", None)
             ));
         }
-        std::ops::ControlFlow::Continue(())
+        crate::interrupt::go_on()
     });
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    results.map_err(|e| input(format!("analysis failed: {e}")))
+    results.map_err(|e| match e {
+        pounding::Error::Cancelled { .. } => e.into(),
+        e => input(format!("analysis failed: {e}")),
+    })
 }
 
 /// How much of a run's cost lies before time `t` (s), in record-seconds: a second of free vibration after
