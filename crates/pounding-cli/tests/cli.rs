@@ -1562,6 +1562,14 @@ fn record_synth_is_reproducible_runs_as_a_record_and_refuses_bad_filters() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("--wf 20 is not allowed: 0 < wf < wg"), "{err}");
     assert!(!c.exists());
+    // A device node or a folder is not replaced by the record.
+    for target in ["/dev/null", dir.to_str().unwrap()] {
+        let o = pounding(&["record", "synth", "--seed", "1", "--out", target]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains("is not a regular file"), "{err}");
+    }
+    assert!(!std::fs::metadata("/dev/null").unwrap().is_file());
 }
 
 #[test]

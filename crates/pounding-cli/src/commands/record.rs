@@ -19,6 +19,14 @@ pub fn run(cmd: RecordCmd) -> Result<(), CliError> {
 }
 
 fn record_synth(a: &SynthArgs) -> Result<(), CliError> {
+    if let Ok(m) = std::fs::symlink_metadata(&a.out) {
+        if !m.is_file() && !m.file_type().is_symlink() {
+            return Err(crate::error::input(format!(
+                "--out {} is not a regular file (a folder, a device or a FIFO); allowed: a new file, or a regular file to replace",
+                a.out.display()
+            )));
+        }
+    }
     let p = a.params();
     let name = a
         .out
@@ -32,6 +40,17 @@ fn record_synth(a: &SynthArgs) -> Result<(), CliError> {
     );
     for (k, x) in r.accelerations().iter().enumerate() {
         text.push_str(&format!("{},{x:e}\n", fmt_num(r.t0() + k as f64 * r.dt())));
+    }
+    let limit = pounding_study::input::RECORD_FILE_LIMIT;
+    if text.len() as u64 > limit {
+        return Err(crate::error::input(format!(
+            "--duration {} / --dt {} make {} samples, a file of {} MiB; allowed: at most {} MiB, what every record reader takes (a shorter duration or a larger dt)",
+            p.duration,
+            p.dt,
+            r.npts(),
+            text.len() >> 20,
+            limit >> 20
+        )));
     }
     write_atomic(&a.out, text.as_bytes())
         .map_err(|e| CliError::Io(format!("cannot write {}: {e}", a.out.display())))?;
