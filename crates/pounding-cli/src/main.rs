@@ -82,16 +82,17 @@ fn main() -> ExitCode {
     interrupt::install();
     match commands::run(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
+        // One line under 300 characters, whatever the message quotes.
         Err(CliError::Input(msg)) => {
-            eprintln!("error: {msg}");
+            eprintln!("error: {}", pounding_study::one_line(&msg, 292));
             ExitCode::from(2)
         }
         Err(CliError::Io(msg)) => {
-            eprintln!("error: {msg}");
+            eprintln!("error: {}", pounding_study::one_line(&msg, 292));
             ExitCode::from(1)
         }
         Err(CliError::Interrupted(msg)) => {
-            eprintln!("interrupted: {msg}");
+            eprintln!("interrupted: {}", pounding_study::one_line(&msg, 286));
             ExitCode::from(interrupt::EXIT_CODE)
         }
     }

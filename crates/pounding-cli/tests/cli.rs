@@ -2382,3 +2382,88 @@ fn store_count(db: &std::path::Path) -> usize {
         .and_then(|c| c.query_row("SELECT count(*) FROM runs", [], |r| r.get::<_, i64>(0)))
         .map_or(0, |n| n as usize)
 }
+
+#[cfg(unix)]
+#[test]
+fn a_record_file_whose_name_is_not_utf8_is_named_not_lost() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = tmp("not-utf8");
+    let suite = dir.join("suite");
+    std::fs::create_dir_all(&suite).unwrap();
+    let synth = |seed: &str, to: &std::path::Path| {
+        let o = pounding(&[
+            "record",
+            "synth",
+            "--seed",
+            seed,
+            "--out",
+            to.to_str().unwrap(),
+        ]);
+        assert!(o.status.success());
+    };
+    synth("1", &suite.join("a.csv"));
+    let tmp_b = dir.join("b.csv");
+    synth("2", &tmp_b);
+    std::fs::rename(
+        &tmp_b,
+        suite.join(std::ffi::OsStr::from_bytes(b"b\xff.csv")),
+    )
+    .unwrap();
+    // A folder, a glob (the glob crate passes over such names), in a sweep, an IDA and separation.
+    for record in ["suite", "suite/*.csv"] {
+        let file = study(&dir, "study.toml", &format!("record = [{record:?}]"));
+        let o = pounding(&[
+            "sweep",
+            file.to_str().unwrap(),
+            "--out",
+            dir.join("o").to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(
+            err.contains("b\\xFF.csv\" is not allowed: a file name that is not UTF-8"),
+            "{err}"
+        );
+        let o = pounding(&[
+            "separation",
+            &example("two-sdof.toml"),
+            "--records",
+            suite.join("*.csv").to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&o.stderr).contains("not UTF-8"));
+    }
+    assert!(!dir.join("o").exists());
+}
+
+#[test]
+fn axes_combine_in_the_order_written_even_when_toml_groups_their_keys() {
+    // gap-sweep.toml writes contact.0.model, scale, contact.0.gap: TOML parses the two contact keys into one
+    // table; docs/studies.md names run 1 as papi, scale 1, gap 0.005.
+    let out = tmp("axes-order").join("out");
+    let study = format!(
+        "{}/../../examples/studies/gap-sweep.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let o = pounding(&["sweep", &study, "--out", out.to_str().unwrap(), "-q"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert!(
+        lines[0].starts_with("index,key,status,contact.0.model,scale,contact.0.gap,"),
+        "{}",
+        lines[0]
+    );
+    let cells = |l: &str| {
+        l.split(',')
+            .skip(3)
+            .take(3)
+            .map(String::from)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(cells(lines[1]), ["papi", "1.0", "0.0"]);
+    assert_eq!(cells(lines[2]), ["papi", "1.0", "0.005"]);
+    assert_eq!(cells(lines[9]), ["papi", "1.5", "0.0"]);
+    assert_eq!(lines.len(), 49);
+}

@@ -24,8 +24,9 @@ create_exception!(
     "Bad input: the one-line message the command line gives (file and line, or the key's dotted path; the value; what is allowed)."
 );
 
+/// InputError with the one line the command line would print.
 fn input_err(msg: impl Into<String>) -> PyErr {
-    InputError::new_err(msg.into())
+    InputError::new_err(pounding_study::one_line(&msg.into(), 299))
 }
 
 fn store_err(e: StoreError) -> PyErr {

@@ -17,6 +17,25 @@ pub mod summary;
 pub mod sweep;
 pub mod tables;
 
+/// `msg` as one line of at most `max` characters, as every error is shown: control characters (a newline in
+/// an axis name, a tab in a record's name) written as escapes, and a message longer than `max` cut with
+/// ` ...` (a last resort: messages quote long values shortened where they are made).
+pub fn one_line(msg: &str, max: usize) -> String {
+    let mut out = String::with_capacity(msg.len().min(max));
+    for c in msg.trim_end().chars() {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    if out.chars().count() > max {
+        out = out.chars().take(max.saturating_sub(4)).collect();
+        out.push_str(" ...");
+    }
+    out
+}
+
 /// Bad input: one line that names the file and line (or the key's dotted path), the value and what is allowed.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct InputError(pub String);
@@ -35,3 +54,18 @@ impl std::fmt::Display for InputError {
 }
 
 impl std::error::Error for InputError {}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn one_line_escapes_control_characters_and_caps_the_length() {
+        assert_eq!(
+            super::one_line("axis \"a\nb\" names no key\n", 80),
+            "axis \"a\\nb\" names no key"
+        );
+        let long = "x".repeat(400);
+        let cut = super::one_line(&long, 292);
+        assert_eq!(cut.chars().count(), 292);
+        assert!(cut.ends_with(" ..."));
+    }
+}

@@ -80,6 +80,41 @@ fn flatten(prefix: &str, table: &Map<String, Value>, out: &mut Vec<(String, Valu
     }
 }
 
+/// Where each axis of the study text's `[axes]` is written (the byte offset of its value), by dotted name.
+fn written_order(text: &str) -> std::collections::HashMap<String, usize> {
+    fn walk(
+        prefix: &str,
+        item: &toml_edit::Item,
+        out: &mut std::collections::HashMap<String, usize>,
+    ) {
+        // Tables, dotted or inline, hold axes; anything else is one.
+        let entries: Vec<(&str, &toml_edit::Item)> = match item.as_table_like() {
+            Some(t) => t.iter().collect(),
+            None => {
+                if let Some(span) = item.span() {
+                    out.insert(prefix.to_string(), span.start);
+                }
+                return;
+            }
+        };
+        for (k, v) in entries {
+            let key = if prefix.is_empty() {
+                k.to_string()
+            } else {
+                format!("{prefix}.{k}")
+            };
+            walk(&key, v, out);
+        }
+    }
+    let mut out = std::collections::HashMap::new();
+    if let Ok(doc) = toml_edit::ImDocument::parse(text) {
+        if let Some(axes) = doc.as_item().get("axes") {
+            walk("", axes, &mut out);
+        }
+    }
+    out
+}
+
 /// Sets the key at dotted `path` of `value` to `new`. Entries of lists must exist; a missing table on the way
 /// is created (the schema then says whether its key exists).
 fn set_path(value: &mut Value, path: &str, new: Value) -> Result<(), String> {
@@ -118,6 +153,14 @@ fn set_path(value: &mut Value, path: &str, new: Value) -> Result<(), String> {
     Ok(())
 }
 
+/// A record file's path as text, or one line naming it when its name is not UTF-8 (a scenario, JSON, holds
+/// only UTF-8 text).
+fn utf8_name(f: PathBuf) -> Result<String, String> {
+    f.into_os_string().into_string().map_err(|os| {
+        format!("record = {os:?} is not allowed: a file name that is not UTF-8; allowed: UTF-8 file names (rename the file)")
+    })
+}
+
 /// The record sources a `record` axis value names, relative to `dir`: a built-in, a file, every file of a
 /// folder, or the files a glob matches (sorted).
 pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
@@ -147,12 +190,26 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
     let p = dir.join(s);
     if s.contains(['*', '?', '[']) {
         let pattern = p.to_string_lossy().into_owned();
-        let mut found: Vec<String> = glob::glob(&pattern)
+        // The glob crate passes over names that are not UTF-8: the folder of a pattern whose wildcards are in
+        // its last part is read for them, so that no record of a suite is left out without a word.
+        if let Some(parent) = p
+            .parent()
+            .filter(|d| !d.to_string_lossy().contains(['*', '?', '[']))
+        {
+            if let Ok(entries) = std::fs::read_dir(parent) {
+                for e in entries.flatten() {
+                    utf8_name(e.path())?;
+                }
+            }
+        }
+        let mut found: Vec<String> = Vec::new();
+        for f in glob::glob(&pattern)
             .map_err(|e| format!("record = {s:?} is not a valid glob: {e}"))?
             .filter_map(Result::ok)
             .filter(|f| f.is_file())
-            .map(|f| f.to_string_lossy().into_owned())
-            .collect();
+        {
+            found.push(utf8_name(f)?);
+        }
         found.sort();
         if found.is_empty() {
             return Err(format!("record = {s:?} matches no file"));
@@ -160,7 +217,8 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
         return Ok(found);
     }
     if p.is_dir() {
-        let mut found: Vec<String> = std::fs::read_dir(&p)
+        let mut found: Vec<String> = Vec::new();
+        for f in std::fs::read_dir(&p)
             .map_err(|e| format!("record = {s:?}: cannot read the folder: {e}"))?
             .filter_map(Result::ok)
             .map(|e| e.path())
@@ -170,8 +228,9 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
                         .file_name()
                         .is_some_and(|n| n.to_string_lossy().starts_with('.'))
             })
-            .map(|f| f.to_string_lossy().into_owned())
-            .collect();
+        {
+            found.push(utf8_name(f)?);
+        }
         found.sort();
         if found.is_empty() {
             return Err(format!("record = {s:?} is a folder with no files"));
@@ -328,7 +387,9 @@ impl Study {
         };
         let base_file = ScenarioFile::read(&base)?;
         let (axes, runs) = match (top.get("axes"), top.get("run")) {
-            (Some(Value::Object(a)), None) => product(path, &dir, &base_file.value, a)?,
+            (Some(Value::Object(a)), None) => {
+                product(path, &dir, &base_file.value, a, &written_order(&text))?
+            }
             (None, Some(Value::Array(runs))) => {
                 let (axes, variants) = list(path, &dir, &base_file.value, runs)?;
                 (axes, Runs::List(variants))
@@ -480,9 +541,13 @@ fn product(
     dir: &Path,
     base: &Value,
     axes_table: &Map<String, Value>,
+    order: &std::collections::HashMap<String, usize>,
 ) -> Result<(Vec<Axis>, Runs), InputError> {
     let mut flat = Vec::new();
     flatten("", axes_table, &mut flat);
+    // In the order written: TOML groups dotted keys of one table (`contact.0.model`, then `scale`, then
+    // `contact.0.gap` parse as contact.0.{model, gap}, scale).
+    flat.sort_by_key(|(name, _)| order.get(name).copied().unwrap_or(usize::MAX));
     if flat.is_empty() {
         return Err(err(path, "[axes] is empty: give at least one axis"));
     }
