@@ -46,7 +46,8 @@ pub struct Level {
     pub peak_left: f64,
     /// Peak displacement of the right building's floor, m.
     pub peak_right: f64,
-    /// `max_t (u_L - u_R)`, m (0 if never positive): the gap at which the floors never touch.
+    /// `max_t (u_L - u_R)`, m (0 if never positive; at most `pl + pr`, its exact bound): the gap at which the
+    /// floors never touch.
     pub required_gap: f64,
     /// `pl + pr` (times the aligned factor where it applies), m.
     pub abs: f64,
@@ -133,7 +134,9 @@ pub fn separation_with(
                     floors: (i, j),
                     peak_left: pl,
                     peak_right: pr,
-                    required_gap: closing.max(0.0),
+                    // max(u_l - u_r) <= max|u_l| + max|u_r| exactly; the two sides are located peaks
+                    // of the same interpolant, and may differ by rounding: held to the bound.
+                    required_gap: closing.max(0.0).min(pl + pr),
                     abs: factor * (pl + pr),
                     srss: factor * pl.hypot(pr),
                     ddc: factor * (pl * pl + pr * pr - 2.0 * rho * pl * pr).max(0.0).sqrt(),
