@@ -208,7 +208,7 @@ impl Impacts {
                 .as_contact()
                 .is_some_and(|ct| matches!(ct.state(), Engagement::Contact { .. }));
             if self.trackers[k].is_some() && engaged {
-                let work = y[sys.layout().block(c.element).start];
+                let work = dissipated(sys, c.element, y);
                 self.record(k, t, None, work);
             }
         }
@@ -289,7 +289,7 @@ impl Observer for Impacts {
             return;
         };
         let (x, v) = sys.deformation(c.element, ev.y);
-        let work = ev.y[sys.layout().block(c.element).start];
+        let work = ct.dissipated(&ev.y[sys.layout().block(c.element)]);
         let keep = self.keep_loops;
         let start = |resting| Tracker {
             time: ev.t,
@@ -347,6 +347,14 @@ impl Impacts {
             }
         }
     }
+}
+
+/// The energy contact element `element` has dissipated in the state `y`, J ([`Contact::dissipated`]).
+pub(crate) fn dissipated(sys: &System, element: usize, y: &[f64]) -> f64 {
+    sys.elements()[element]
+        .law
+        .as_contact()
+        .map_or(0.0, |ct| ct.dissipated(&y[sys.layout().block(element)]))
 }
 
 #[cfg(test)]

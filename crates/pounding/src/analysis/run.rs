@@ -326,7 +326,6 @@ fn site_totals(
     site: usize,
     y: &[f64],
 ) -> SiteResponse {
-    let l = model.system.layout();
     let mine = impacts.iter().filter(|i| i.site == site);
     let ks: Vec<usize> = (0..model.contacts.len())
         .filter(|&k| model.contacts[k].site == site)
@@ -348,7 +347,7 @@ fn site_totals(
         peak_force: mine.clone().map(|i| i.peak_force).fold(pair_peak, f64::max),
         dissipated_energy: ks
             .iter()
-            .map(|&k| y[l.block(model.contacts[k].element).start])
+            .map(|&k| super::impacts::dissipated(&model.system, model.contacts[k].element, y))
             .sum(),
         max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
         max_closing: per(&rec.impacts.max_closing),

@@ -134,6 +134,22 @@ impl ForceLaw {
         }
     }
 
+    /// The elastic part of the law at penetration `d` (m): its force (N) and the energy it stores (J), `k d^n`
+    /// and `k |d|^(n+1) / (n+1)`; the rest of the force is viscous and dissipates, `(F - k d^n) v >= 0`.
+    /// `None` for the bilinear loop, whose force has no potential (its work is counted whole).
+    #[inline]
+    pub fn elastic(&self, d: f64) -> Option<(f64, f64)> {
+        let (k, n) = match *self {
+            ForceLaw::Elastic { k, n }
+            | ForceLaw::HuntCrossley { k, n, .. }
+            | ForceLaw::Jankowski { k, n, .. } => (k, n),
+            ForceLaw::LinearViscous { k, .. } => (k, 1.0),
+            ForceLaw::Bilinear { .. } => return None,
+        };
+        let f = k * spow(d, n);
+        Some((f, f * d / (n + 1.0)))
+    }
+
     /// A function whose sign change marks a kink of the law (where the force is continuous but its slope
     /// is not), so that integration can restart there; `None` for smooth laws.
     pub fn kink(&self, d: f64, phase: Phase, turn: &Turn) -> Option<f64> {

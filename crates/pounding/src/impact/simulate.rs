@@ -99,15 +99,17 @@ pub fn simulate(
         Ground::Constant(-setup.gravity),
     );
     let layout = sys.layout().clone();
-    // The input and damping energies are not read: only the contact's work is controlled.
+    // The input and damping energies are not read: only the contact's works are controlled.
     let mut atol = vec![f64::INFINITY; layout.dim()];
-    atol[layout.block(0).start] = rtol * m * v_i * v_i;
+    for k in layout.block(0) {
+        atol[k] = rtol * m * v_i * v_i;
+    }
     atol[layout.u(0)] = rtol * len;
     atol[layout.v(0)] = rtol * v_i;
     let mut y0 = vec![0.0; layout.dim()];
     y0[layout.v(0)] = v_i;
 
-    let f0 = sys.elements()[0].force(0.0, v_i, &[0.0]);
+    let f0 = sys.elements()[0].force(0.0, v_i, &[0.0, 0.0]);
     let mut rec = Recorder {
         history: opts.history.then(History::default),
         peak: PeakTracker::new(0.0, f0),
@@ -145,7 +147,10 @@ pub fn simulate(
         time_of_peak_force,
         max_penetration: rec.max_penetration,
         contact_duration: out.t,
-        dissipated_energy: out.y[layout.block(0).start],
+        dissipated_energy: sys.elements()[0]
+            .law
+            .as_contact()
+            .map_or(0.0, |c| c.dissipated(&out.y[layout.block(0)])),
         // m d'' = m g - F, so the impulse of F is m (v_i - v_out) + m g T.
         impulse: m * (v_i - v_out) + m * setup.gravity * out.t,
         v_out,
