@@ -24,7 +24,7 @@ pub struct Impact {
     /// Whether the impact had ended before the analysis stopped.
     pub ended: bool,
     /// A resting contact: the ends closed from rest, at a relative velocity below the smallest impact
-    /// velocity used to build a law ([`Scenario::with_min_impact_velocity`]); its law was built with that
+    /// velocity used to build a law ([`crate::analysis::Scenario::with_min_impact_velocity`]); its law was built with that
     /// velocity, and it has no meaningful `e_post`.
     pub resting: bool,
     /// Largest contact force, N.
@@ -188,7 +188,7 @@ impl Results {
     }
 
     /// The first quantity that is not a finite number (its name), if any: a run returns
-    /// [`Error::NotFinite`] rather than such a result.
+    /// [`crate::Error::NotFinite`] rather than such a result.
     pub fn first_non_finite(&self) -> Option<String> {
         // A branch-free fold, which the compiler vectorises: a short-circuiting `any` took 0.8 % of the
         // instructions of a run, this takes 0.5 %.
@@ -258,7 +258,7 @@ pub struct Results {
     pub impacts: Vec<Impact>,
     /// Energy balance.
     pub energy: EnergyBalance,
-    /// Time histories (empty when the run kept none, see [`RunOptions`]).
+    /// Time histories (empty when the run kept none, see [`crate::analysis::RunOptions`]).
     pub histories: Histories,
     /// Integration counts.
     pub statistics: Statistics,
