@@ -2516,3 +2516,157 @@ fn an_elastic_contact_dissipates_nothing_and_no_impact_dissipates_less_than_noth
     }
     assert!(elastic >= 3, "{elastic} impacts of the elastic joint");
 }
+
+/// A sweep's result as its runs.csv, or the failure: exit code and stderr.
+fn sweep_result(study: &std::path::Path, out: &std::path::Path) -> Result<String, (i32, String)> {
+    let o = pounding_within(
+        &[
+            "sweep",
+            study.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "-q",
+            "--workers",
+            "2",
+        ],
+        120.0,
+    )
+    .expect("a sweep hung");
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    match o.status.code() {
+        Some(0) => Ok(std::fs::read_to_string(out.join("runs.csv")).unwrap()),
+        Some(code) => Err((code, err)),
+        None => Err((-1, err)),
+    }
+}
+
+#[test]
+fn stores_damaged_killed_and_raced_end_in_the_uninterrupted_result_or_one_line() {
+    // Seeded (POUNDING_FUZZ_SEED, POUNDING_FUZZ_CASES for more): each case damages a finished store (a byte
+    // flipped anywhere, or a row edited), or kills a sweep at a random moment, or races two studies into one
+    // new folder; then resumes. A resumed study must write, bit for bit, what the uninterrupted one wrote, or
+    // stop with one line and exit 1 or 2; never exit 0 with other results, never panic.
+    let cases = std::env::var("POUNDING_FUZZ_CASES")
+        .ok()
+        .and_then(|c| c.parse::<usize>().ok())
+        .unwrap_or(8);
+    let dir = tmp("fuzz-stores");
+    let gaps: Vec<String> = (0..16).map(|i| format!("{:e}", 2e-3 * i as f64)).collect();
+    let a = study(
+        &dir,
+        "a.toml",
+        &format!("contact.0.gap = [{}]", gaps.join(", ")),
+    );
+    let b = study(&dir, "b.toml", "scale = [0.5, 1.0, 1.5, 2.0]");
+    let clean_a = sweep_result(&a, &dir.join("clean-a")).unwrap();
+    let clean_b = sweep_result(&b, &dir.join("clean-b")).unwrap();
+    let store = std::fs::read(dir.join("clean-a").join("study.sqlite")).unwrap();
+    let mut next = fuzz_stream();
+    let one_line = |case: usize, code: i32, err: &str| {
+        assert!(code == 1 || code == 2, "case {case}: exit {code}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "case {case}: {err}");
+        assert!(err.len() < 300, "case {case}: {err}");
+    };
+    for case in 0..cases {
+        let out = dir.join(format!("case{case}"));
+        std::fs::create_dir_all(&out).unwrap();
+        let db = out.join("study.sqlite");
+        match case % 4 {
+            // A byte flipped anywhere in the finished store.
+            0 => {
+                let mut bytes = store.clone();
+                let at = next(bytes.len());
+                bytes[at] ^= 1 << next(8);
+                std::fs::write(&db, bytes).unwrap();
+            }
+            // A row edited as a person or a tool might.
+            1 => {
+                std::fs::write(&db, &store).unwrap();
+                let conn = rusqlite::Connection::open(&db).unwrap();
+                let edits = [
+                    "UPDATE runs SET summary = NULL WHERE idx = ?1",
+                    "UPDATE runs SET summary = '{}' WHERE idx = ?1",
+                    "UPDATE runs SET summary = 7 WHERE idx = ?1",
+                    "UPDATE runs SET summary = (SELECT summary FROM runs WHERE idx = (?1 + 1) % 16) WHERE idx = ?1",
+                    "UPDATE runs SET summary = replace(summary, '0.0', '0.1') WHERE idx = ?1",
+                    "UPDATE runs SET status = 'error', error = 'x' WHERE idx = ?1",
+                    "UPDATE runs SET digest = NULL WHERE idx = ?1",
+                    "DELETE FROM runs WHERE idx = ?1",
+                    "UPDATE runs SET key = 'k' || key WHERE idx = ?1",
+                ];
+                let edit = edits[next(edits.len())];
+                conn.execute(edit, [next(16) as i64]).unwrap();
+            }
+            // Killed at a random moment, from before its store exists to after its last run.
+            2 => {
+                let mut child = Command::new(env!("CARGO_BIN_EXE_pounding"))
+                    .args([
+                        "sweep",
+                        a.to_str().unwrap(),
+                        "--out",
+                        out.to_str().unwrap(),
+                        "-q",
+                    ])
+                    .stdout(std::process::Stdio::null())
+                    .stderr(std::process::Stdio::null())
+                    .spawn()
+                    .unwrap();
+                std::thread::sleep(std::time::Duration::from_millis(next(400) as u64));
+                let _ = child.kill();
+                child.wait().unwrap();
+            }
+            // Two studies started into one new folder, 0 to 50 ms apart: one runs, the other is refused.
+            _ => {
+                let spawn = |s: &std::path::Path| {
+                    Command::new(env!("CARGO_BIN_EXE_pounding"))
+                        .args([
+                            "sweep",
+                            s.to_str().unwrap(),
+                            "--out",
+                            out.to_str().unwrap(),
+                            "-q",
+                        ])
+                        .stdout(std::process::Stdio::null())
+                        .stderr(std::process::Stdio::piped())
+                        .spawn()
+                        .unwrap()
+                };
+                let first = spawn(&a);
+                std::thread::sleep(std::time::Duration::from_millis(next(50) as u64));
+                let second = spawn(&b);
+                let (fa, fb) = (
+                    first.wait_with_output().unwrap(),
+                    second.wait_with_output().unwrap(),
+                );
+                let codes = (fa.status.code(), fb.status.code());
+                assert!(
+                    matches!(codes, (Some(0), Some(2)) | (Some(2), Some(0))),
+                    "case {case}: exits {codes:?}: {} | {}",
+                    String::from_utf8_lossy(&fa.stderr),
+                    String::from_utf8_lossy(&fb.stderr)
+                );
+                let winner = if codes.0 == Some(0) {
+                    (&a, &clean_a)
+                } else {
+                    (&b, &clean_b)
+                };
+                assert_eq!(
+                    &std::fs::read_to_string(out.join("runs.csv")).unwrap(),
+                    winner.1,
+                    "case {case}"
+                );
+                // The winner's store resumes as its own; the other study is refused, untouched.
+                assert_eq!(
+                    &sweep_result(winner.0, &out).unwrap(),
+                    winner.1,
+                    "case {case}"
+                );
+                continue;
+            }
+        }
+        match sweep_result(&a, &out) {
+            Ok(runs) => assert_eq!(runs, clean_a, "case {case}: resumed results differ"),
+            Err((code, err)) => one_line(case, code, &err),
+        }
+    }
+}

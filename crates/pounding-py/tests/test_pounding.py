@@ -645,3 +645,40 @@ def test_ctrl_c_stops_long_calls_within_half_a_second(base):
         late = time.monotonic() - t0 - 0.3
         timer.join()
         assert late < 0.5, f"{name}: stopped {late:.2f} s after Ctrl-C"
+
+
+def test_arguments_of_every_type_raise_input_error_or_work(base, tmp_path):
+    # Seeded: each public function with one argument replaced by a value of another type or range; the call
+    # returns or raises InputError, never another exception, and never writes where it was refused.
+    import random
+
+    rng = random.Random(int(os.environ.get("POUNDING_FUZZ_SEED", "0")))
+    hostile = [None, True, -1, 0, 2**64, 1.5, float("nan"), float("inf"), "x", b"x", [], {}, [[1.0]], {"a": 1},
+               object(), ["el-centro-1940"], "el-centro-1940", tmp_path]
+    calls = {
+        "run": (pounding.run, [base], {"histories": False}),
+        "sweep": (pounding.sweep, [[base]], {"workers": 1, "progress": False}),
+        "separation": (pounding.separation, [base], {"records": None, "aligned_factor": None}),
+        "spectrum": (pounding.spectrum, ["el-centro-1940"], {"damping": 0.05, "periods": [0.5, 1.0]}),
+        "synthetic": (pounding.synthetic, [1], {"duration": 5.0}),
+        "load_scenario": (pounding.load_scenario, [EXAMPLE], {}),
+        "headline": (pounding.headline, [[]], {}),
+    }
+    cases = int(os.environ.get("POUNDING_FUZZ_CASES", "60"))
+    for case in range(cases):
+        name = rng.choice(sorted(calls))
+        f, args, kwargs = calls[name]
+        args, kwargs = list(args), dict(kwargs)
+        slots = [("arg", i) for i in range(len(args))] + [("kw", k) for k in kwargs]
+        kind, slot = rng.choice(slots)
+        value = rng.choice(hostile)
+        if kind == "arg":
+            args[slot] = value
+        else:
+            kwargs[slot] = value
+        try:
+            f(*args, **kwargs)
+        except pounding.InputError as e:
+            assert "\n" not in str(e) and len(str(e)) < 300, f"case {case} {name}: {e}"
+        except Exception as e:  # noqa: BLE001 - the point of the test
+            raise AssertionError(f"case {case}: {name}({slot} = {value!r}) raised {type(e).__name__}: {e}")

@@ -72,6 +72,20 @@ def _flag(key: str, v: Any) -> bool:
     raise InputError(f"{key} = {_short(v)} is not allowed: True or False")
 
 
+def _number(key: str, v: Any) -> float:
+    """A real number given as ``key`` (NaN and infinity are the library's to refuse, by name)."""
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
+        raise InputError(f"{key} = {_short(v)} is not allowed: a number")
+    return float(v)
+
+
+def _items(key: str, v: Any, what: str) -> list:
+    """The items of an iterable given as ``key`` (a string or a dict is not a list of ``what``)."""
+    if isinstance(v, (str, bytes, dict, os.PathLike)) or not hasattr(v, "__iter__"):
+        raise InputError(f"{key} = {_short(v)} is not allowed: a list (or other iterable) of {what}")
+    return list(v)
+
+
 def _workers(v: Any) -> int:
     """``workers``: None (every core) or a whole number (its range is the library's to check)."""
     if v is None:
@@ -235,12 +249,8 @@ def sweep(
 
 def _texts(scenarios: Iterable[Scenario]):
     """JSON texts and labels of scenarios given as dicts or paths."""
-    if isinstance(scenarios, (dict, str, bytes, os.PathLike)):
-        raise InputError(
-            f"scenarios = {_short(scenarios)} is not allowed: a list (or other iterable) of scenarios, dicts or paths"
-        )
     texts, labels = [], []
-    for s in scenarios:
+    for s in _items("scenarios", scenarios, "scenarios, dicts or paths"):
         if isinstance(s, (str, os.PathLike)):
             d = load_scenario(s)
             labels.append(os.fspath(s))
@@ -258,7 +268,9 @@ def headline(summaries: Iterable[Dict[str, Any]]):
     pandas is installed, else a list of dicts. A summary that is not one (of another version, say) raises
     InputError naming the key that does not fit."""
     rows = []
-    for s in summaries:
+    for s in _items("summaries", summaries, "summaries (dicts)"):
+        if not isinstance(s, dict):
+            raise InputError(f"summaries: {_short(s)} is not allowed: a summary (a dict, as sweep gives)")
         if "error" in s and "buildings" not in s:
             rows.append({"error": s["error"]})
         else:
@@ -287,16 +299,22 @@ def spectrum(
     ``periods`` (s; default 100 from 0.02 to 10 s, evenly spaced in log), by the exact piecewise-linear
     solution with peaks located between samples: a dict of ``damping``, ``periods`` (s), ``sd`` (m), ``psv``
     (m/s) and ``psa`` (m/s^2), numpy arrays; the numbers of ``pounding record spectrum --json``."""
-    p = np.geomspace(0.02, 10.0, 100) if periods is None else np.asarray(list(periods), dtype=np.float64)
+    if periods is None:
+        p = np.geomspace(0.02, 10.0, 100)
+    else:
+        p = np.asarray([_number("periods", t) for t in _items("periods", periods, "periods (s)")], dtype=np.float64)
+    for key, v in (("format", format), ("units", units)):
+        if v is not None and not isinstance(v, str):
+            raise InputError(f"{key} = {_short(v)} is not allowed: a name (str) or None")
     # Whether the source is a built-in record or a file is the library's to say (as for the command line).
     sd, psv, psa = _pounding.spectrum(
         _fspath("record", record),
-        float(damping),
+        _number("damping", damping),
         p.tolist(),
         format=format,
-        dt=None if dt is None else float(dt),
+        dt=None if dt is None else _number("dt", dt),
         units=units,
-        scale=float(scale),
+        scale=_number("scale", scale),
     )
     return {"damping": float(damping), "periods": p, "sd": np.asarray(sd), "psv": np.asarray(psv), "psa": np.asarray(psa)}
 
@@ -313,7 +331,9 @@ def separation(
     multiplies the rules where the floors are at the same height."""
     if isinstance(records, (str, bytes, os.PathLike)):
         raise InputError(f"records = {_short(records)} is not allowed: a list of records (write [{_short(records)}])")
-    recs = [_fspath("records", r) for r in (records or [])]
+    recs = [] if records is None else [_fspath("records", r) for r in _items("records", records, "records")]
+    if aligned_factor is not None:
+        aligned_factor = _number("aligned_factor", aligned_factor)
     if isinstance(scenario, (str, os.PathLike)):
         text = _pounding.separation(path=os.fspath(scenario), records=recs, aligned_factor=aligned_factor)
     else:
