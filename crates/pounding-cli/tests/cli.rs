@@ -1113,6 +1113,8 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
         "three-vs-eight-inelastic.toml",
         "three-in-a-row.toml",
         "three-vs-eight-storey.toml",
+        "isolated-moat.toml",
+        "bridge-three-span.toml",
     ]
     .iter()
     .map(|e| std::fs::read_to_string(example(e)).unwrap())
@@ -1144,6 +1146,20 @@ fn mutated_scenarios_end_in_a_whole_output_set_or_one_line_exit_2() {
                 assert!(out.join(".pounding-run").is_file());
                 // A poor energy balance is said.
                 let v: Value = serde_json::from_str(&s).unwrap();
+                // No impact dissipates less than nothing beyond the integration tolerance (relative to the
+                // run's energy, as the balance is).
+                let input = v["energy"]["input"].as_f64().unwrap_or(0.0).abs();
+                let impacts = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+                let col = impacts
+                    .lines()
+                    .next()
+                    .unwrap()
+                    .split(',')
+                    .position(|c| c == "dissipated_energy_J");
+                for row in impacts.lines().skip(1) {
+                    let e: f64 = row.split(',').nth(col.unwrap()).unwrap().parse().unwrap();
+                    assert!(e >= -1e-6 * input, "case {i}: {row}\n{text}");
+                }
                 if v["energy_balance_error"].as_f64().unwrap() > 1e-4 {
                     assert!(!v["warnings"].as_array().unwrap().is_empty(), "case {i}");
                     assert!(err.contains("energy balance"), "case {i}: {err}");
