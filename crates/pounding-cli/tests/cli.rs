@@ -1188,6 +1188,18 @@ fn study(dir: &std::path::Path, name: &str, axes: &str) -> PathBuf {
     file
 }
 
+/// A study of `runs` gaps of the two-SDOF example, 0.1 mm apart, in `dir/study.toml`.
+fn gap_study(dir: &std::path::Path, runs: usize) -> PathBuf {
+    let gaps: Vec<String> = (0..runs)
+        .map(|i| format!("{:e}", 1e-4 * i as f64))
+        .collect();
+    study(
+        dir,
+        "study.toml",
+        &format!("contact.0.gap = [{}]", gaps.join(", ")),
+    )
+}
+
 fn store_rows(db: &std::path::Path) -> Vec<(String, i64, String, Option<String>, String)> {
     let conn = rusqlite::Connection::open(db).unwrap();
     let mut st = conn
@@ -1256,12 +1268,7 @@ fn a_sweep_stores_what_single_runs_give_and_lists_them_in_runs_csv() {
 #[test]
 fn a_sweep_killed_with_sigkill_resumes_with_every_run_once() {
     let dir = tmp("sweep-kill");
-    let gaps: Vec<String> = (0..120).map(|i| format!("{:e}", 1e-4 * i as f64)).collect();
-    let file = study(
-        &dir,
-        "study.toml",
-        &format!("contact.0.gap = [{}]", gaps.join(", ")),
-    );
+    let file = gap_study(&dir, 120);
     let out = dir.join("out");
     let args = [
         "sweep",
@@ -2353,12 +2360,7 @@ fn ctrl_c_stops_a_run_and_a_sweep_at_once_and_says_what_was_kept() {
     assert!(err.trim_end().ends_with("nothing was written"), "{err}");
     assert!(!out.exists());
     // A sweep: stopped with its finished runs in the store, resumed to the end.
-    let gaps: Vec<String> = (0..200).map(|i| format!("{:e}", 1e-4 * i as f64)).collect();
-    let file = study(
-        &dir,
-        "study.toml",
-        &format!("contact.0.gap = [{}]", gaps.join(", ")),
-    );
+    let file = gap_study(&dir, 200);
     let out = dir.join("sweep");
     let args = [
         "sweep",

@@ -260,7 +260,7 @@ pub fn build(
 
 /// `value` as a [`ScenarioDoc`]; a shape error (an unknown key, a string for a number) names its path.
 pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)> {
-    if let Some(key) = crate::schema::lists_where_tables_belong(value) {
+    if let Some(key) = crate::shape::lists_where_tables_belong(value) {
         let msg = if key.is_empty() {
             "the scenario is a list; allowed: a table of named keys (docs/scenarios.md)".to_string()
         } else {
@@ -277,16 +277,19 @@ pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)>
     parse_value(value)
 }
 
+/// The dotted key of `k` inside `key` (`k` itself at the top).
+pub(crate) fn dotted_child(key: &str, k: &str) -> String {
+    if key.is_empty() {
+        k.to_string()
+    } else {
+        format!("{key}.{k}")
+    }
+}
+
 /// The first number of `v` that is neither 0 nor at least [`pounding::limits::MIN_MAGNITUDE`] in magnitude,
 /// with its dotted key.
 fn tiny_number(key: &str, v: &Value) -> Option<(String, f64)> {
-    let child = |k: &str| {
-        if key.is_empty() {
-            k.to_string()
-        } else {
-            format!("{key}.{k}")
-        }
-    };
+    let child = |k: &str| dotted_child(key, k);
     match v {
         Value::Number(n) => n
             .as_f64()

@@ -11,6 +11,7 @@ pub mod input;
 pub mod key;
 pub mod schema;
 pub mod separation;
+pub mod shape;
 pub mod store;
 pub mod study;
 pub mod summary;

@@ -294,13 +294,7 @@ fn apply(scenario: &mut Value, name: &str, v: &Value) -> Result<(), String> {
 
 /// The first number of `v` that is NaN or infinite, with its dotted key.
 fn non_finite(key: &str, v: &toml::Value) -> Option<(String, f64)> {
-    let child = |k: &str| {
-        if key.is_empty() {
-            k.to_string()
-        } else {
-            format!("{key}.{k}")
-        }
-    };
+    let child = |k: &str| crate::input::dotted_child(key, k);
     match v {
         toml::Value::Float(x) if !x.is_finite() => Some((key.to_string(), *x)),
         toml::Value::Table(t) => t.iter().find_map(|(k, v)| non_finite(&child(k), v)),
