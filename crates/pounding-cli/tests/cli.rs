@@ -1539,6 +1539,10 @@ fn separation_reports_each_level_and_refuses_bad_options() {
             "--aligned-factor 2 is not allowed",
         ),
         (vec!["--records", "no-such/*.AT2"], "matches no file"),
+        (
+            vec!["--records", "synthetic-1..10001"],
+            "10001 records is not allowed: at most 10000",
+        ),
     ] {
         let mut a = vec!["separation".to_string(), example("two-sdof.toml")];
         a.extend(args.iter().map(|s| s.to_string()));

@@ -630,7 +630,7 @@ def test_ctrl_c_stops_long_calls_within_half_a_second(base):
         b["masses"] = b["masses"] * 150
         b["stiffnesses"] = [b["stiffnesses"][0] * 150] * 150
         b["heights"] = [3.0] * 150
-    suite = [f"synthetic-{i}" for i in range(1, 400)]
+    suite = [f"synthetic-{i}" for i in range(1, 4000)]  # about 5 s
     calls = {
         "spectrum": lambda: pounding.spectrum("el-centro-1940", periods=[1e-3] * 790),
         "separation": lambda: pounding.separation(base, records=suite),

@@ -170,6 +170,10 @@ fn statistics(runs: &[RecordReport]) -> SuiteStats {
     SuiteStats { pairs }
 }
 
+/// Most records of one separation: each run may take up to its step budget (about 5 s), and nothing is
+/// kept until the last ends.
+pub const MAX_RECORDS: usize = 10_000;
+
 /// The separation report of `scenario` (a JSON value, `label` saying where it came from), under its own
 /// record or under each of `records` (sources: built-in names or file paths): one line on error.
 pub fn report(
@@ -192,6 +196,15 @@ pub fn report_with(
     aligned_factor: Option<f64>,
     go_on: &mut dyn FnMut() -> ControlFlow<()>,
 ) -> Result<SeparationReport, (Option<String>, String)> {
+    if records.len() > MAX_RECORDS {
+        return Err((
+            Some("records".into()),
+            format!(
+                "records: {} records is not allowed: at most {MAX_RECORDS} in one separation, which keeps nothing until it ends (a sweep or an IDA runs more, resumably)",
+                records.len()
+            ),
+        ));
+    }
     let variants: Vec<(Option<&String>, Value)> = if records.is_empty() {
         vec![(None, scenario.clone())]
     } else {
