@@ -22,7 +22,7 @@ pub fn load_record_from(
     scale: f64,
 ) -> Result<Record, CliError> {
     let name = flag;
-    let is_file = Record::builtin(source).is_none();
+    let is_file = pounding::ground_motion::Builtin::from_name(source).is_none();
     // The options are checked here, in the command line's words; reading is the scenarios' own.
     let format = match (format, dt) {
         // A built-in record carries its own format.

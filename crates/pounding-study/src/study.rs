@@ -169,7 +169,7 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
             "record = {v} is not allowed: a built-in name, a file, a folder or a glob"
         ));
     };
-    if pounding::ground_motion::Record::builtin(s).is_some() {
+    if pounding::ground_motion::Builtin::from_name(s).is_some() {
         return Ok(vec![s.clone()]);
     }
     // A suite of synthetic records: `synthetic-1..20` (both ends included).
@@ -259,7 +259,7 @@ pub fn set_record(scenario: &mut Value, source: &str) {
     let was_file = gm.contains_key("file");
     gm.remove("record");
     gm.remove("file");
-    if pounding::ground_motion::Record::builtin(source).is_some() {
+    if pounding::ground_motion::Builtin::from_name(source).is_some() {
         gm.remove("format");
         gm.remove("dt");
         gm.insert("record".into(), Value::String(source.into()));
