@@ -206,7 +206,12 @@ impl Impacts {
             let engaged = sys.elements()[c.element]
                 .law
                 .as_contact()
-                .is_some_and(|ct| matches!(ct.state(), Engagement::Contact { .. }));
+                .is_some_and(|ct| {
+                    matches!(
+                        ct.state(),
+                        Engagement::Contact { .. } | Engagement::Held { .. }
+                    )
+                });
             if self.trackers[k].is_some() && engaged {
                 let work = dissipated(sys, c.element, y);
                 self.record(k, t, None, work);

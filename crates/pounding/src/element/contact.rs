@@ -25,6 +25,7 @@ const SEPARATION: Event = Event(4);
 const REAPPROACH: Event = Event(5);
 const REARM: Event = Event(6);
 const RESUME: Event = Event(7);
+const FAST: Event = Event(8);
 
 /// What a contact element is doing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,6 +45,17 @@ pub enum Engagement {
     /// touch, or ends at rest against each other). No force until they close (an impact starts) or part
     /// (`d <= 0`).
     Resting,
+    /// Pressed: the ends close (or press) slower than `min_impact_velocity`, which is no impact but a contact
+    /// under load. The elastic part of the law holds them apart, without its viscous part (built for a
+    /// floored impact velocity, that part makes the pressed pair an overdamped system too stiff for any
+    /// explicit step). Left when `d` returns to 0 (the impact ends), or when the ends close faster than
+    /// `min_impact_velocity` (an impact at that velocity goes on from here).
+    Held {
+        /// The law whose elastic part holds.
+        law: ForceLaw,
+        /// Its last turning point.
+        turn: Turn,
+    },
     /// A clamped force reached zero while `d > 0`: no force until `d <= 0` (or the ends approach again).
     Released {
         /// The law of the impact that was released.
@@ -152,7 +164,9 @@ impl Contact {
     /// Energy stored in the elastic part of the law at deformation `x` (m), J: 0 unless engaged.
     fn stored(&self, x: f64) -> f64 {
         match self.state {
-            Engagement::Contact { law, .. } => law.elastic(x - self.gap).map_or(0.0, |(_, e)| e),
+            Engagement::Contact { law, .. } | Engagement::Held { law, .. } => {
+                law.elastic(x - self.gap).map_or(0.0, |(_, e)| e)
+            }
             _ => 0.0,
         }
     }
@@ -174,8 +188,15 @@ impl Contact {
     fn law_force(&self, x: f64, v: f64) -> f64 {
         match self.state {
             Engagement::Contact { law, phase, turn } => law.force(x - self.gap, v, phase, &turn),
+            Engagement::Held { law, .. } => law.elastic(x - self.gap).map_or(0.0, |(f, _)| f),
             _ => 0.0,
         }
+    }
+
+    /// Whether an approach at rate `v` (m/s) is held rather than an impact: slower than
+    /// `min_impact_velocity`, with a law that has an elastic part to hold with.
+    fn holds(&self, law: &ForceLaw, v: f64) -> bool {
+        v < self.min_impact_velocity() && law.elastic(0.0).is_some()
     }
 
     /// The law of an impact starting at rate `v` (m/s), and the first step inside its time scale; `None` for
@@ -212,12 +233,30 @@ impl Contact {
             (Engagement::Open, TOUCH) if v <= 0.0 => (Engagement::Resting, None),
             (Engagement::Open, TOUCH) | (Engagement::Resting, RESUME) => {
                 match self.impact_law(v, h, &mut out)? {
+                    Some(law) if self.holds(&law, v) => (
+                        Engagement::Held {
+                            law,
+                            turn: Turn::default(),
+                        },
+                        Some(started),
+                    ),
                     Some(law) => (
                         contact(law, Phase::Approach, Turn::default()),
                         Some(started),
                     ),
                     None => return Ok(out),
                 }
+            }
+            (Engagement::Held { .. }, SEPARATION) => {
+                out.stop = self.stop_at_end;
+                (Engagement::Open, Some(Notice::ImpactEnded))
+            }
+            // Closing as fast as an impact: the law approaches again (a law held from a touch at rest was
+            // built for this velocity, the floor of impact velocities).
+            (Engagement::Held { law, turn }, FAST) => (contact(law, Phase::Approach, turn), None),
+            // Approaching again slower than an impact: held until it is one.
+            (Engagement::Contact { law, turn, .. }, REAPPROACH) if self.holds(&law, v) => {
+                (Engagement::Held { law, turn }, None)
             }
             (Engagement::Resting, REARM) => (Engagement::Open, Some(Notice::ContactCleared)),
             (Engagement::Contact { law, .. }, TURN) => {
@@ -267,19 +306,22 @@ impl Contact {
         x: DenseComponent,
         v: DenseComponent,
     ) -> Option<ContactPiece> {
-        match self.state {
-            Engagement::Contact { law, phase, turn } => Some(ContactPiece {
-                span,
-                x,
-                v,
-                law,
-                phase,
-                turn,
-                gap: self.gap,
-                tension: self.tension,
-            }),
-            _ => None,
-        }
+        let (law, phase, turn, held) = match self.state {
+            Engagement::Contact { law, phase, turn } => (law, phase, turn, false),
+            Engagement::Held { law, turn } => (law, Phase::Approach, turn, true),
+            _ => return None,
+        };
+        Some(ContactPiece {
+            span,
+            x,
+            v,
+            law,
+            phase,
+            turn,
+            held,
+            gap: self.gap,
+            tension: self.tension,
+        })
     }
 }
 
@@ -290,6 +332,7 @@ const ZERO_FORCE_W: Watch = Watch::crossing(ZERO_FORCE);
 const REAPPROACH_W: Watch = Watch::crossing(REAPPROACH);
 const OPEN_W: &[Watch] = &[Watch::touch(TOUCH)];
 const IDLE_W: &[Watch] = &[Watch::crossing(REARM), Watch::crossing(RESUME)];
+const HELD_W: &[Watch] = &[SEPARATION_W, Watch::crossing(FAST)];
 
 impl ElementLaw for Contact {
     fn name(&self) -> &'static str {
@@ -312,7 +355,9 @@ impl ElementLaw for Contact {
     fn evaluate(&self, x: f64, v: f64, _s: &[f64], ds: &mut [f64]) -> (f64, f64) {
         let f = self.law_force(x, v);
         let elastic = match self.state {
-            Engagement::Contact { law, .. } => law.elastic(x - self.gap).map_or(0.0, |(fe, _)| fe),
+            Engagement::Contact { law, .. } | Engagement::Held { law, .. } => {
+                law.elastic(x - self.gap).map_or(0.0, |(fe, _)| fe)
+            }
             _ => 0.0,
         };
         ds[0] = f * v;
@@ -364,6 +409,7 @@ impl ElementLaw for Contact {
                 (Tension::Allow, false) => &[SEPARATION_W, REAPPROACH_W],
             },
             Engagement::Released { .. } | Engagement::Resting => IDLE_W,
+            Engagement::Held { .. } => HELD_W,
         }
     }
 
@@ -373,6 +419,7 @@ impl ElementLaw for Contact {
         let (law, phase, turn) = match self.state {
             Engagement::Contact { law, phase, turn } => (Some(law), phase, turn),
             Engagement::Released { law, turn, .. } => (Some(law), Phase::Restitution, turn),
+            Engagement::Held { law, turn } => (Some(law), Phase::Approach, turn),
             Engagement::Open | Engagement::Resting => (None, Phase::Approach, Turn::default()),
         };
         match ev {
@@ -388,6 +435,7 @@ impl ElementLaw for Contact {
                 None => self.gate.slack() - v,
             },
             RESUME => self.gate.slack() - v,
+            FAST => self.min_impact_velocity() - v,
             _ => 1.0,
         }
     }
@@ -409,7 +457,7 @@ impl ElementLaw for Contact {
     /// `v` while approaching, `-v` otherwise; `None` while open.
     fn rate_event(&self, _x: f64, v: f64, _s: &[f64]) -> Option<f64> {
         match self.state {
-            Engagement::Open => None,
+            Engagement::Open | Engagement::Held { .. } => None,
             Engagement::Contact {
                 phase: Phase::Approach,
                 ..
@@ -432,6 +480,8 @@ pub struct ContactPiece {
     law: ForceLaw,
     phase: Phase,
     turn: Turn,
+    /// Pressed: the elastic part alone.
+    held: bool,
     gap: f64,
     tension: Tension,
 }
@@ -440,7 +490,11 @@ impl ContactPiece {
     /// Penetration (m), rate (m/s) and reported force (N) at `t`.
     pub fn at(&self, t: f64) -> (f64, f64, f64) {
         let (d, v) = (self.x.eval(t) - self.gap, self.v.eval(t));
-        let f = self.law.force(d, v, self.phase, &self.turn);
+        let f = if self.held {
+            self.law.elastic(d).map_or(0.0, |(f, _)| f)
+        } else {
+            self.law.force(d, v, self.phase, &self.turn)
+        };
         let f = match self.tension {
             Tension::Clamp => f.max(0.0),
             Tension::Allow => f,
