@@ -1023,12 +1023,7 @@ fn output_sets_appear_whole_replace_only_runs_and_report_refuses_mixes() {
 
 /// Runs `pounding` with `args`, killing it after `limit` s: `None` if it had to be killed.
 fn pounding_within(args: &[&str], limit: f64) -> Option<Output> {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = spawn(args);
     let start = std::time::Instant::now();
     while child.try_wait().unwrap().is_none() {
         if start.elapsed().as_secs_f64() > limit {
@@ -1087,6 +1082,14 @@ fn mutate(text: &str, next: &mut impl FnMut(usize) -> usize) -> String {
 }
 
 /// A linear congruential stream from the campaign's seed (POUNDING_FUZZ_SEED): `next(n)` in 0..n.
+/// The cases of a fuzzing test: `POUNDING_FUZZ_CASES`, or `default` (the short run of CI).
+fn fuzz_cases(default: usize) -> usize {
+    std::env::var("POUNDING_FUZZ_CASES")
+        .ok()
+        .and_then(|c| c.parse::<usize>().ok())
+        .unwrap_or(default)
+}
+
 fn fuzz_stream() -> impl FnMut(usize) -> usize {
     let seed0 = std::env::var("POUNDING_FUZZ_SEED")
         .ok()
@@ -1699,10 +1702,7 @@ fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
 #[test]
 fn mutated_studies_end_in_their_tables_or_one_line_exit_2() {
     // The same bounded fuzzing for the study files of `sweep` and `ida` (POUNDING_FUZZ_CASES for more).
-    let cases = std::env::var("POUNDING_FUZZ_CASES")
-        .ok()
-        .and_then(|c| c.parse::<usize>().ok())
-        .unwrap_or(9);
+    let cases = fuzz_cases(9);
     let studies = format!("{}/../../examples/studies", env!("CARGO_MANIFEST_DIR"));
     let texts: Vec<(&str, String)> = [
         ("sweep", "gap-sweep.toml"),
@@ -2302,6 +2302,16 @@ fn workers_beyond_sixteen_per_core_are_refused_before_any_work() {
     assert!(!out.exists());
 }
 
+/// `pounding ARGS` started, its stdout and stderr piped.
+fn spawn(args: &[&str]) -> std::process::Child {
+    Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
 /// Sends SIGINT (Ctrl-C) to `child` once `ready()` holds (or after 30 s), and returns its output and how long
 /// it took to end after the signal, s.
 fn ctrl_c(child: std::process::Child, ready: impl Fn() -> bool) -> (Output, f64) {
@@ -2340,18 +2350,13 @@ fn ctrl_c_stops_a_run_and_a_sweep_at_once_and_says_what_was_kept() {
     let file = dir.join("tall.toml");
     std::fs::write(&file, tall).unwrap();
     let out = dir.join("tall");
-    let child = Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args([
-            "run",
-            file.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "-q",
-        ])
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
+    let child = spawn(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ]);
     let t0 = std::time::Instant::now();
     let (o, late) = ctrl_c(child, || t0.elapsed().as_secs_f64() > 1.5);
     let err = String::from_utf8_lossy(&o.stderr);
@@ -2374,12 +2379,7 @@ fn ctrl_c_stops_a_run_and_a_sweep_at_once_and_says_what_was_kept() {
         "--workers",
         "1",
     ];
-    let child = Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
+    let child = spawn(&args);
     let db = out.join("study.sqlite");
     let (o, late) = ctrl_c(child, || store_count(&db) >= 5);
     let err = String::from_utf8_lossy(&o.stderr);
@@ -2568,10 +2568,7 @@ fn stores_damaged_killed_and_raced_end_in_the_uninterrupted_result_or_one_line()
     // flipped anywhere, or a row edited), or kills a sweep at a random moment, or races two studies into one
     // new folder; then resumes. A resumed study must write, bit for bit, what the uninterrupted one wrote, or
     // stop with one line and exit 1 or 2; never exit 0 with other results, never panic.
-    let cases = std::env::var("POUNDING_FUZZ_CASES")
-        .ok()
-        .and_then(|c| c.parse::<usize>().ok())
-        .unwrap_or(8);
+    let cases = fuzz_cases(8);
     let dir = tmp("fuzz-stores");
     let gaps: Vec<String> = (0..16).map(|i| format!("{:e}", 2e-3 * i as f64)).collect();
     let a = study(
@@ -2621,18 +2618,13 @@ fn stores_damaged_killed_and_raced_end_in_the_uninterrupted_result_or_one_line()
             }
             // Killed at a random moment, from before its store exists to after its last run.
             2 => {
-                let mut child = Command::new(env!("CARGO_BIN_EXE_pounding"))
-                    .args([
-                        "sweep",
-                        a.to_str().unwrap(),
-                        "--out",
-                        out.to_str().unwrap(),
-                        "-q",
-                    ])
-                    .stdout(std::process::Stdio::null())
-                    .stderr(std::process::Stdio::null())
-                    .spawn()
-                    .unwrap();
+                let mut child = spawn(&[
+                    "sweep",
+                    a.to_str().unwrap(),
+                    "--out",
+                    out.to_str().unwrap(),
+                    "-q",
+                ]);
                 std::thread::sleep(std::time::Duration::from_millis(next(400) as u64));
                 let _ = child.kill();
                 child.wait().unwrap();
@@ -2640,18 +2632,13 @@ fn stores_damaged_killed_and_raced_end_in_the_uninterrupted_result_or_one_line()
             // Two studies started into one new folder, 0 to 50 ms apart: one runs, the other is refused.
             _ => {
                 let spawn = |s: &std::path::Path| {
-                    Command::new(env!("CARGO_BIN_EXE_pounding"))
-                        .args([
-                            "sweep",
-                            s.to_str().unwrap(),
-                            "--out",
-                            out.to_str().unwrap(),
-                            "-q",
-                        ])
-                        .stdout(std::process::Stdio::null())
-                        .stderr(std::process::Stdio::piped())
-                        .spawn()
-                        .unwrap()
+                    spawn(&[
+                        "sweep",
+                        s.to_str().unwrap(),
+                        "--out",
+                        out.to_str().unwrap(),
+                        "-q",
+                    ])
                 };
                 let first = spawn(&a);
                 std::thread::sleep(std::time::Duration::from_millis(next(50) as u64));
