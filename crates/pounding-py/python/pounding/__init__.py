@@ -234,7 +234,7 @@ def sweep(
     (bad input, an analysis that fails) gives ``{"error": "one-line message"}`` and does not stop the sweep.
 
     With ``store="study.sqlite"`` every finished run is committed to that SQLite store as it finishes (table
-    ``runs``: ``key``, ``idx``, ``status``, ``summary``, ``error``, ``seconds``, ``finished``): started again
+    ``runs``: ``key``, ``idx``, ``status``, ``summary``, ``error``, ``seconds``, ``finished``, ``digest``): started again
     with the same scenarios, the sweep runs only what is missing. A store written by other scenarios raises
     InputError and is left untouched. ``progress`` prints one updating line on stderr; Ctrl-C stops the sweep
     (finished runs stay in the store) and raises KeyboardInterrupt.
