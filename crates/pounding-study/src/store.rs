@@ -475,6 +475,11 @@ fn migrate(tx: &rusqlite::Transaction<'_>, id: &str) -> rusqlite::Result<()> {
 mod tests {
     use super::*;
 
+    /// The tables of the first layout (`pounding-study-1`), before digests.
+    const LAYOUT_1: &str = "CREATE TABLE study (name TEXT PRIMARY KEY, value TEXT NOT NULL);
+         CREATE TABLE runs (key TEXT PRIMARY KEY, idx INTEGER NOT NULL, status TEXT NOT NULL,
+             summary TEXT, error TEXT, seconds REAL NOT NULL, finished TEXT NOT NULL);";
+
     /// No first-layout identity.
     fn none() -> String {
         String::new()
@@ -515,12 +520,7 @@ mod tests {
         let dir = scratch("half");
         let path = dir.join("study.sqlite");
         let conn = Connection::open(&path).unwrap();
-        conn.execute_batch(
-            "CREATE TABLE study (name TEXT PRIMARY KEY, value TEXT NOT NULL);
-             CREATE TABLE runs (key TEXT PRIMARY KEY, idx INTEGER NOT NULL, status TEXT NOT NULL,
-                 summary TEXT, error TEXT, seconds REAL NOT NULL, finished TEXT NOT NULL);",
-        )
-        .unwrap();
+        conn.execute_batch(LAYOUT_1).unwrap();
         drop(conn);
         assert_eq!(Store::check(&path, "a", 1, &none), Ok(()));
         let mut s = Store::open(&path, "a", 1, &none).unwrap();
@@ -602,11 +602,9 @@ mod tests {
         let dir = scratch("layout1");
         let path = dir.join("study.sqlite");
         let conn = Connection::open(&path).unwrap();
+        conn.execute_batch(LAYOUT_1).unwrap();
         conn.execute_batch(
-            "CREATE TABLE study (name TEXT PRIMARY KEY, value TEXT NOT NULL);
-             CREATE TABLE runs (key TEXT PRIMARY KEY, idx INTEGER NOT NULL, status TEXT NOT NULL,
-                 summary TEXT, error TEXT, seconds REAL NOT NULL, finished TEXT NOT NULL);
-             INSERT INTO study VALUES ('format', 'pounding-study-1'), ('id', 'a'), ('runs', '2');
+            "INSERT INTO study VALUES ('format', 'pounding-study-1'), ('id', 'a'), ('runs', '2');
              INSERT INTO runs VALUES ('k0', 0, 'ok', '{}', NULL, 0.1, 'then'),
                                      ('k1', 1, 'ok', NULL, NULL, 0.1, 'then');",
         )
