@@ -2,7 +2,7 @@
 
 use super::{EventInfo, Ground, Observer, Segment, System};
 use crate::element::Event;
-use crate::integrate::{brent_root, golden_max, DormandPrince, OdeSystem, Tolerance};
+use crate::integrate::{brent_root, golden_max, OdeSystem, Stepper, Tolerance};
 use crate::Error;
 
 /// Accuracy and extent of a run.
@@ -16,7 +16,8 @@ pub struct Settings {
     pub atol: Vec<f64>,
     /// First trial step, s.
     pub h0: f64,
-    /// Largest number of steps, accepted and rejected.
+    /// Largest number of steps, accepted and rejected, in explicit steps (an implicit step of a stiff stretch
+    /// counts as the explicit steps its work would buy: [`crate::integrate::Stepper::work`]).
     pub max_steps: usize,
 }
 
@@ -56,7 +57,7 @@ pub struct Outcome {
 /// states on the interpolant.
 fn earliest_event(
     sys: &System,
-    dp: &DormandPrince,
+    dp: &Stepper,
     (t0, y0): (f64, &[f64]),
     states: &mut [f64],
 ) -> Option<(f64, usize, Event)> {
@@ -123,7 +124,7 @@ pub fn run(
     observer: &mut dyn Observer,
 ) -> Result<Outcome, Error> {
     let dim = sys.dim();
-    let mut dp = DormandPrince::new(Tolerance {
+    let mut dp = Stepper::new(Tolerance {
         rtol: settings.rtol,
         atol: settings.atol.clone(),
     });
@@ -229,8 +230,7 @@ pub fn run(
         y0.copy_from_slice(&ye);
         t0 = te;
         // Rejected steps cost as much as accepted ones.
-        let (accepted, rejected) = dp.counts();
-        if accepted + rejected >= settings.max_steps {
+        if dp.work() >= settings.max_steps as f64 {
             ending = Ending::StepBudget;
             break;
         }

@@ -9,11 +9,16 @@
 //!
 //! Units follow the system being integrated; the stepper is unit-agnostic.
 
+mod lu;
 mod peaks;
 mod roots;
+mod rosenbrock;
+mod switching;
 
 pub use peaks::{hermite_peak, Hermite, PeakTracker, Piece};
 pub use roots::{brent_root, golden_max};
+pub use rosenbrock::Rosenbrock;
+pub use switching::Stepper;
 
 use crate::Error;
 
@@ -195,7 +200,18 @@ pub struct DormandPrince {
     pub h_max: f64,
     rejected: usize,
     accepted: usize,
+    /// Accepted steps at the edge of stability since the last run of calm ones (Hairer's stiffness test).
+    stiff_steps: usize,
+    calm_steps: usize,
 }
+
+/// `h |lambda|` above which a Dormand–Prince step is at its stability limit (the boundary of its stability
+/// region on the negative real axis is about 3.3): Hairer & Wanner, *Solving Ordinary Differential Equations
+/// II*, section IV.2, and their DOPRI5 code.
+const STIFF_H_LAMBDA: f64 = 3.25;
+/// Steps at the stability limit that make a stretch stiff, and calm steps that clear the count (as DOPRI5).
+const STIFF_STEPS: usize = 15;
+const CALM_STEPS: usize = 6;
 
 impl DormandPrince {
     /// A stepper for a system of `tol.atol.len()` components.
@@ -216,6 +232,44 @@ impl DormandPrince {
             h_max: f64::INFINITY,
             rejected: 0,
             accepted: 0,
+            stiff_steps: 0,
+            calm_steps: 0,
+        }
+    }
+
+    /// Whether the last steps were held to their size by stability rather than accuracy: 15 accepted steps
+    /// with `h |lambda|` above 3.25, `|lambda|` estimated from the last two stages of each step (both at the
+    /// step's end), with no 6 calm steps between them.
+    pub fn looks_stiff(&self) -> bool {
+        self.stiff_steps >= STIFF_STEPS
+    }
+
+    /// Forgets the steps counted by [`Self::looks_stiff`].
+    pub fn clear_stiffness(&mut self) {
+        self.stiff_steps = 0;
+        self.calm_steps = 0;
+    }
+
+    /// Counts the accepted step of size `h` for [`Self::looks_stiff`]: `k[5]` and `k[6]` are `f` at the step's
+    /// end from the last stage's state (`ytmp`) and from the new state, so their difference over that of
+    /// the states is `|lambda|` of the direction they differ in; norms weighted like the error.
+    fn count_stiffness(&mut self, h: f64) {
+        let (mut num, mut den) = (0.0, 0.0);
+        for i in 0..self.n {
+            let sc = self.tol.atol[i] + self.tol.rtol * self.ynew[i].abs();
+            if sc.is_finite() {
+                num += ((self.k[6][i] - self.k[5][i]) / sc).powi(2);
+                den += ((self.ynew[i] - self.ytmp[i]) / sc).powi(2);
+            }
+        }
+        if den > 0.0 && h * (num / den).sqrt() > STIFF_H_LAMBDA {
+            self.stiff_steps += 1;
+            self.calm_steps = 0;
+        } else {
+            self.calm_steps += 1;
+            if self.calm_steps >= CALM_STEPS {
+                self.stiff_steps = 0;
+            }
         }
     }
 
@@ -345,6 +399,7 @@ impl DormandPrince {
                 (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
             };
             if err <= 1.0 {
+                self.count_stiffness(h);
                 let d = &mut self.dense;
                 d.t0 = t;
                 d.h = h;

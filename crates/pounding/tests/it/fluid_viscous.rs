@@ -67,7 +67,7 @@ fn dissipated_per_cycle(law: &DeviceLaw, u0: f64, omega: f64) -> f64 {
         max_steps: 10_000_000,
     };
     let out = engine::run(&mut sys, (0.0, &y0), &settings, &mut ()).unwrap();
-    assert!((out.t - period).abs() < 1e-12);
+    assert!((out.t - period).abs() < 1e-12, "{out:?}");
     // The viscous work (of a damper alone, or of the damper in series with a spring, a state of its own).
     sys.energies(&out.y).damping
 }

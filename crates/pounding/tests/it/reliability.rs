@@ -311,18 +311,18 @@ fn floors_pressed_together_at_rest_run_without_chatter() {
 }
 
 #[test]
-fn floors_pressed_by_a_very_stiff_damped_contact_are_held_and_run_to_the_end() {
+fn floors_pressed_by_a_very_stiff_damped_contact_run_to_the_end() {
     // Gap 0, k = 1e14 N/m, e = 0.01: papi and mahmoud-jankowski, built for the floored impact velocity of
-    // 1 mm/s, made the pressed pair an overdamped system (c/m of 1e6 /s or more) that stopped at the step
-    // budget at t = 6.4 and 5.5 s. Held by the elastic part of their law while they close slower than an impact,
-    // both run to the end; with every impact calibrated to the same e = 0.01, the two models then give the
-    // same motion (before, the regularisation of the pressed state alone set them 2 % apart).
+    // 1 mm/s, make the pressed pair an overdamped system (c/m of 1e6 /s or more) that stopped at the step
+    // budget at t = 6.4 and 5.5 s. Held by the elastic part of their law while they close slower than an
+    // impact, and taken by the implicit stepper while their damping is what limits an explicit step, both run
+    // the whole record (31.18 s) with the energy balance issue 22 asks for. With every impact calibrated to
+    // the same e = 0.01, the two models give the same motion (before, the regularisation of the pressed state
+    // alone set them 2 % apart).
     let run = |model| {
         let c = ContactModel::new(model, 1e14, 0.01).unwrap();
         pair(7.8957e7, 5.0e5)
             .with_link("L", "R", 0.0, &c, None)
-            .unwrap()
-            .with_duration(8.0)
             .unwrap()
             .run()
             .unwrap()
@@ -330,11 +330,14 @@ fn floors_pressed_by_a_very_stiff_damped_contact_are_held_and_run_to_the_end() {
     let (a, b) = (run(Model::Papi), run(Model::MahmoudJankowski));
     for r in [&a, &b] {
         assert!(
-            r.energy.relative_error < 2e-6,
+            r.energy.relative_error < 1e-6,
             "{}",
             r.energy.relative_error
         );
         assert!(r.impacts.iter().all(|i| i.dissipated_energy >= 0.0));
+        // Explicit steps alone took 1.7e6 steps for papi, and ran out of the budget of 3.3e6 for
+        // mahmoud-jankowski (both about 1e-6 s long while pressed).
+        assert!(r.statistics.steps < 200_000, "{:?}", r.statistics);
     }
     for (ba, bb) in a.buildings.iter().zip(&b.buildings) {
         let (pa, pb) = (ba.peak_displacement[0], bb.peak_displacement[0]);
