@@ -382,7 +382,10 @@ fn record_units_and_format_from_the_command_line_and_a_scenario() {
     // A scenario: the header's units unless told, and told otherwise it is refused with the file and line.
     let scenario = std::fs::read_to_string(example("two-sdof.toml"))
         .unwrap()
-        .replace("record = \"el-centro-1940\"", "file = \"rsn6.txt\"")
+        .replace(
+            "record = \"el-centro-1940\"",
+            "file = \"rsn6.txt\"\nunits = \"g\"",
+        )
         .replace("output_dt = 0.005", "output_dt = 0.01");
     let unset = scenario.replace("units = \"g\"", "# no units");
     let file = dir.join("unset.toml");
@@ -1518,6 +1521,85 @@ fn record_spectrum_gives_sd_psv_psa_and_refuses_bad_oscillators() {
         assert!(err.contains(needle), "{err}");
         assert!(o.stdout.is_empty());
     }
+}
+
+#[test]
+fn the_suite_recipe_gives_the_same_required_gap_from_files_as_from_the_built_ins() {
+    // docs/separation.md: `record synth --seed s` into a folder, then `--records folder`. The files state
+    // their units (m/s^2); read as g they gave a required gap 9.8 times too large (issue 23).
+    let dir = tmp("suite-recipe");
+    for s in 1..=3 {
+        let out = dir.join(format!("s{s}.csv"));
+        let o = pounding(&[
+            "record",
+            "synth",
+            "--seed",
+            &s.to_string(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let from_files = json(&[
+        "separation",
+        &example("two-sdof.toml"),
+        "--records",
+        dir.to_str().unwrap(),
+    ]);
+    let built_in = json(&[
+        "separation",
+        &example("two-sdof.toml"),
+        "--records",
+        "synthetic-1,synthetic-2,synthetic-3",
+    ]);
+    let gaps = |v: &Value| -> Vec<f64> {
+        v["records"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| f(&r["pairs"][0]["levels"][0], "required_gap"))
+            .collect()
+    };
+    let (a, b) = (gaps(&from_files), gaps(&built_in));
+    assert_eq!(a.len(), 3);
+    // The files hold every number in shortest round-trip form: the same records, the same gaps.
+    assert_eq!(a, b);
+    // Units that contradict the file, and units for a built-in record, are one-line errors.
+    let file = dir.join("s1.csv");
+    for (args, needle) in [
+        (
+            vec!["record", "info", file.to_str().unwrap(), "--units", "g"],
+            "the header states units of m/s2 (m/s^2), but the units given are g",
+        ),
+        (
+            vec!["record", "info", "el-centro-1940", "--units", "g"],
+            "the built-in record \"el-centro-1940\" carries its own",
+        ),
+    ] {
+        let o = pounding(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
+    let scenario = dir.join("units-on-built-in.toml");
+    let text = std::fs::read_to_string(example("two-sdof.toml"))
+        .unwrap()
+        .replace("scale = 1.0", "units = \"g\"\nscale = 1.0");
+    std::fs::write(&scenario, text).unwrap();
+    let o = pounding(&[
+        "run",
+        scenario.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("units = \"g\" applies to a record file"),
+        "{err}"
+    );
+    assert!(!dir.join("out").exists());
 }
 
 #[test]

@@ -914,7 +914,6 @@ fn figure_ids<'a>(doc: &'a roxmltree::Document) -> Vec<&'a str> {
 const SIX_LEVELS: &str = r#"
 [ground_motion]
 record = "synthetic-7"
-units = "m/s2"
 scale = 1.3
 
 [analysis]

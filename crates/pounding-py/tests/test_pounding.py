@@ -473,6 +473,9 @@ def test_spectrum_knows_every_built_in_record_from_the_library(tmp_path, monkeyp
         pounding.spectrum("synthetic-3", periods=periods, format="values", dt=0.01)
     with pytest.raises(pounding.InputError, match=r'^units = "gg" is not allowed: one of g, m/s2'):
         pounding.spectrum("el-centro-1940", periods=periods, units="gg")
+    # A built-in record carries its units: units given for it are refused, not ignored.
+    with pytest.raises(pounding.InputError, match=r'built-in record "el-centro-1940" carries its own'):
+        pounding.spectrum("el-centro-1940", periods=periods, units="m/s2")
 
 
 def test_separation_gives_the_numbers_of_the_command_line(base):

@@ -295,7 +295,8 @@ def spectrum(
 ) -> Dict[str, Any]:
     """The elastic response spectrum of a record (a built-in record's name, such as ``"el-centro-1940"`` or
     ``"synthetic-3"``, else a file; ``format``, ``dt``, ``units`` and
-    ``scale`` as in a scenario's ``[ground_motion]``; ``units`` unset: an AT2 header's, else g) for oscillators of damping ratio ``damping`` at
+    ``scale`` as in a scenario's ``[ground_motion]``; ``units`` unset: what the file states, else g; none for a
+    built-in) for oscillators of damping ratio ``damping`` at
     ``periods`` (s; default 100 from 0.02 to 10 s, evenly spaced in log), by the exact piecewise-linear
     solution with peaks located between samples: a dict of ``damping``, ``periods`` (s), ``sd`` (m), ``psv``
     (m/s) and ``psa`` (m/s^2), numpy arrays; the numbers of ``pounding record spectrum --json``."""

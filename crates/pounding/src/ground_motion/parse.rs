@@ -1,6 +1,7 @@
 //! Parsers of ground-motion text formats. They return values in the file's units; [`super::Record`]
 //! converts. Errors carry the 1-based line number. [`looks_like_at2`] and [`at2_units`] read what an AT2
-//! header says about the text: its layout and its units.
+//! header says about the text: its layout and its units; [`text_units`] what the header of a two-column or
+//! values text says about its units.
 
 use super::{Format, ParseError, Units};
 
@@ -203,6 +204,89 @@ pub fn at2_units(text: &str) -> Result<Option<StatedUnits>, ParseError> {
         }
     }
     Ok(None)
+}
+
+/// The units a column name states: a suffix `_g`, `_m_per_s2`, `_cm_per_s2`, `_mm_per_s2`, `_gal` (the tool's
+/// own `acceleration_m_per_s2`), or a unit in brackets, `acc(g)`, `acceleration [m/s2]`, `a (cm/s^2)` (any
+/// case). `None` for a name that states no unit of acceleration.
+fn column_units(name: &str) -> Option<Units> {
+    let n = name.trim().to_ascii_lowercase();
+    if let Some(open) = n.find(['(', '[']) {
+        let inner = n[open + 1..].trim_end_matches([')', ']']).trim();
+        return header_units(inner);
+    }
+    [
+        ("_m_per_s2", Units::MPerS2),
+        ("_cm_per_s2", Units::CmPerS2),
+        ("_mm_per_s2", Units::MmPerS2),
+        ("_m_per_s^2", Units::MPerS2),
+        ("_cm_per_s^2", Units::CmPerS2),
+        ("_mm_per_s^2", Units::MmPerS2),
+        ("_gal", Units::CmPerS2),
+        ("_g", Units::G),
+    ]
+    .into_iter()
+    .find(|(suffix, _)| n.ends_with(suffix))
+    .map(|(_, u)| u)
+}
+
+/// A statement `units = "m/s2"` (or `units: g`) in a comment line, as the tool writes in the records it makes
+/// (`# read with units = "m/s2"`): the word after it, without quotes.
+fn comment_units(line: &str) -> Option<String> {
+    let lower = line.to_ascii_lowercase();
+    let at = lower.find("units")?;
+    let rest = line[at + "units".len()..].trim_start();
+    let rest = rest.strip_prefix(['=', ':'])?.trim_start();
+    let word: String = rest
+        .trim_start_matches(['"', '\''])
+        .chars()
+        .take_while(|c| !matches!(c, '"' | '\'' | ',' | ';' | ')') && !c.is_whitespace())
+        .collect();
+    (!word.is_empty()).then_some(word)
+}
+
+/// What a two-column or values text says about its units before its data: a comment stating
+/// `units = "..."` ([`comment_units`]) and the name of the acceleration column of a header line
+/// ([`column_units`]: the last name of the line). `None` if it says nothing; an error if two statements
+/// disagree. A stated word that is not a unit known here has `units: None`.
+pub fn text_units(text: &str) -> Result<Option<StatedUnits>, ParseError> {
+    let mut found: Option<StatedUnits> = None;
+    for (i, l) in text.lines().enumerate() {
+        let t = l.trim();
+        let statement = if t.starts_with('#') || t.starts_with('%') {
+            comment_units(t).map(|w| StatedUnits {
+                line: i + 1,
+                units: Units::parse(&w).ok(),
+                stated: w,
+            })
+        } else if t.is_empty() {
+            None
+        } else if fields(t).any(|tok| tok.parse::<f64>().is_ok()) {
+            // The data begin: nothing after them is a header.
+            break;
+        } else {
+            let last = fields(t).last().unwrap_or("");
+            column_units(last).map(|u| StatedUnits {
+                line: i + 1,
+                stated: last.to_string(),
+                units: Some(u),
+            })
+        };
+        match (&found, statement) {
+            (None, Some(s)) => found = Some(s),
+            (Some(f), Some(s)) if f.units != s.units => {
+                return Err(err(
+                    s.line,
+                    format!(
+                    "the text states its units twice, differently: {:?} on line {} and {:?} here",
+                    f.stated, f.line, s.stated
+                ),
+                ))
+            }
+            _ => {}
+        }
+    }
+    Ok(found)
 }
 
 /// Splits a data line on whitespace, commas, semicolons or tabs.

@@ -114,11 +114,13 @@ impl Record {
     ///
     /// - `format`: `None` detects it ([`Format::detect`], with `name` as the file name): AT2 if the text has
     ///   the PEER header layout, whatever the file's name, else two columns (time, acceleration).
-    /// - `units` of the accelerations: `None` takes the units an AT2 header states (`... IN UNITS OF G`,
-    ///   [`parse::at2_units`]), and g for a text that states none. Given units must agree with the header's:
-    ///   an AT2 header that says `UNITS OF G` read as cm/s^2 is an error (a [`ParseError`] on the header's
-    ///   line naming both), not a record 981 times too weak. A header whose units are not known here needs
-    ///   `units` given.
+    /// - `units` of the accelerations: `None` takes the units the text states, and g for a text that states
+    ///   none. An AT2 header states them as `... IN UNITS OF G` ([`parse::at2_units`]); a two-column or values
+    ///   text in a comment, `# units = "m/s2"` (the tool's own records say `# read with units = "m/s2"`), or
+    ///   in the name of its acceleration column, `acceleration_m_per_s2`, `acc (g)` ([`parse::text_units`]).
+    ///   Given units must agree with the stated ones: a header that says `UNITS OF G` read as cm/s^2 is an
+    ///   error (a [`ParseError`] on the header's line naming both), not a record 981 times too weak. A stated
+    ///   word that is not a unit known here needs `units` given.
     ///
     /// A text that is not in the format given but looks like an AT2 gets a hint to read it as one.
     ///
@@ -163,10 +165,11 @@ impl Record {
             }
             e
         })?;
-        let units = match format {
-            Format::At2 => at2_units(text, units)?,
-            _ => units.unwrap_or(Units::G),
+        let stated = match format {
+            Format::At2 => parse::at2_units(text)?,
+            _ => parse::text_units(text)?,
         };
+        let units = resolve_units(stated, units)?;
         let f = units.to_m_per_s2();
         Ok(Self::new(
             name,
@@ -311,8 +314,12 @@ impl Record {
 
 /// The units of an AT2 `text`'s accelerations: those given, which must agree with the header's; else the
 /// header's; else g.
-fn at2_units(text: &str, given: Option<Units>) -> Result<Units, ParseError> {
-    let stated = parse::at2_units(text)?;
+/// The units of a text's accelerations: those `given`, which must agree with those its header states, else
+/// the header's, else g.
+fn resolve_units(
+    stated: Option<parse::StatedUnits>,
+    given: Option<Units>,
+) -> Result<Units, ParseError> {
     match (stated, given) {
         (None, given) => Ok(given.unwrap_or(Units::G)),
         (Some(s), None) => s.units.ok_or_else(|| ParseError {

@@ -87,6 +87,15 @@ impl GroundMotionDoc {
                     "format and dt apply to a record file (file = ...), not to a built-in record",
                 ));
             }
+            if let Some(u) = self.units {
+                return Err(SchemaError::new(
+                    "ground_motion.units",
+                    format!(
+                        "units = \"{}\" applies to a record file (file = ...); the built-in record {source:?} carries its own: remove units",
+                        u.name()
+                    ),
+                ));
+            }
             if Record::builtin(&source).is_none() {
                 return Err(SchemaError::new(
                     "ground_motion.record",

@@ -381,3 +381,61 @@ fn scenario_units_and_format_keys() {
     let text = serde_json::to_string(&doc("")).unwrap();
     assert!(!text.contains("units"), "{text}");
 }
+
+#[test]
+fn a_two_column_text_states_its_units_in_a_comment_or_its_column_name() {
+    // The tool's own synthetic records: a comment and a column name, both m/s^2. Read without units they
+    // are m/s^2 (they used to be read as g: a PGA 9.8 times too large).
+    let ours = "# synthetic ground motion, pounding record synth --seed 1\n# read with units = \"m/s2\" (format time-acc)\ntime_s,acceleration_m_per_s2\n0.01,1.5\n0.02,-3\n";
+    let r = Record::read("s1", ours, None, None).unwrap();
+    assert_eq!(r.accelerations(), &[1.5, -3.0]);
+    // Column names and comments of other tools, each alone.
+    let cases = [
+        ("time,acc_g\n0,0.1\n0.01,0.2\n", G),
+        ("Time (s), Acceleration (g)\n0 0.1\n0.01 0.2\n", G),
+        ("t[s] a[cm/s2]\n0 0.1\n0.01 0.2\n", 0.01),
+        ("% units: gal\n0 0.1\n0.01 0.2\n", 0.01),
+        ("time_s,acceleration_mm_per_s2\n0,0.1\n0.01,0.2\n", 0.001),
+        // Nothing stated: g, as before.
+        ("time,acc\n0,0.1\n0.01,0.2\n", G),
+        ("0 0.1\n0.01 0.2\n", G),
+    ];
+    for (text, factor) in cases {
+        let r = Record::read("r", text, None, None).unwrap();
+        assert_eq!(r.accelerations()[1], 0.2 * factor, "{text}");
+    }
+    // A values file with a units comment.
+    let values = "# units = \"m/s2\"\n0.1\n0.2\n";
+    let r = Record::read("v", values, Some(Format::Values { dt: 0.01 }), None).unwrap();
+    assert_eq!(r.accelerations(), &[0.1, 0.2]);
+    // Units given that agree are used; units that contradict the text are one line naming both.
+    let agree = Record::read("s1", ours, None, Some(Units::MPerS2)).unwrap();
+    assert_eq!(agree.accelerations(), r_accs(ours));
+    let msg = Record::read("s1", ours, None, Some(Units::G))
+        .unwrap_err()
+        .to_string();
+    assert_eq!(msg.lines().count(), 1, "{msg}");
+    assert!(
+        msg.starts_with(
+            "line 2: the header states units of m/s2 (m/s^2), but the units given are g"
+        ),
+        "{msg}"
+    );
+    // Two statements that disagree.
+    let both = "# units = g\ntime_s,acceleration_m_per_s2\n0,1\n0.01,2\n";
+    let msg = Record::read("b", both, None, None).unwrap_err().to_string();
+    assert!(msg.contains("states its units twice, differently"), "{msg}");
+    // A comment after the data begin says nothing about the units (it is not a header).
+    let late = "0 0.1\n0.01 0.2\n# units = m/s2\n";
+    assert_eq!(
+        Record::read("l", late, None, None).unwrap().accelerations()[1],
+        0.2 * G
+    );
+}
+
+fn r_accs(text: &str) -> Vec<f64> {
+    Record::read("x", text, None, None)
+        .unwrap()
+        .accelerations()
+        .to_vec()
+}
