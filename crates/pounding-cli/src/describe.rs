@@ -26,12 +26,14 @@ pub fn stiffness_unit(n: f64) -> String {
 
 /// One line describing a contact model and its damping: `papi, k = 2e9 N/m, e = 0.65, ...`.
 pub fn contact_label(s: &ContactModel, p: Option<DampingParameter>) -> String {
+    let asked = s
+        .asked_restitution()
+        .map_or_else(|| "elastic".to_string(), |e| format!("e = {}", fmt_num(e)));
     let mut text = format!(
-        "{}, k = {} {}, e = {}",
+        "{}, k = {} {}, {asked}",
         s.model().name(),
         fmt_num(s.stiffness()),
         stiffness_unit(s.exponent()),
-        fmt_num(s.restitution())
     );
     if s.model().is_damped() {
         text.push_str(&format!(", damping {}", s.damping()));

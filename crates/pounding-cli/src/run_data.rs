@@ -62,8 +62,8 @@ pub struct ContactData {
     pub wall: bool,
     /// Gap at rest, m.
     pub gap: f64,
-    /// Coefficient of restitution the contact model was given.
-    pub e: f64,
+    /// Coefficient of restitution the contact model is built to deliver (`None`: an elastic model).
+    pub e: Option<f64>,
     /// Its levels.
     pub elements: Vec<ElementData>,
 }

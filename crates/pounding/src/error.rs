@@ -33,8 +33,8 @@ pub enum Error {
         /// The length required.
         expected: usize,
     },
-    /// Exact calibration failed.
-    #[error("cannot calibrate {what} for e = {e}: {reason}")]
+    /// Exact calibration (the default damping) failed: no value of the parameter delivers `e`.
+    #[error("cannot calibrate {what} for e = {e}: {reason}; ask an e in that range, or damping = \"formula\" (--damping formula) for the published formula")]
     Calibration {
         /// The parameter being calibrated.
         what: &'static str,

@@ -992,7 +992,7 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
         }
         for e in mine.iter().filter_map(|i| i.e_post) {
             ended += 1;
-            above += usize::from(e > cd.e * (1.0 + 1e-9));
+            above += usize::from(e > cd.e.unwrap_or(1.0) * (1.0 + 1e-9));
             top = top.max(e);
         }
         r.series.push(Series::points(
@@ -1007,10 +1007,12 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
     }
     // The requested e of each contact (one line for contacts given the same e).
     let mut given: Vec<(f64, Vec<&str>)> = Vec::new();
+    // An elastic contact asks none (it delivers 1).
     for cd in &d.contacts {
-        match given.iter_mut().find(|g| g.0 == cd.e) {
+        let Some(e) = cd.e else { continue };
+        match given.iter_mut().find(|g| g.0 == e) {
             Some(g) => g.1.push(&cd.name),
-            None => given.push((cd.e, vec![&cd.name])),
+            None => given.push((e, vec![&cd.name])),
         }
     }
     let several = given.len() > 1;

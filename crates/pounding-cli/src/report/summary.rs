@@ -59,14 +59,19 @@ fn contact(c: &SiteSummary) -> (String, bool) {
     let (delivered, differs) = match &c.e_delivered {
         Some(d) => (
             format!(", delivered {} to {}", plain(d.min, 3), plain(d.max, 3)),
-            (d.min - c.law.e).abs() > 0.01 || (d.max - c.law.e).abs() > 0.01,
+            c.law
+                .e
+                .is_some_and(|e| (d.min - e).abs() > 0.01 || (d.max - e).abs() > 0.01),
         ),
         None => (String::new(), false),
     };
+    let asked = match c.law.e {
+        Some(e) => format!("e asked {}", n(e)),
+        None => "elastic".to_string(),
+    };
     let line = format!(
-        "{}, e asked {}{delivered}, peak force {} MN, dissipated {} kJ",
+        "{}, {asked}{delivered}, peak force {} MN, dissipated {} kJ",
         pounding::words::count(c.impacts, "impact", None),
-        n(c.law.e),
         mn(c.peak_force),
         kj(c.dissipated_energy)
     );

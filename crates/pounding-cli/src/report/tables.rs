@@ -155,7 +155,7 @@ fn site_row(c: &SiteSummary) -> Vec<String> {
         mm(c.gap),
         floors.join(", "),
         e(c.law.model.name()),
-        n(c.law.e),
+        c.law.e.map_or_else(|| "elastic".to_string(), n),
         format!("{} (n = {})", n(c.law.stiffness), n(c.law.exponent)),
         param,
         impacts,

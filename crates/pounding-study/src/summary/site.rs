@@ -101,8 +101,10 @@ impl DampingSummary {
 pub struct ContactLawSummary {
     /// The contact model.
     pub model: Model,
-    /// The coefficient of restitution asked of it (dimensionless).
-    pub e: f64,
+    /// The coefficient of restitution asked of it (dimensionless); absent for an elastic model (hooke,
+    /// hertz), which delivers 1.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub e: Option<f64>,
     /// Stiffness, N/m^exponent.
     pub stiffness: f64,
     /// Exponent of the force law (dimensionless).
@@ -117,7 +119,7 @@ impl ContactLawSummary {
         let spec = contact.spec();
         Self {
             model: spec.model(),
-            e: spec.restitution(),
+            e: spec.asked_restitution(),
             stiffness: spec.stiffness(),
             exponent: spec.exponent(),
             damping_parameter: DampingSummary::of(contact.parameter()),

@@ -243,6 +243,11 @@ impl ContactModel {
     pub fn restitution(&self) -> f64 {
         self.e
     }
+    /// The coefficient of restitution this contact is built to deliver, `e_pre`; `None` for an elastic
+    /// model (hooke, hertz), which has no damping to calibrate and delivers 1 whatever `e` it was given.
+    pub fn asked_restitution(&self) -> Option<f64> {
+        self.model.info().parameter.map(|_| self.e)
+    }
     /// Damping choice.
     pub fn damping(&self) -> Damping {
         self.damping

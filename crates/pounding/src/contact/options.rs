@@ -28,8 +28,9 @@ pub struct ContactOptions {
 }
 
 impl Default for ContactOptions {
-    /// The one place of a contact's defaults: `papi` at `e = 0.65` (concrete on concrete), the published
-    /// damping formula, `alpha` calibrated and the energy-split reading (for `papi`), the model's own
+    /// The one place of a contact's defaults: `papi` at `e = 0.65` (concrete on concrete), damping
+    /// calibrated exactly (every impact of two free bodies delivers `e`; the published formula is
+    /// `Damping::Formula`), `alpha` calibrated and the energy-split reading (for `papi`), the model's own
     /// exponent and tension rule, the elastic Hertz penetration and a yield ratio of 0.1 (for
     /// `impact-material`).
     fn default() -> Self {
@@ -37,7 +38,7 @@ impl Default for ContactOptions {
             model: Model::Papi,
             e: 0.65,
             exponent: None,
-            damping: Damping::Formula,
+            damping: Damping::Exact,
             alpha: None,
             reading: Reading::EnergySplit,
             tension: None,

@@ -518,11 +518,13 @@ impl Piece for ContactPiece {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::{ContactModel, Model};
+    use crate::contact::{ContactModel, Damping, Model};
 
     fn contact(model: Model, k: f64) -> Contact {
+        // The published formula: impact-material cannot deliver e = 0.5 at its default yield ratio.
+        let law = ContactModel::new(model, k, 0.5).unwrap();
         let mut c = Contact::new(
-            ContactModel::new(model, k, 0.5).unwrap().prepare().unwrap(),
+            law.with_damping(Damping::Formula).prepare().unwrap(),
             0.0,
             1.0e5,
             1e-3,

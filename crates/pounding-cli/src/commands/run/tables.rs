@@ -129,7 +129,7 @@ fn sites(s: &Scenario, r: &Results) {
                 (
                     name,
                     lr,
-                    site.contact.spec().restitution(),
+                    site.contact.spec().asked_restitution(),
                     site.seat,
                     site.bumper.is_some(),
                     r.delivered_e(i),
@@ -137,8 +137,8 @@ fn sites(s: &Scenario, r: &Results) {
             });
         let mut spread = false;
         for (name, lr, e_asked, seat, bumper, delivered) in rows {
-            if let Some((lo, hi)) = delivered {
-                spread |= (lo - e_asked).abs() > 0.01 || (hi - e_asked).abs() > 0.01;
+            if let (Some((lo, hi)), Some(e)) = (delivered, e_asked) {
+                spread |= (lo - e).abs() > 0.01 || (hi - e).abs() > 0.01;
             }
             let range = match delivered {
                 Some((lo, hi)) if hi - lo < 5e-4 => format!("{lo:.3}"),
@@ -163,7 +163,7 @@ fn sites(s: &Scenario, r: &Results) {
                 "{:<20} {:>7}  {:>7}  {:>11}  {:>15}  {:>18}  {:>13}  {:>14}{unseat}{consumed}",
                 name,
                 lr.impacts,
-                fmt_num(e_asked),
+                e_asked.map_or_else(|| "elastic".to_string(), fmt_num),
                 range,
                 mn(lr.peak_force),
                 mm(lr.max_penetration),
