@@ -113,14 +113,11 @@ fn remove_stale_tmp(dir: &Path, name: &str) {
 /// header's, else g; [`Record::read`]). Messages are one line; a library value error comes back as itself.
 pub fn read_record(spec: &RecordSpec) -> Result<Record, RecordError> {
     if !spec.is_file {
-        if let Some(u) = spec.units {
+        let builtin = pounding::ground_motion::Builtin::from_name(&spec.source);
+        if let (Some(u), Some(b)) = (spec.units, builtin) {
             return Err(RecordError::Parse(pounding::ground_motion::ParseError {
                 line: 0,
-                message: format!(
-                    "units {} apply to a record file; the built-in record {:?} carries its own: give no units",
-                    u.name(),
-                    spec.source
-                ),
+                message: b.units_refused(u),
             }));
         }
         return Record::builtin(&spec.source).ok_or_else(|| {

@@ -51,6 +51,16 @@ impl Builtin {
         }
     }
 
+    /// Why `units` given with this built-in record are refused (it carries its own): one line, for a
+    /// scenario file, the command line and Python alike.
+    pub fn units_refused(&self, units: Units) -> String {
+        format!(
+            "units = \"{}\" applies to a record file (file = ...); the built-in record {:?} carries its own: remove units",
+            units.name(),
+            self.name()
+        )
+    }
+
     /// The record.
     pub fn record(&self) -> Option<Record> {
         match self {

@@ -312,8 +312,6 @@ impl Record {
     }
 }
 
-/// The units of an AT2 `text`'s accelerations: those given, which must agree with the header's; else the
-/// header's; else g.
 /// The units of a text's accelerations: those `given`, which must agree with those its header states, else
 /// the header's, else g.
 fn resolve_units(

@@ -169,16 +169,17 @@ impl Rosenbrock {
     pub fn step_until<S: OdeSystem>(&mut self, sys: &S, t_stop: f64) -> Result<(), Error> {
         let (t, n) = (self.t, self.n);
         let h_wanted = self.h;
-        let mut jacobian_for = None;
+        // J and T at the step's start, kept through rejections.
+        let mut have_jacobian = false;
         loop {
             let cut = t + 1.01 * self.h >= t_stop;
             let h = if cut { t_stop - t } else { self.h };
             if !(h.is_finite() && h > 0.0) || t + h == t {
                 return Err(Error::StepSizeUnderflow { t });
             }
-            if jacobian_for.is_none() {
+            if !have_jacobian {
                 self.jacobian(sys, h);
-                jacobian_for = Some(h);
+                have_jacobian = true;
             }
             for (i, w) in self.w.iter_mut().enumerate() {
                 let diag = if i % (n + 1) == 0 { 1.0 } else { 0.0 };

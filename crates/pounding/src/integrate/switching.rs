@@ -121,10 +121,16 @@ impl Stepper {
     /// The work done so far in explicit steps (accepted and rejected): an implicit step counts as
     /// [`implicit_step_cost`] of them.
     pub fn work(&self) -> f64 {
+        let (explicit, implicit) = self.attempts();
+        let n = self.explicit.y().len() as f64;
+        explicit as f64 + implicit as f64 * implicit_step_cost(n)
+    }
+
+    /// Steps attempted (accepted and rejected) by the explicit and by the implicit stepper.
+    fn attempts(&self) -> (usize, usize) {
         let (a, r) = self.explicit.counts();
         let (ai, ri) = self.implicit.as_ref().map_or((0, 0), Rosenbrock::counts);
-        let n = self.explicit.y().len() as f64;
-        (a + r) as f64 + (ai + ri) as f64 * implicit_step_cost(n)
+        (a + r, ai + ri)
     }
 
     /// Takes one accepted step that never passes `t_stop` (see [`DormandPrince::step_until`]), switching
@@ -145,10 +151,7 @@ impl Stepper {
     /// (then no stretch starts for a while).
     fn switch<S: OdeSystem>(&mut self, sys: &S) {
         let work = self.work();
-        let explicit_steps = {
-            let (a, r) = self.explicit.counts();
-            a + r
-        };
+        let explicit_steps = self.attempts().0;
         let Some(r) = self.implicit.as_mut() else {
             return;
         };

@@ -7,7 +7,7 @@ use super::{
 use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, WallSpec};
 use crate::contact::{AlphaRule, AlphaWord, ContactModel, ContactOptions};
 use crate::element::{StoreyLaw, StoreyModel};
-use crate::ground_motion::{Format, Record, Units};
+use crate::ground_motion::{Builtin, Format, Record, Units};
 use crate::names::Named;
 use crate::structure::ShearBuilding;
 use crate::structure::{isolation, Isolator, IsolatorKind, IsolatorModel};
@@ -87,14 +87,8 @@ impl GroundMotionDoc {
                     "format and dt apply to a record file (file = ...), not to a built-in record",
                 ));
             }
-            if let Some(u) = self.units {
-                return Err(SchemaError::new(
-                    "ground_motion.units",
-                    format!(
-                        "units = \"{}\" applies to a record file (file = ...); the built-in record {source:?} carries its own: remove units",
-                        u.name()
-                    ),
-                ));
+            if let (Some(u), Some(b)) = (self.units, Builtin::from_name(&source)) {
+                return Err(SchemaError::new("ground_motion.units", b.units_refused(u)));
             }
             if Record::builtin(&source).is_none() {
                 return Err(SchemaError::new(
