@@ -138,6 +138,9 @@ pub struct SweepArgs {
     /// No progress bar.
     #[arg(long, short)]
     pub quiet: bool,
+    /// Every run without contact (contacts = "off"): contacts and walls record closings only; devices stay.
+    #[arg(long)]
+    pub no_contact: bool,
 }
 
 #[derive(Args, Debug)]
@@ -153,6 +156,10 @@ pub struct RunArgs {
     /// Relative tolerance of the integration, 1e-12 to 1e-3 (overrides [analysis] tolerance).
     #[arg(long)]
     pub tolerance: Option<f64>,
+    /// The same structures without contact (contacts = "off"): contacts and walls record closings only;
+    /// devices stay. The response that pounding amplifies.
+    #[arg(long)]
+    pub no_contact: bool,
     /// No progress bar.
     #[arg(long, short)]
     pub quiet: bool,

@@ -33,6 +33,11 @@ pub enum Edp {
     Acceleration(Option<String>),
     /// Largest floor displacement, m, of a building, or of all.
     Displacement(Option<String>),
+    /// Largest storey shear (restoring force, an isolator's included), N, of a building, or of all.
+    StoreyShear(Option<String>),
+    /// Largest ductility (peak drift over yield drift) of an inelastic storey, of a building or of all
+    /// (0 where no storey can yield).
+    Ductility(Option<String>),
     /// Largest contact force of any contact, N.
     PeakForce,
     /// Largest penetration of any contact, m.
@@ -54,7 +59,9 @@ impl Edp {
         };
         let sites = |key: fn(&SiteSummary) -> f64| s.sites.iter().map(key).fold(0.0f64, f64::max);
         match self {
-            Edp::DriftRatio(b) => of(b, |b| &b.peak_drift_ratio),
+            Edp::DriftRatio(b) => of(b, BuildingSummary::structural_drift_ratios),
+            Edp::StoreyShear(b) => of(b, |b| &b.peak_storey_shear),
+            Edp::Ductility(b) => of(b, |b| &b.ductility),
             Edp::Acceleration(b) => of(b, |b| &b.peak_absolute_acceleration),
             Edp::Displacement(b) => of(b, |b| &b.peak_displacement),
             Edp::PeakForce => sites(|c| c.peak_force),
@@ -75,7 +82,7 @@ pub struct LimitState {
     pub threshold: f64,
 }
 
-const EDPS: &str = "drift_ratio, acceleration, displacement (each optionally .BUILDING), peak_force, penetration, pounding";
+const EDPS: &str = "drift_ratio, acceleration, displacement, storey_shear, ductility (each optionally .BUILDING), peak_force, penetration, pounding";
 
 fn parse_limit(text: &str, buildings: &[String]) -> Result<LimitState, String> {
     let (lhs, threshold) = match text.split_once('>') {
@@ -113,6 +120,8 @@ fn parse_limit(text: &str, buildings: &[String]) -> Result<LimitState, String> {
         ("drift_ratio", b) => Edp::DriftRatio(b),
         ("acceleration", b) => Edp::Acceleration(b),
         ("displacement", b) => Edp::Displacement(b),
+        ("storey_shear", b) => Edp::StoreyShear(b),
+        ("ductility", b) => Edp::Ductility(b),
         ("peak_force", None) => Edp::PeakForce,
         ("penetration", None) => Edp::Penetration,
         ("pounding", None) => Edp::Pounding,
@@ -175,6 +184,17 @@ pub struct Ida {
     pub limit_states: Vec<LimitState>,
     /// The base scenario's buildings, left to right.
     pub buildings: Vec<String>,
+    /// Those with storeys that can yield.
+    pub inelastic: Vec<String>,
+}
+
+/// The buildings of `s` with storeys that can yield.
+fn inelastic(s: &pounding::analysis::Scenario) -> Vec<String> {
+    s.buildings()
+        .iter()
+        .filter(|b| b.structure.storey_laws().iter().any(|l| l.is_inelastic()))
+        .map(|b| b.name.clone())
+        .collect()
 }
 
 fn err(path: &Path, msg: impl std::fmt::Display) -> InputError {
@@ -325,6 +345,7 @@ impl Ida {
             levels: sorted,
             limit_states,
             buildings: names,
+            inelastic: inelastic(&base_loaded.scenario),
         })
     }
 
@@ -452,8 +473,9 @@ pub struct Fit {
     pub exceedances: Vec<(usize, usize)>,
 }
 
-/// The EDP columns of runs.csv for buildings `names`: column name (with its unit) and how to read it.
-pub fn edp_columns(names: &[String]) -> Vec<(String, Edp)> {
+/// The EDP columns of runs.csv for buildings `names` (those in `inelastic` with their ductility): column name
+/// (with its unit) and how to read it.
+pub fn edp_columns(names: &[String], inelastic: &[String]) -> Vec<(String, Edp)> {
     let mut cols = Vec::new();
     for n in names {
         let b = Some(n.clone());
@@ -462,7 +484,17 @@ pub fn edp_columns(names: &[String]) -> Vec<(String, Edp)> {
             format!("{n}_peak_acceleration_m_per_s2"),
             Edp::Acceleration(b.clone()),
         ));
-        cols.push((format!("{n}_peak_displacement_m"), Edp::Displacement(b)));
+        cols.push((
+            format!("{n}_peak_displacement_m"),
+            Edp::Displacement(b.clone()),
+        ));
+        cols.push((
+            format!("{n}_peak_storey_shear_N"),
+            Edp::StoreyShear(b.clone()),
+        ));
+        if inelastic.contains(n) {
+            cols.push((format!("{n}_peak_ductility"), Edp::Ductility(b)));
+        }
     }
     cols.push(("peak_force_N".into(), Edp::PeakForce));
     cols.push(("max_penetration_m".into(), Edp::Penetration));
@@ -693,7 +725,7 @@ fn csv_fail(e: csv::Error) -> String {
 
 impl RunsCsv {
     fn new(ida: &Ida) -> Result<RunsCsv, String> {
-        let cols = edp_columns(&ida.buildings);
+        let cols = edp_columns(&ida.buildings, &ida.inelastic);
         let mut wtr = csv::Writer::from_writer(Vec::new());
         let mut header = vec![
             "record",

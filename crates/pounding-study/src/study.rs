@@ -513,6 +513,27 @@ impl Study {
         }
     }
 
+    /// The same study with `contacts = "off"` in every run (`--no-contact`): its identity changes with it,
+    /// so its store is another study's. Refused when an axis or a run entry sets `contacts` itself.
+    pub fn without_contact(&mut self) -> Result<(), InputError> {
+        if self.axes.iter().any(|a| a.name == "contacts") {
+            return Err(err(
+                &self.path,
+                "--no-contact: the study sets \"contacts\" per run already; allowed: the option or the key, not both",
+            ));
+        }
+        let off = |v: &mut Value| {
+            if let Some(o) = v.as_object_mut() {
+                o.insert("contacts".into(), Value::String("off".into()));
+            }
+        };
+        match &mut self.runs {
+            Runs::Product { base, .. } => off(base),
+            Runs::List(v) => v.iter_mut().for_each(|v| off(&mut v.value)),
+        }
+        Ok(())
+    }
+
     /// The study's identity: a hash of its definition (the base scenario, and the axes with their values or
     /// the list of runs), so that a store is known as this study's without making its runs.
     pub fn id(&self) -> String {

@@ -12,7 +12,10 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
     let a = &args.sweep;
     check_figures(&args.figures)?;
     let workers = workers(a)?;
-    let study = Ida::read(&a.study).map_err(|e| input(e.0))?;
+    let mut study = Ida::read(&a.study).map_err(|e| input(e.0))?;
+    if a.no_contact {
+        study.base["contacts"] = "off".into();
+    }
     let (bar, mut report) = progress(a.quiet);
     let out = ida::run(&study, &a.out, workers, &mut report).map_err(|e| match e {
         IdaError::Input(e) => input(e.0),
@@ -73,7 +76,8 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
             name: l.name.clone(),
             threshold: l.threshold,
             unit: match l.edp {
-                Edp::DriftRatio(_) | Edp::Pounding => "",
+                Edp::DriftRatio(_) | Edp::Ductility(_) | Edp::Pounding => "",
+                Edp::StoreyShear(_) => "N",
                 Edp::Acceleration(_) => "m/s^2",
                 Edp::Displacement(_) | Edp::Penetration => "m",
                 Edp::PeakForce => "N",

@@ -6,12 +6,14 @@ use crate::args::SweepArgs;
 use crate::error::{input, CliError};
 use crate::progress::{progress, workers};
 use pounding::analysis::RunOptions;
-use pounding_study::headline::{headline, Cell};
+use pounding::scenario::Contacts;
+use pounding_study::headline::{amplification, amplification_column, headline, Cell};
 use pounding_study::input::write_atomic_with;
 use pounding_study::store::{Store, StoreError};
 use pounding_study::study::Study;
 use pounding_study::summary::RunSummary;
 use pounding_study::sweep::{self, Swept};
+use std::collections::HashMap;
 
 /// Each run's outcome read back from the store, one at a time, in study order: summaries are not held.
 fn each_outcome(
@@ -29,24 +31,47 @@ fn each_outcome(
     Ok(())
 }
 
+/// The coordinates of run `i` without the `contacts` axis at `axis`: the runs a run without contact is the
+/// reference of.
+fn others(study: &Study, i: usize, axis: usize) -> Vec<String> {
+    let mut c = study.variant(i).2;
+    c.remove(axis);
+    c
+}
+
 /// `runs.csv`: index, key, status, the axes' values, the headline results (the union of every run's
-/// columns, in the order they first appear), the error; written row by row. Returns the failed runs'
-/// count and the first five with their messages.
+/// columns, in the order they first appear), with a `contacts` axis the amplification of each building's
+/// peaks over the run without contact of the same other values, the error; written row by row. Returns
+/// the failed runs' count and the first five with their messages.
 fn write_runs_csv(
     study: &Study,
     swept: &Swept,
     store: &Store,
     path: &std::path::Path,
 ) -> Result<(usize, Vec<(usize, String)>), CliError> {
+    let contacts_axis = study.axes.iter().position(|a| a.name == "contacts");
     let mut columns: Vec<String> = Vec::new();
-    each_outcome(swept, store, |_, o| {
-        for (c, _) in o.as_ref().map(headline).unwrap_or_default() {
-            if !columns.contains(&c) {
-                columns.push(c);
+    let mut off_runs: HashMap<Vec<String>, Vec<(String, Cell)>> = HashMap::new();
+    each_outcome(swept, store, |i, o| {
+        let Ok(summary) = o else { return Ok(()) };
+        let row = headline(&summary);
+        for (c, _) in &row {
+            if !columns.contains(c) {
+                columns.push(c.clone());
             }
+        }
+        if let (Some(a), Contacts::Off) = (contacts_axis, summary.contacts) {
+            off_runs.insert(others(study, i, a), row);
         }
         Ok(())
     })?;
+    if contacts_axis.is_some() {
+        let amplified: Vec<String> = columns
+            .iter()
+            .filter_map(|c| amplification_column(c))
+            .collect();
+        columns.extend(amplified);
+    }
     let mut failed = (0, Vec::new());
     let mut header = vec!["index", "key", "status"];
     header.extend(study.axes.iter().map(|a| a.name.as_str()));
@@ -60,7 +85,10 @@ fn write_runs_csv(
         wtr.write_record(&header)?;
         let r = each_outcome(swept, store, |i, o| {
             let csv_err = |e: csv::Error| CliError::Io(format!("cannot write runs.csv: {e}"));
-            let row = o.as_ref().map(headline).unwrap_or_default();
+            let mut row = o.as_ref().map(headline).unwrap_or_default();
+            if let Some(off) = contacts_axis.and_then(|a| off_runs.get(&others(study, i, a))) {
+                row.extend(amplification(&row, off));
+            }
             wtr.write_field(i.to_string()).map_err(csv_err)?;
             wtr.write_field(swept.key(i)).map_err(csv_err)?;
             wtr.write_field(if o.is_ok() { "ok" } else { "error" })
@@ -101,7 +129,10 @@ fn write_runs_csv(
 /// `pounding sweep`.
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     let workers = workers(a)?;
-    let study = Study::read(&a.study).map_err(|e| input(e.0))?;
+    let mut study = Study::read(&a.study).map_err(|e| input(e.0))?;
+    if a.no_contact {
+        study.without_contact().map_err(|e| input(e.0))?;
+    }
     let n = study.len();
     let id = study.id();
     let scenario = |i: usize| {

@@ -157,6 +157,12 @@ impl BuildingSummary {
             .collect()
     }
 
+    /// The drift ratio of each storey of the structure (above an isolator, whose drift over its height is no
+    /// drift ratio: its displacement is the isolator's own), dimensionless.
+    pub fn structural_drift_ratios(&self) -> &[f64] {
+        &self.peak_drift_ratio[usize::from(self.isolator.is_some())..]
+    }
+
     /// Whether any storey yields (bilinear or Bouc–Wen).
     pub fn is_inelastic(&self) -> bool {
         !self.inelastic_storeys.is_empty()

@@ -17,6 +17,7 @@ pub use site::{
 
 use crate::input::Loaded;
 use pounding::analysis::Results;
+use pounding::scenario::Contacts;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -82,6 +83,10 @@ pub struct RunSummary {
     pub output_dt: f64,
     /// Relative tolerance of the integration.
     pub tolerance: f64,
+    /// `off` for a run without contact (`contacts = "off"`): its sites record closings and openings only;
+    /// absent when contacts act.
+    #[serde(default, skip_serializing_if = "Contacts::is_on")]
+    pub contacts: Contacts,
     /// The buildings, left to right.
     pub buildings: Vec<BuildingSummary>,
     /// The contact sites: contacts between neighbours, left to right, then walls.
@@ -128,6 +133,7 @@ impl RunSummary {
             duration: s.duration(),
             output_dt: s.output_dt(),
             tolerance: s.tolerance(),
+            contacts: loaded.doc.contacts,
             buildings: s
                 .buildings()
                 .iter()

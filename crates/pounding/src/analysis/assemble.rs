@@ -9,8 +9,8 @@ use crate::contact::{ContactModel, Model};
 use crate::error::check;
 use crate::Error;
 
-/// The gap of [`Scenario::without_contact`]'s sites, m: beyond any motion, yet finite, so that penetrations
-/// `u_L - u_R - gap` stay ordinary numbers.
+/// The gap the contact elements of an inactive site act at ([`ContactSite::active`]), m: beyond any motion,
+/// yet finite, so that penetrations `u_L - u_R - gap` stay ordinary numbers.
 pub const NO_CONTACT_GAP: f64 = 1e100;
 
 fn choice(name: &'static str, value: String, allowed: String) -> Error {
@@ -166,6 +166,7 @@ impl Scenario {
             contact,
             bumper: None,
             seat: None,
+            active: true,
         });
         Ok(self)
     }
@@ -292,6 +293,7 @@ impl Scenario {
             contact,
             bumper: w.bumper,
             seat: w.seat,
+            active: true,
         });
         Ok(self)
     }
@@ -400,18 +402,24 @@ impl Scenario {
         Ok(self)
     }
 
-    /// The same scenario without contact: every pair of neighbours is linked at the floors of its contact
-    /// entry (or, without one, at the floors at the same height) by contact elements whose gap no motion
-    /// closes ([`NO_CONTACT_GAP`]), so that a run records each floor pair's largest closing
-    /// ([`super::SiteResponse::max_closing`]) and nothing else changes; walls stay, out of reach, to record
-    /// the largest approach to each; bumpers go; devices stay (they are part of the structure). Neighbours
-    /// without a contact entry and without floors at the same height stay unlinked.
-    pub fn without_contact(&self) -> Scenario {
-        let mut s = self.clone();
-        for site in &mut s.sites {
-            site.gap = NO_CONTACT_GAP;
-            site.bumper = None;
+    /// The same scenario with every site inactive ([`ContactSite::active`]): contacts and walls (with
+    /// their bumpers) stay in the scenario, with their gaps, and record each level's largest closing and
+    /// opening, but never act; devices stay (they are part of the structure). The run a scenario's
+    /// `contacts = "off"` asks for: the response that pounding amplifies.
+    pub fn with_contacts_off(mut self) -> Scenario {
+        for site in &mut self.sites {
+            site.active = false;
         }
+        self
+    }
+
+    /// The same scenario without contact ([`Scenario::with_contacts_off`]), every pair of neighbours
+    /// linked: one without a contact entry gets an inactive site at its floors at the same height, so that
+    /// a run records each floor pair's largest closing ([`super::SiteResponse::max_closing`]); walls record
+    /// the largest approach to each. Neighbours without a contact entry and without floors at the same
+    /// height stay unlinked.
+    pub fn without_contact(&self) -> Scenario {
+        let mut s = self.clone().with_contacts_off();
         for left in 0..self.buildings.len().saturating_sub(1) {
             let pair = SiteKind::Between {
                 left,
@@ -437,6 +445,7 @@ impl Scenario {
                     contact,
                     bumper: None,
                     seat: None,
+                    active: false,
                 });
             }
         }

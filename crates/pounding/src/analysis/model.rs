@@ -3,7 +3,7 @@
 //! mass-proportional damping of its superstructure), one contact element per level of each contact site
 //! (two with a bumper), and one device element per floor pair of each device.
 
-use super::{ContactSite, DeviceEnds, Layer, Level, Scenario, SiteKind};
+use super::{ContactSite, DeviceEnds, Layer, Level, Scenario, SiteKind, NO_CONTACT_GAP};
 use crate::element::device::Dashpot;
 use crate::element::{Contact, Element, ElementLaw, End, Scales};
 use crate::engine::{Dof, Ground, System};
@@ -106,6 +106,7 @@ impl<'a> Model<'a> {
                     elements.push(Element::new(ends.0, ends.1, law));
                 };
                 match &site.bumper {
+                    _ if !site.active => push(Layer::Direct, NO_CONTACT_GAP, &site.contact),
                     None => push(Layer::Direct, site.gap, &site.contact),
                     Some(bm) => {
                         let (touch, consumed) = bm.gaps(site.gap);

@@ -127,12 +127,22 @@ pub struct ContactSite {
     pub bumper: Option<Bumper>,
     /// Seat length of the joint for the unseating check, m.
     pub seat: Option<f64>,
+    /// Whether its contacts act: a site of a run without contact ([`super::Scenario::with_contacts_off`])
+    /// only records the largest closing and opening of each level.
+    pub active: bool,
 }
 
 impl ContactSite {
     /// Whether the site is a wall.
     pub fn is_wall(&self) -> bool {
         matches!(self.kind, SiteKind::Wall { .. })
+    }
+
+    /// The closing at which its face is first touched, m: the gap, less a bumper's thickness.
+    pub fn touch_gap(&self) -> f64 {
+        self.bumper
+            .as_ref()
+            .map_or(self.gap, |b| b.gaps(self.gap).0)
     }
 }
 

@@ -1,8 +1,8 @@
 //! Validation of a [`ScenarioDoc`] into the library's types, once, with one-line messages that name the key.
 
 use super::{
-    AlphaDoc, BuildingDoc, ContactDoc, DeviceDoc, FormatName, GroundMotionDoc, IsolatorDoc, LawDoc,
-    LawKeys, ScenarioDoc, SchemaError, WallDoc,
+    AlphaDoc, BuildingDoc, ContactDoc, Contacts, DeviceDoc, FormatName, GroundMotionDoc,
+    IsolatorDoc, LawDoc, LawKeys, ScenarioDoc, SchemaError, WallDoc,
 };
 use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, WallSpec};
 use crate::contact::{AlphaRule, AlphaWord, ContactModel, ContactOptions};
@@ -231,7 +231,10 @@ impl ScenarioDoc {
         for (i, d) in self.device.iter().enumerate() {
             scenario = device(scenario, &format!("device.{i}"), d)?;
         }
-        Ok(scenario)
+        Ok(match self.contacts {
+            Contacts::On => scenario,
+            Contacts::Off => scenario.with_contacts_off(),
+        })
     }
 }
 

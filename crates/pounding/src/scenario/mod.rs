@@ -54,6 +54,29 @@ pub struct ScenarioDoc {
     /// Devices between neighbours.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub device: Vec<DeviceDoc>,
+    /// `"on"` (default) or `"off"`: the same structures with every contact and wall inactive (they record
+    /// closings only; devices stay), the response that pounding amplifies.
+    #[serde(default, skip_serializing_if = "Contacts::is_on")]
+    pub contacts: Contacts,
+}
+
+crate::named! {
+    /// Whether a scenario's contacts and walls act (`contacts = "on"`, the default) or not (`"off"`).
+    #[derive(Default)]
+    pub enum Contacts: "contacts" {
+        /// Every contact and wall acts.
+        #[default]
+        On = "on",
+        /// None acts: they record the largest closing and opening of each level only.
+        Off = "off",
+    }
+}
+
+impl Contacts {
+    /// Whether contacts act (the default, left out of a written scenario).
+    pub fn is_on(&self) -> bool {
+        *self == Contacts::On
+    }
 }
 
 /// `[ground_motion]`: a built-in record or a record file.

@@ -12,6 +12,7 @@ use crate::output_set::{DataFile, OutputSet};
 use crate::run_data::RunData;
 use crate::scenario::load;
 use pounding::analysis::Results;
+use pounding::scenario::Contacts;
 use pounding_study::input::Loaded;
 use pounding_study::summary::RunSummary;
 use pounding_study::tables::{
@@ -21,9 +22,15 @@ use std::io::IsTerminal;
 
 /// `pounding run`.
 pub fn run(a: &RunArgs) -> Result<(), CliError> {
-    let (mut loaded, text) = load(&a.scenario)?;
+    let (mut loaded, mut text) = load(&a.scenario)?;
     if let Some(t) = a.tolerance {
         loaded.scenario = loaded.scenario.with_tolerance(t).map_err(CliError::from)?;
+    }
+    if a.no_contact && loaded.doc.contacts.is_on() {
+        loaded.doc.contacts = Contacts::Off;
+        loaded.scenario = loaded.scenario.with_contacts_off();
+        // The copy of the scenario in the output folder runs as this run did.
+        text = no_contact_text(&text);
     }
     // The output folder must be new, empty or an earlier run's, checked before any work.
     OutputSet::check(&a.out)?;
@@ -66,6 +73,27 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         println!("\nwrote {}: {}", a.out.display(), written.join(", "));
     }
     Ok(())
+}
+
+/// The scenario file's `text` with `contacts = "off"`: the key added before the first table, or the one the
+/// file gives replaced.
+fn no_contact_text(text: &str) -> String {
+    const OFF: &str = "contacts = \"off\"  # --no-contact";
+    let mut lines: Vec<&str> = text.lines().collect();
+    let key = |l: &&str| {
+        let t = l.trim_start();
+        t.strip_prefix("contacts")
+            .is_some_and(|r| r.trim_start().starts_with('='))
+    };
+    let table = |l: &&str| l.trim_start().starts_with('[');
+    match lines.iter().take_while(|l| !table(l)).position(key) {
+        Some(i) => lines[i] = OFF,
+        None => {
+            let i = lines.iter().position(table).unwrap_or(lines.len());
+            lines.insert(i, OFF);
+        }
+    }
+    lines.join("\n") + "\n"
 }
 
 /// Runs the analysis, with a progress bar on a terminal (unless `quiet`).

@@ -166,6 +166,9 @@ fn building(b: &Building) {
 
 /// Every contact site: where it is, its gap and levels, its law, bumper and seat.
 fn sites(s: &Scenario) {
+    if s.sites().iter().any(|site| !site.active) {
+        println!("\ncontacts off: the contacts and walls below record closings only, their laws never act");
+    }
     for site in s.sites() {
         let law = contact_label(site.contact.spec(), site.contact.parameter());
         match site.kind {

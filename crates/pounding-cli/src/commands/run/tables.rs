@@ -109,8 +109,37 @@ fn isolators(s: &Scenario, r: &Results) {
     }
 }
 
+/// Every site of a run without contact: its gap and each level's largest closing against it.
+fn inactive_sites(s: &Scenario, r: &Results) {
+    println!("\nwithout contact      gap_mm  max_closing_mm  would_touch  max_opening_mm (gap: to a bumper's face)");
+    for (site, lr) in s.sites().iter().zip(&r.sites) {
+        let name = if site.is_wall() {
+            format!("wall {}", site.name)
+        } else {
+            site.name.clone()
+        };
+        let most = |v: &[f64]| v.iter().fold(0.0, |a: f64, b| a.max(*b));
+        let closing = most(&lr.max_closing);
+        println!(
+            "{:<20} {:>6}  {:>14}  {:>11}  {:>14}",
+            name,
+            mm(site.touch_gap()),
+            mm(closing),
+            if closing > site.touch_gap() {
+                "yes"
+            } else {
+                "no"
+            },
+            mm(most(&lr.max_opening))
+        );
+    }
+}
+
 /// Every contact site: impacts, e asked and delivered, peaks.
 fn sites(s: &Scenario, r: &Results) {
+    if s.sites().iter().any(|site| !site.active) {
+        return inactive_sites(s, r);
+    }
     if !s.sites().is_empty() {
         println!(
             "\ncontact              impacts  e_asked  e_delivered    peak_force_MN  max_penetration_mm  dissipated_kJ  max_opening_mm"
