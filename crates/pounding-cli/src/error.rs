@@ -1,8 +1,8 @@
-//! What can stop a command: bad input (exit code 2), a failure to write output (exit code 1), or Ctrl-C
-//! (exit code 130).
+//! What can stop a command: bad input (exit code 2), a failure to write output (exit code 1), runs of a
+//! study that failed (exit code 3), or Ctrl-C (exit code 130).
 
-/// What can stop a command: bad input (exit code 2), a failure to write output (exit code 1), or Ctrl-C
-/// (exit code 130).
+/// What can stop a command: bad input (exit code 2), a failure to write output (exit code 1), runs of a
+/// study that failed (exit code 3), or Ctrl-C (exit code 130).
 #[derive(Debug)]
 pub enum CliError {
     /// Bad input: one line naming the parameter, the value and what is allowed.
@@ -11,6 +11,8 @@ pub enum CliError {
     Io(String),
     /// Ctrl-C stopped the work: what was kept.
     Interrupted(String),
+    /// A study finished with failed runs: how many, and where to read why (what succeeded is written).
+    Failed(String),
 }
 
 impl From<pounding::Error> for CliError {

@@ -91,6 +91,10 @@ fn main() -> ExitCode {
             eprintln!("error: {}", pounding_study::one_line(&msg, 292));
             ExitCode::from(1)
         }
+        Err(CliError::Failed(msg)) => {
+            eprintln!("error: {}", pounding_study::one_line(&msg, 292));
+            ExitCode::from(3)
+        }
         Err(CliError::Interrupted(msg)) => {
             eprintln!("interrupted: {}", pounding_study::one_line(&msg, 286));
             ExitCode::from(interrupt::EXIT_CODE)

@@ -15,6 +15,8 @@ pub struct Bar {
     pub skipped: usize,
     /// Runs found damaged in the store, and run again.
     pub damaged: usize,
+    /// Runs handled so far (run, or found in the store), and of the study.
+    pub done: (usize, usize),
 }
 
 impl Bar {
@@ -54,12 +56,14 @@ pub fn progress(
         bar,
         skipped: 0,
         damaged: 0,
+        done: (0, 0),
     }));
     let shared = state.clone();
     let report = move |p: Progress| {
         let mut s = shared.borrow_mut();
         s.skipped = p.skipped;
         s.damaged = p.damaged;
+        s.done = (p.done, p.todo);
         if let Some(b) = &s.bar {
             b.set_length(p.todo as u64);
             b.set_position(p.done as u64);
@@ -70,13 +74,22 @@ pub fn progress(
     (state, report)
 }
 
-/// The error of a sweep or an IDA that ended early: Ctrl-C (what the store kept), or the store's failure.
-pub fn ended_early(e: pounding_study::sweep::SweepError, store: &std::path::Path) -> CliError {
+/// The error of a sweep or an IDA that ended early: Ctrl-C (how many runs the store kept), or the store's
+/// failure.
+pub fn ended_early(
+    e: pounding_study::sweep::SweepError,
+    store: &std::path::Path,
+    bar: &Bar,
+) -> CliError {
     match e {
-        pounding_study::sweep::SweepError::Cancelled => CliError::Interrupted(format!(
-            "every run that finished is in {}; the same command resumes from there",
-            store.display()
-        )),
+        pounding_study::sweep::SweepError::Cancelled => {
+            let (done, todo) = bar.done;
+            CliError::Interrupted(format!(
+                "{done} of {todo} runs are in {} ({} of them from before); the same command resumes from there",
+                store.display(),
+                bar.skipped
+            ))
+        }
         other => CliError::Io(other.to_string()),
     }
 }

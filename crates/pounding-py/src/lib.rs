@@ -345,8 +345,9 @@ fn sweep_runs(
             // A list of scenarios is known by its runs' keys.
             let prepared = py.allow_threads(|| sweep::prepare(values.clone(), workers));
             let id = sweep::study_id(&prepared);
+            let keys: Vec<String> = prepared.into_iter().map(|p| p.key).collect();
             Some(
-                Store::open(Path::new(path), &id, values.len(), &|| id.clone())
+                Store::open(Path::new(path), &id, values.len(), &|| keys.clone())
                     .map_err(store_err)?,
             )
         }
@@ -391,12 +392,14 @@ struct PyStore {
 
 #[pymethods]
 impl PyStore {
-    /// Opens (or creates) the store at `path` of the study `id` with `runs` runs; InputError if it holds
-    /// another study.
+    /// Opens (or creates) the store at `path` of the study `id` whose runs have `keys` (in order); an earlier
+    /// study's store whose every run is among them grows into this one's; InputError if it holds another
+    /// study.
     #[new]
-    fn new(path: &str, id: &str, runs: usize) -> PyResult<Self> {
+    fn new(path: &str, id: &str, keys: Vec<String>) -> PyResult<Self> {
         Ok(PyStore {
-            store: Store::open(Path::new(path), id, runs, &|| id.to_string()).map_err(store_err)?,
+            store: Store::open(Path::new(path), id, keys.len(), &|| keys.clone())
+                .map_err(store_err)?,
         })
     }
 

@@ -336,6 +336,24 @@ def test_the_store_resumes_and_refuses_another_study(tmp_path, base):
     assert rows[2][3].startswith("[ground_motion] needs exactly one of")
 
 
+def test_a_store_grows_into_a_study_that_holds_all_its_runs(tmp_path, base):
+    store = tmp_path / "study.sqlite"
+    scenarios = gaps(base, [0.0, 0.01, 0.02])
+    first = pounding.sweep([scenarios[0], scenarios[2]], store=store, progress=False)
+    with sqlite3.connect(store) as db:
+        before = dict(db.execute("SELECT key, finished FROM runs").fetchall())
+    # A new gap between them: the two stored runs are kept as they were, the new one added, each at its place.
+    grown = pounding.sweep(scenarios, store=store, progress=False)
+    assert [grown[0], grown[2]] == first
+    with sqlite3.connect(store) as db:
+        rows = db.execute("SELECT key, idx, finished FROM runs ORDER BY idx").fetchall()
+    assert [r[1] for r in rows] == [0, 1, 2]
+    assert {r[0]: r[2] for r in rows if r[0] in before} == before
+    # A list without one of the stored runs is another study's: refused.
+    with pytest.raises(pounding.InputError, match="a store grows only into a study with all its runs"):
+        pounding.sweep(scenarios[1:], store=store, progress=False)
+
+
 RESUME_SCRIPT = """
 import copy, sys, pounding
 base = pounding.load_scenario(sys.argv[1])

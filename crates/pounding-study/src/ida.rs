@@ -635,20 +635,18 @@ pub fn run(
         &json!({"base": ida.base, "records": ida.records, "levels": ida.levels, "intensities": ims}),
         ida.path.parent(),
     );
-    // The identity a store of the first layout knows this IDA by: the hash of every run's key.
-    let legacy = || {
-        let values = (0..len).map(scenario).collect();
-        crate::sweep::study_id(&crate::sweep::prepare(values, workers))
-    };
+    // Every run's key: what a store of the first layout knew this IDA by, and what an earlier IDA's store
+    // must hold no more than to grow into this one's (new records or levels).
+    let keys = || crate::sweep::run_keys(len, &scenario, workers);
     let db = out.join("study.sqlite");
     let store_err = |e: StoreError| match e {
         StoreError::Mismatch(m) => IdaError::Input(InputError::new(m)),
         StoreError::Io(m) => IdaError::Io(m),
     };
-    Store::check(&db, &id, len, &legacy).map_err(store_err)?;
+    Store::check(&db, &id, len, &keys).map_err(store_err)?;
     std::fs::create_dir_all(out)
         .map_err(|e| IdaError::Io(format!("cannot create {}: {e}", out.display())))?;
-    let mut store = Store::open(&db, &id, len, &legacy).map_err(store_err)?;
+    let mut store = Store::open(&db, &id, len, &keys).map_err(store_err)?;
     let swept = crate::sweep::run(
         len,
         &scenario,

@@ -13,6 +13,12 @@ pub fn fnv1a_128(bytes: &[u8]) -> u128 {
         .fold(OFFSET, |h, b| (h ^ u128::from(*b)).wrapping_mul(PRIME))
 }
 
+/// The identity of a list of runs: the hash of their keys, in order, in hexadecimal.
+pub fn keys_id<S: AsRef<str>>(keys: &[S]) -> String {
+    let joined: Vec<&str> = keys.iter().map(AsRef::as_ref).collect();
+    format!("{:032x}", fnv1a_128(joined.join("\n").as_bytes()))
+}
+
 /// `value` as compact JSON with every object's keys sorted: the same text for the same content.
 pub fn canonical(value: &Value) -> String {
     let mut out = String::new();

@@ -68,6 +68,23 @@ pub fn digest(key: &str, outcome: &Outcome) -> String {
     format!("{:032x}", crate::key::fnv1a_128(&bytes))
 }
 
+/// How a study meets the store at a path.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fit {
+    /// No store yet (or an empty one): it is created.
+    New,
+    /// The store of this study.
+    Same,
+    /// The store of an earlier study whose every stored run is a run of this one (new axis values, records
+    /// or levels): it grows into this study's, keeping them.
+    Grows {
+        /// Runs stored, kept.
+        stored: usize,
+        /// Runs of the earlier study.
+        of: usize,
+    },
+}
+
 /// An open study store, held by this process alone (an OS lock on the file `<store>.lock` beside it, released
 /// when the store is dropped or the process ends, however it ends).
 pub struct Store {
@@ -75,6 +92,8 @@ pub struct Store {
     path: std::path::PathBuf,
     /// The lock of the writing store; none for a reader ([`Store::reader`]).
     _lock: Option<std::fs::File>,
+    /// How the study met it when opened.
+    pub fit: Fit,
 }
 
 /// Why a store cannot be used: one line.
@@ -170,18 +189,20 @@ fn regular_files(path: &Path) -> Result<(), StoreError> {
 }
 
 impl Store {
-    /// Checks, without writing anything, that the file at `path` is absent or a store of the study `id`
-    /// with `runs` runs. A store of the first layout knew its study by another identity, `legacy()`
-    /// (computed only for such a store).
+    /// Checks, without writing anything, that the file at `path` is absent, a store of the study `id` with
+    /// `runs` runs, or one that can grow into it ([`Fit`]). `keys()` gives the study's run keys in order,
+    /// computed only when the identity does not settle it: a store of the first layout knew its study by the
+    /// hash of its keys ([`crate::key::keys_id`]), and an earlier study's store grows when every run it
+    /// stored is among them.
     pub fn check(
         path: &Path,
         id: &str,
         runs: usize,
-        legacy: &dyn Fn() -> String,
-    ) -> Result<(), StoreError> {
+        keys: &dyn Fn() -> Vec<String>,
+    ) -> Result<Fit, StoreError> {
         regular_files(path)?;
         if !path.exists() {
-            return Ok(());
+            return Ok(Fit::New);
         }
         let shown = path.display();
         let mismatch = |why: String| {
@@ -206,7 +227,7 @@ impl Store {
             .query_row("SELECT count(*) FROM sqlite_master", [], |r| r.get(0))
             .map_err(unreadable)?;
         if tables == 0 {
-            return Ok(());
+            return Ok(Fit::New);
         }
         let get = |name: &str| -> Result<Option<String>, rusqlite::Error> {
             conn.query_row(
@@ -229,7 +250,7 @@ impl Store {
         let stored_runs: Result<i64, _> =
             conn.query_row("SELECT count(*) FROM runs", [], |r| r.get(0));
         if format.is_none() && stored.is_none() && matches!(stored_runs, Ok(0)) {
-            return Ok(());
+            return Ok(Fit::New);
         }
         if !matches!(format.as_deref(), Some(FORMAT | FORMAT_1)) {
             return Err(mismatch(format!(
@@ -237,17 +258,31 @@ impl Store {
                 format.unwrap_or_default()
             )));
         }
-        let same = stored.as_deref() == Some(id)
-            || (format.as_deref() == Some(FORMAT_1)
-                && stored.as_deref() == Some(legacy().as_str()));
-        if !same {
-            let n = get("runs").ok().flatten().unwrap_or_default();
-            return Err(mismatch(format!(
-                "was written by a different study (id {}, {n} runs; this study: id {id}, {runs} runs)",
-                stored.unwrap_or_default()
-            )));
+        if stored.as_deref() == Some(id) {
+            return Ok(Fit::Same);
         }
-        Ok(())
+        let keys = keys();
+        if format.as_deref() == Some(FORMAT_1)
+            && stored.as_deref() == Some(crate::key::keys_id(&keys).as_str())
+        {
+            return Ok(Fit::Same);
+        }
+        let n = get("runs").ok().flatten().unwrap_or_default();
+        let wanted: HashSet<&str> = keys.iter().map(String::as_str).collect();
+        let mut st = conn.prepare("SELECT key FROM runs").map_err(unreadable)?;
+        let held: Vec<String> = st
+            .query_map([], |r| r.get::<_, String>(0))
+            .and_then(|rows| rows.collect())
+            .map_err(unreadable)?;
+        if held.iter().all(|k| wanted.contains(k.as_str())) {
+            return Ok(Fit::Grows {
+                stored: held.len(),
+                of: n.parse().unwrap_or(held.len()),
+            });
+        }
+        Err(mismatch(format!(
+            "was written by a different study ({n} runs), some of whose runs this one ({runs} runs) lacks; a store grows only into a study with all its runs"
+        )))
     }
 
     /// Opens (or creates) the store of study `id` with `runs` runs at `path`: takes its lock (another process
@@ -257,8 +292,10 @@ impl Store {
         path: &Path,
         id: &str,
         runs: usize,
-        legacy: &dyn Fn() -> String,
+        keys: &dyn Fn() -> Vec<String>,
     ) -> Result<Store, StoreError> {
+        let made = std::cell::OnceCell::new();
+        let keys = || made.get_or_init(keys).clone();
         regular_files(path)?;
         let lp = lock_path(path);
         let lock = std::fs::OpenOptions::new()
@@ -280,7 +317,7 @@ impl Store {
                 return Err(StoreError::Io(format!("cannot lock {}: {e}", lp.display())))
             }
         }
-        Self::check(path, id, runs, legacy)?;
+        let fit = Self::check(path, id, runs, &keys)?;
         let mut conn = Connection::open(path).map_err(io(path))?;
         // WAL: a commit is durable against a killed process, and readers (pandas) never block the sweep.
         conn.pragma_update(None, "journal_mode", "WAL")
@@ -305,6 +342,9 @@ impl Store {
         )
         .map_err(io(path))?;
         migrate(&tx, id).map_err(io(path))?;
+        if let Fit::Grows { .. } = fit {
+            grow(&tx, id, &keys()).map_err(io(path))?;
+        }
         tx.execute(
             "INSERT OR IGNORE INTO study (name, value) VALUES ('format', ?1), ('id', ?2), ('runs', ?3), ('created', datetime('now'))",
             params![FORMAT, id, runs.to_string()],
@@ -315,6 +355,7 @@ impl Store {
             conn,
             path: path.to_path_buf(),
             _lock: Some(lock),
+            fit,
         })
     }
 
@@ -400,6 +441,7 @@ impl Store {
             conn,
             path: self.path.clone(),
             _lock: None,
+            fit: Fit::Same,
         })
     }
 }
@@ -431,6 +473,21 @@ fn stored_row(r: &rusqlite::Row<'_>) -> rusqlite::Result<Stored> {
 /// opening transaction `tx`: a `digest` column, each row's digest from what it holds (its summaries are
 /// checked when read, as before), the study's identity `id`, the new format. A store of the current layout is
 /// left as it is.
+/// Makes the store of an earlier study the store of study `id` whose run keys are `keys`: its identity and
+/// count, and the position of each stored run in the new study.
+fn grow(tx: &rusqlite::Transaction<'_>, id: &str, keys: &[String]) -> rusqlite::Result<()> {
+    tx.execute("UPDATE study SET value = ?1 WHERE name = 'id'", params![id])?;
+    tx.execute(
+        "UPDATE study SET value = ?1 WHERE name = 'runs'",
+        params![keys.len().to_string()],
+    )?;
+    let mut st = tx.prepare("UPDATE runs SET idx = ?2 WHERE key = ?1")?;
+    for (i, k) in keys.iter().enumerate() {
+        st.execute(params![k, i as i64])?;
+    }
+    Ok(())
+}
+
 fn migrate(tx: &rusqlite::Transaction<'_>, id: &str) -> rusqlite::Result<()> {
     if tx.prepare("SELECT digest FROM runs LIMIT 0").is_err() {
         tx.execute_batch("ALTER TABLE runs ADD COLUMN digest TEXT")?;
@@ -481,8 +538,8 @@ mod tests {
              summary TEXT, error TEXT, seconds REAL NOT NULL, finished TEXT NOT NULL);";
 
     /// No first-layout identity.
-    fn none() -> String {
-        String::new()
+    fn none() -> Vec<String> {
+        Vec::new()
     }
 
     fn scratch(name: &str) -> std::path::PathBuf {
@@ -507,7 +564,16 @@ mod tests {
             }
         }
         drop(first);
-        assert!(Store::open(&path, "a", 2, &none).is_ok());
+        let mut a = Store::open(&path, "a", 2, &none).unwrap();
+        let run = Finished {
+            key: "k".into(),
+            index: 0,
+            outcome: Err("failed".into()),
+            seconds: 0.1,
+        };
+        a.commit(&[run]).unwrap();
+        drop(a);
+        // Study b does not hold study a's run: its store is not b's to grow.
         assert!(
             matches!(Store::open(&path, "b", 2, &none), Err(StoreError::Mismatch(m)) if m.contains("different study"))
         );
@@ -522,7 +588,7 @@ mod tests {
         let conn = Connection::open(&path).unwrap();
         conn.execute_batch(LAYOUT_1).unwrap();
         drop(conn);
-        assert_eq!(Store::check(&path, "a", 1, &none), Ok(()));
+        assert_eq!(Store::check(&path, "a", 1, &none), Ok(Fit::New));
         let mut s = Store::open(&path, "a", 1, &none).unwrap();
         let run = Finished {
             key: "k".into(),
@@ -603,17 +669,19 @@ mod tests {
         let path = dir.join("study.sqlite");
         let conn = Connection::open(&path).unwrap();
         conn.execute_batch(LAYOUT_1).unwrap();
-        conn.execute_batch(
-            "INSERT INTO study VALUES ('format', 'pounding-study-1'), ('id', 'a'), ('runs', '2');
-             INSERT INTO runs VALUES ('k0', 0, 'ok', '{}', NULL, 0.1, 'then'),
+        // A first-layout store knew its study by the hash of its run keys.
+        let legacy = || vec!["k0".to_string(), "k1".to_string()];
+        conn.execute_batch(&format!(
+            "INSERT INTO study VALUES ('format', 'pounding-study-1'), ('id', '{}'), ('runs', '2');
+             INSERT INTO runs VALUES ('k0', 0, 'ok', '{{}}', NULL, 0.1, 'then'),
                                      ('k1', 1, 'ok', NULL, NULL, 0.1, 'then');",
-        )
+            crate::key::keys_id(&legacy())
+        ))
         .unwrap();
         drop(conn);
-        // Known by its first-layout identity "a"; the study's identity is now "new".
+        // Known by its first-layout identity, the hash of its keys; the study's identity is now "new".
         assert!(Store::check(&path, "new", 2, &none).is_err());
-        let legacy = || "a".to_string();
-        assert_eq!(Store::check(&path, "new", 2, &legacy), Ok(()));
+        assert_eq!(Store::check(&path, "new", 2, &legacy), Ok(Fit::Same));
         let s = Store::open(&path, "new", 2, &legacy).unwrap();
         let rows = s.all().unwrap();
         assert_eq!(rows.len(), 2);
@@ -627,8 +695,8 @@ mod tests {
             .unwrap();
         assert_eq!(format, FORMAT);
         drop(conn);
-        assert_eq!(Store::check(&path, "new", 2, &none), Ok(()));
-        assert!(Store::check(&path, "a", 2, &legacy).is_err());
+        assert_eq!(Store::check(&path, "new", 2, &none), Ok(Fit::Same));
+        assert!(Store::check(&path, "a", 2, &none).is_err());
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

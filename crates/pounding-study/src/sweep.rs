@@ -169,7 +169,19 @@ pub fn prepare(values: Vec<(Value, String)>, workers: usize) -> Vec<Prepared> {
 /// The identity of a study: the hash of its run keys, in order.
 pub fn study_id(prepared: &[Prepared]) -> String {
     let keys: Vec<&str> = prepared.iter().map(|p| p.key.as_str()).collect();
-    format!("{:032x}", fnv1a_128(keys.join("\n").as_bytes()))
+    crate::key::keys_id(&keys)
+}
+
+/// The keys of the runs made by `scenario(i)` for `i` in `0..n`, prepared on `workers` threads, in order.
+pub fn run_keys(
+    n: usize,
+    scenario: &(dyn Fn(usize) -> (Value, String) + Sync),
+    workers: usize,
+) -> Vec<String> {
+    prepare((0..n).map(scenario).collect(), workers)
+        .into_iter()
+        .map(|p| p.key)
+        .collect()
 }
 
 /// Runs one prepared scenario: its summary, or the one-line message.

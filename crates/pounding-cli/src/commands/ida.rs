@@ -23,6 +23,7 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
         IdaError::Cancelled => crate::progress::ended_early(
             pounding_study::sweep::SweepError::Cancelled,
             &a.out.join("study.sqlite"),
+            &bar.borrow(),
         ),
     })?;
     drop(report);
@@ -100,6 +101,14 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
     if args.figures.plots {
         let names = write_files(&a.out, render_figures(&figs, args.figures.png)?)?;
         println!("wrote {}: {}", a.out.display(), names.join(", "));
+    }
+    if v.failed > 0 {
+        return Err(CliError::Failed(format!(
+            "{} of {} runs failed; why: the error column of {} (the fits use the others)",
+            v.failed,
+            v.runs,
+            a.out.join("runs.csv").display()
+        )));
     }
     Ok(())
 }

@@ -9,8 +9,10 @@ use std::path::Path;
 /// `pounding separation`.
 pub fn run(a: &SeparationArgs) -> Result<(), CliError> {
     let file = pounding_study::input::ScenarioFile::read(&a.scenario).map_err(|e| input(e.0))?;
-    // The scenario itself is checked with file and line first.
-    file.load().map_err(|e| input(e.0))?;
+    // The scenario itself is checked with file and line first, and its likely unit slips said.
+    for w in file.load().map_err(|e| input(e.0))?.scenario.implausible() {
+        eprintln!("warning: {w}");
+    }
     let mut records = Vec::new();
     for r in &a.records {
         records.extend(

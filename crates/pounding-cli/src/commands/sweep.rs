@@ -9,7 +9,7 @@ use pounding::analysis::RunOptions;
 use pounding::scenario::Contacts;
 use pounding_study::headline::{amplification, amplification_column, headline, Cell};
 use pounding_study::input::write_atomic_with;
-use pounding_study::store::{Store, StoreError};
+use pounding_study::store::{Fit, Store, StoreError};
 use pounding_study::study::Study;
 use pounding_study::summary::RunSummary;
 use pounding_study::sweep::{self, Swept};
@@ -39,16 +39,26 @@ fn others(study: &Study, i: usize, axis: usize) -> Vec<String> {
     c
 }
 
+/// What a sweep's runs said: the failed runs' count and the first five with their messages; the count of
+/// runs whose summary carries warnings, and the first.
+#[derive(Default)]
+struct Tally {
+    failed: usize,
+    first_failed: Vec<(usize, String)>,
+    warned: usize,
+    first_warning: Option<(usize, String)>,
+}
+
 /// `runs.csv`: index, key, status, the axes' values, the headline results (the union of every run's
 /// columns, in the order they first appear), with a `contacts` axis the amplification of each building's
 /// peaks over the run without contact of the same other values, the error; written row by row. Returns
-/// the failed runs' count and the first five with their messages.
+/// what the runs said ([`Tally`]).
 fn write_runs_csv(
     study: &Study,
     swept: &Swept,
     store: &Store,
     path: &std::path::Path,
-) -> Result<(usize, Vec<(usize, String)>), CliError> {
+) -> Result<Tally, CliError> {
     let contacts_axis = study.axes.iter().position(|a| a.name == "contacts");
     let mut columns: Vec<String> = Vec::new();
     let mut off_runs: HashMap<Vec<String>, Vec<(String, Cell)>> = HashMap::new();
@@ -72,7 +82,7 @@ fn write_runs_csv(
             .collect();
         columns.extend(amplified);
     }
-    let mut failed = (0, Vec::new());
+    let mut tally = Tally::default();
     let mut header = vec!["index", "key", "status"];
     header.extend(study.axes.iter().map(|a| a.name.as_str()));
     header.extend(columns.iter().map(String::as_str));
@@ -107,11 +117,20 @@ fn write_runs_csv(
             let error = o.as_ref().err().map_or("", String::as_str);
             wtr.write_field(error).map_err(csv_err)?;
             wtr.write_record(None::<&[u8]>).map_err(csv_err)?;
-            if let Err(e) = o {
-                failed.0 += 1;
-                if failed.1.len() < 5 {
-                    failed.1.push((i, e));
+            match o {
+                Err(e) => {
+                    tally.failed += 1;
+                    if tally.first_failed.len() < 5 {
+                        tally.first_failed.push((i, e));
+                    }
                 }
+                Ok(s) if !s.warnings.is_empty() => {
+                    tally.warned += 1;
+                    if tally.first_warning.is_none() {
+                        tally.first_warning = Some((i, s.warnings[0].clone()));
+                    }
+                }
+                Ok(_) => {}
             }
             Ok(())
         });
@@ -123,7 +142,7 @@ fn write_runs_csv(
         })
     })
     .map_err(|e| inner.take().unwrap_or_else(|| io(e)))?;
-    Ok(failed)
+    Ok(tally)
 }
 
 /// `pounding sweep`.
@@ -139,19 +158,26 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         let (value, label, _) = study.variant(i);
         (value, label)
     };
-    // The identity a store of the first layout knows this study by: the hash of every run's key.
-    let legacy = || sweep::study_id(&sweep::prepare((0..n).map(scenario).collect(), workers));
+    // Every run's key: what a store of the first layout knew this study by, and what an earlier study's
+    // store must hold no more than to grow into this one's.
+    let keys = || sweep::run_keys(n, &scenario, workers);
     let store_path = a.out.join("study.sqlite");
     let store_err = |e: StoreError| match e {
         StoreError::Mismatch(m) => input(m),
         StoreError::Io(m) => CliError::Io(m),
     };
     // Everything about the input is checked before the folder or the store is touched.
-    Store::check(&store_path, &id, n, &legacy).map_err(store_err)?;
+    Store::check(&store_path, &id, n, &keys).map_err(store_err)?;
     std::fs::create_dir_all(&a.out)
         .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
-    let mut store = Store::open(&store_path, &id, n, &legacy).map_err(store_err)?;
+    let mut store = Store::open(&store_path, &id, n, &keys).map_err(store_err)?;
 
+    if let Fit::Grows { stored, of } = store.fit {
+        eprintln!(
+            "{} grew from a study of {of} runs into this one of {n}: its {stored} stored runs are kept",
+            store_path.display()
+        );
+    }
     let (bar, mut report) = progress(a.quiet);
     let swept = sweep::run(
         n,
@@ -161,27 +187,40 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         Some(&mut store),
         &mut report,
     )
-    .map_err(|e| crate::progress::ended_early(e, &store_path))?;
+    .map_err(|e| crate::progress::ended_early(e, &store_path, &bar.borrow()))?;
     drop(report);
     bar.borrow().finish();
     let skipped = bar.borrow().skipped;
-    let (failed, first) = write_runs_csv(&study, &swept, &store, &a.out.join("runs.csv"))?;
-    for (i, e) in &first {
+    let t = write_runs_csv(&study, &swept, &store, &a.out.join("runs.csv"))?;
+    for (i, e) in &t.first_failed {
         eprintln!("run {i}: {e}");
     }
-    if failed > first.len() {
+    if t.failed > t.first_failed.len() {
         eprintln!(
             "... and {} more failed runs (see runs.csv)",
-            failed - first.len()
+            t.failed - t.first_failed.len()
+        );
+    }
+    if let Some((i, w)) = &t.first_warning {
+        eprintln!(
+            "warning: {} carry warnings in their summaries (study.sqlite); the first, run {i}: {w}",
+            pounding::words::count(t.warned, "run", None)
         );
     }
     println!(
         "{}: {} ok, {} failed ({} already in the store); wrote {}: study.sqlite, runs.csv",
         pounding::words::count(n, "run", None),
-        n - failed,
-        failed,
+        n - t.failed,
+        t.failed,
         skipped,
         a.out.display()
     );
+    if t.failed > 0 {
+        return Err(CliError::Failed(format!(
+            "{} of {n} runs failed; why: the error column of {} (the first five above); the others are written",
+            t.failed,
+            a.out.join("runs.csv").display()
+        )));
+    }
     Ok(())
 }

@@ -7,6 +7,7 @@ Every worker needs the ``pounding`` package, and any record file a scenario name
 from __future__ import annotations
 
 import os
+import sys
 import time
 from typing import Any, Dict, Iterable, List, Optional, Union
 
@@ -29,22 +30,27 @@ def sweep(
     client,
     store: Optional[Union[str, "os.PathLike[str]"]] = None,
     chunk: Optional[int] = None,
+    progress: bool = True,
 ) -> List[Dict[str, Any]]:
     """Runs every scenario (dicts or paths) on the cluster of ``client`` (a ``dask.distributed.Client``) and
     returns their summaries in input order, exactly as :func:`pounding.sweep` does (a failed run gives
     ``{"error": message}``). Runs go to the workers in chunks of ``chunk`` (default: about four chunks per
     worker thread, at most 1000 runs each); with ``store``, each chunk's runs are committed on the client as the
     chunk returns, so an interrupted sweep resumes from the store, and a store of other scenarios raises
-    InputError, untouched.
+    InputError, untouched; a store of earlier scenarios that are all among these grows into theirs.
+    ``progress`` prints one updating line on stderr as chunks return (runs done, failed, from the store, time
+    left), as :func:`pounding.sweep` does.
     """
     from dask.distributed import as_completed
 
     # Every argument checked before the store is touched.
     if chunk is not None and (isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1):
         raise InputError(f"chunk = {chunk!r} is not allowed: a whole number of runs per task, at least 1")
+    if not isinstance(progress, bool):
+        raise InputError(f"progress = {progress!r} is not allowed: True or False")
     texts, labels = _texts(scenarios)
     keys, study = _pounding.keys(texts)
-    st = None if store is None else _pounding.Store(_fspath("store", store), study, len(texts))
+    st = None if store is None else _pounding.Store(_fspath("store", store), study, keys)
     outcomes: Dict[str, tuple] = {}
     if st is not None:
         for key, ok, text in st.finished():
@@ -64,6 +70,7 @@ def sweep(
             for c in chunks
         ]
         index = {f.key: c for f, c in zip(futures, chunks)}
+        line = _Progress(len(todo), len(keys) - len(todo), progress)
         for fut, result in as_completed(futures, with_results=True):
             c = index[fut.key]
             rows = [(key, i, ok, text, secs) for i, (key, ok, text, secs) in zip(c, result)]
@@ -71,4 +78,32 @@ def sweep(
                 st.commit(rows)
             for key, _, ok, text, _ in rows:
                 outcomes[key] = (ok, text)
+            line.show(len(rows), sum(1 for r in rows if not r[2]))
+        line.end()
     return [_outcome(*outcomes[k]) for k in keys]
+
+
+class _Progress:
+    """One updating line on stderr: runs done of the total, failed, taken from the store, time left."""
+
+    def __init__(self, todo: int, stored: int, shown: bool):
+        self.todo, self.stored, self.shown = todo, stored, shown
+        self.done = self.failed = 0
+        self.t0 = time.perf_counter()
+
+    def show(self, done: int, failed: int) -> None:
+        self.done += done
+        self.failed += failed
+        if not self.shown:
+            return
+        elapsed = time.perf_counter() - self.t0
+        left = (self.todo - self.done) * elapsed / max(self.done, 1)
+        sys.stderr.write(
+            f"\rpounding dask sweep: {self.done + self.stored}/{self.todo + self.stored} runs, {self.failed} failed, "
+            f"{self.stored} from the store, {elapsed:.1f} s, about {left:.0f} s left   "
+        )
+        sys.stderr.flush()
+
+    def end(self) -> None:
+        if self.shown:
+            sys.stderr.write("\n")

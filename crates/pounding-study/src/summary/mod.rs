@@ -102,7 +102,8 @@ pub struct RunSummary {
     pub statistics: StatisticsSummary,
     /// The unit of every number, by key.
     pub units: serde_json::Map<String, serde_json::Value>,
-    /// What the run says about its own accuracy.
+    /// What the run says about its input (the common unit slips: a gap or opening larger than the buildings
+    /// are tall, a first period under 0.05 s or over 20 s, a PGA above 5 g) and its own accuracy.
     pub warnings: Vec<String>,
 }
 
@@ -113,7 +114,8 @@ impl RunSummary {
         let s = &loaded.scenario;
         let rec = s.record();
         let e = &r.energy.end;
-        let mut warnings = Vec::new();
+        // The common unit slips first: they explain everything else that looks odd.
+        let mut warnings = s.implausible();
         // Accuracy that holds itself to account: a balance error above 1e-4 is said in the summary.
         if r.energy.relative_error > BALANCE_WARNING {
             warnings.push(format!(

@@ -15,7 +15,7 @@ pub fn units() -> Map<String, Value> {
         "hysteretic_energy": "J", "gap": "m", "stiffness": "N/m^exponent",
         "peak_force": "N", "max_penetration": "m", "dissipated_energy": "J", "energy": "J",
         "energy_balance_error": "max |input - kinetic - strain - damping - hysteretic - contact| / max energy",
-        "warnings": "what the run says about its own accuracy (an energy balance error above 1e-4)",
+        "warnings": "what the run says about its input (likely unit slips) and its own accuracy (an energy balance error above 1e-4)",
         "duration": "s", "output_dt": "s", "record.dt": "s", "record.pga": "m/s^2",
         "sites.levels": "the floor on each side of the joint, from 1 (absent on a wall's side)",
         "max_closing": "m (largest u_left - u_right of each level; for a wall, towards it)",

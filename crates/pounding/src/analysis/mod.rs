@@ -29,6 +29,7 @@ mod histories;
 mod impacts;
 mod model;
 mod peaks;
+mod plausibility;
 mod recorders;
 mod results;
 mod run;
@@ -37,6 +38,7 @@ mod sites;
 
 pub use assemble::NO_CONTACT_GAP;
 pub use devices::{Device, DeviceEnds, DeviceSpec};
+pub use plausibility::{PLAUSIBLE_PERIOD, PLAUSIBLE_PGA_G};
 pub use results::{
     BuildingResponse, DeviceResponse, EnergyBalance, Histories, Impact, ImpactLoop, Results,
     SiteResponse, Statistics, MAX_LOOP_POINTS,
