@@ -118,8 +118,22 @@ pub struct SeparationArgs {
     after_help = "Files in --out: study.sqlite, runs.csv, fragility.csv; with --plots: ida-curves.svg (demand against intensity per record and limit state), fragility.svg (the fitted curves with the observed fractions)."
 )]
 pub struct IdaArgs {
-    #[command(flatten)]
-    pub sweep: SweepArgs,
+    /// IDA study file (TOML): scenario = "base.toml", records = [...], limit_states = [...] and
+    /// [intensity] (measure, levels). See docs/ida.md.
+    pub study: std::path::PathBuf,
+    /// Folder for study.sqlite (every finished run, committed as it finishes), runs.csv and fragility.csv
+    /// (created if missing; an IDA started again resumes from its store).
+    #[arg(long, value_name = "DIR")]
+    pub out: std::path::PathBuf,
+    /// Threads running scenarios [default: the number of cores].
+    #[arg(long)]
+    pub workers: Option<usize>,
+    /// No progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Every run without contact (contacts = "off"): contacts and walls record closings only; devices stay.
+    #[arg(long)]
+    pub no_contact: bool,
     #[command(flatten)]
     pub figures: FigureArgs,
 }
@@ -185,8 +199,8 @@ pub struct ReportArgs {
 /// Where a command writes its files: a folder, and figures in it on request.
 #[derive(Args, Debug, Clone)]
 pub struct OutArgs {
-    /// Folder for the command's files, created if missing: its result as JSON (what --json prints), the
-    /// time history of impact and drop as history.csv, and with --plots the figures.
+    /// Folder for the command's files, created if missing: its result as JSON (what --json prints) and the
+    /// files listed below ("Files in --out"), with --plots the figures.
     #[arg(long, value_name = "DIR")]
     pub out: Option<std::path::PathBuf>,
     #[command(flatten)]

@@ -1,7 +1,6 @@
 //! What the studies (sweep, IDA) share on the command line: their worker threads and their progress bar on a
 //! terminal.
 
-use crate::args::SweepArgs;
 use crate::error::{input, CliError};
 use pounding_study::sweep::Progress;
 use std::io::IsTerminal;
@@ -95,8 +94,8 @@ pub fn ended_early(
 }
 
 /// The threads of `--workers`, by default the machine's cores.
-pub fn workers(a: &SweepArgs) -> Result<usize, CliError> {
-    match a.workers {
+pub fn workers(workers: Option<usize>) -> Result<usize, CliError> {
+    match workers {
         Some(n) => pounding_study::sweep::check_workers("--workers", n).map_err(input),
         None => Ok(std::thread::available_parallelism().map_or(1, |n| n.get())),
     }

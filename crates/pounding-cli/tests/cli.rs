@@ -3025,3 +3025,81 @@ fn the_common_unit_slips_are_warned_on_stderr_and_in_the_summary() {
     ]);
     assert_eq!(plain["warnings"], serde_json::json!([]));
 }
+
+#[test]
+fn every_error_fits_its_line_whatever_it_echoes() {
+    // Issue 23: `scale = 1e300` printed 301 digits, a 5000-character name and a `between` list of thousands of
+    // names were echoed whole (up to 189,000 characters), and the line was cut before what is allowed. Now a
+    // number is shown in its shortest form and a name or list is cut with an ellipsis: the message ends with
+    // what is allowed, under 300 characters.
+    let dir = tmp("long-echoes");
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let names: Vec<String> = (0..3000).map(|i| format!("\"n{i}\"")).collect();
+    let cases = [
+        (
+            "scale",
+            base.replace("scale = 1.0", "scale = 1e300"),
+            "scale = 1e300 is not allowed: ",
+        ),
+        (
+            "height",
+            base.replacen("heights = [3.0]", "heights = [1e300]", 1),
+            "height = 1e300 is not allowed: storey heights from 1e-3 to 1e4 m",
+        ),
+        (
+            "name",
+            base.replacen(
+                "name = \"left\"",
+                &format!("name = \"{}\"", "L".repeat(5000)),
+                1,
+            ),
+            "...\" (5000 characters) is not allowed: 1 to 64 bytes",
+        ),
+        (
+            "between",
+            base.replace(
+                "between = [\"left\", \"right\"]",
+                &format!("between = [{}]", names.join(", ")),
+            ),
+            ", ...] (3000 entries) is not allowed: two names",
+        ),
+        (
+            "tolerance",
+            base.replace("[analysis]", "[analysis]\ntolerance = 1e300"),
+            "tolerance = 1e300 is not allowed: 1e-12 <= tolerance <= 1e-3",
+        ),
+    ];
+    for (what, text, says) in cases {
+        assert_ne!(text, base, "{what}");
+        let file = dir.join(format!("{what}.toml"));
+        std::fs::write(&file, text).unwrap();
+        let out = dir.join(format!("out-{what}"));
+        let o = pounding(&[
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{what}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{what}: {err}");
+        assert!(err.trim_end().chars().count() < 300, "{what}: {err}");
+        assert!(
+            err.contains(says) && !err.trim_end().ends_with(" ..."),
+            "{what}: {err}"
+        );
+        assert!(!out.exists());
+    }
+    let o = pounding(&[
+        "run",
+        &example("two-sdof.toml"),
+        "--out",
+        dir.join("o").to_str().unwrap(),
+        "--tolerance",
+        "1e300",
+    ]);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr).trim_end(),
+        "error: --tolerance 1e300 is not allowed: 1e-12 <= tolerance <= 1e-3"
+    );
+}

@@ -23,7 +23,8 @@ pub mod tables;
 /// ` ...` (a last resort: messages quote long values shortened where they are made).
 pub fn one_line(msg: &str, max: usize) -> String {
     let mut out = String::with_capacity(msg.len().min(max));
-    for c in msg.trim_end().chars() {
+    // Long names, lists and numbers written out in full are shortened first, keeping the rest whole.
+    for c in pounding::words::compact(msg.trim_end()).chars() {
         if c.is_control() {
             out.extend(c.escape_default());
         } else {

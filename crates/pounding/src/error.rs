@@ -4,7 +4,7 @@
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A parameter outside its allowed range (or NaN).
-    #[error("{name} = {value} is not allowed: {allowed}")]
+    #[error("{name} = {} is not allowed: {allowed}", crate::words::number(*value))]
     Parameter {
         /// Parameter name.
         name: &'static str,
@@ -34,7 +34,7 @@ pub enum Error {
         expected: usize,
     },
     /// Exact calibration (the default damping) failed: no value of the parameter delivers `e`.
-    #[error("cannot calibrate {what} for e = {e}: {reason}; ask an e in that range, or damping = \"formula\" (--damping formula) for the published formula")]
+    #[error("cannot calibrate {what} for e = {}: {reason}; ask an e in that range, or damping = \"formula\" (--damping formula) for the published formula", crate::words::number(*e))]
     Calibration {
         /// The parameter being calibrated.
         what: &'static str,
@@ -50,7 +50,7 @@ pub enum Error {
         t: f64,
     },
     /// The impact's scales of length, time, momentum or energy leave the range of `f64`.
-    #[error("an impact with effective mass {mass:e} kg, v_i = {v_i:e} m/s and this stiffness has length, time or energy scales outside the range of floating-point numbers")]
+    #[error("an impact with effective mass {} kg, v_i = {} m/s and this stiffness has length, time or energy scales outside the range of floating-point numbers", crate::words::number(*mass), crate::words::number(*v_i))]
     ScaleOutOfRange {
         /// Effective mass, kg.
         mass: f64,

@@ -1,4 +1,5 @@
-//! Words of one-line messages: "did you mean" for a misspelt name, and counts with their nouns.
+//! Words of one-line messages: "did you mean" for a misspelt name, counts with their nouns, numbers in their
+//! shortest form, and messages kept short whatever they echo.
 
 /// `given` without case, spaces, `-` and `_`: `Hunt_Crossley` and `huntcrossley` read alike.
 fn squash(s: &str) -> String {
@@ -60,6 +61,160 @@ pub fn quoted(s: &str, max: usize) -> String {
     }
 }
 
+/// `x` as a message shows it: the shortest text that reads back to the same value, in plain digits from
+/// 1e-5 up to 1e16 (`0.02`, `-1`, `250000`) and in scientific notation outside (`1e300`, `2.5e-9`), `NaN`,
+/// `inf`. Rust's `{}` writes 1e300 with 301 digits.
+pub fn number(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-5..1e16).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// Longest quoted text a message echoes whole, characters.
+const QUOTE_MAX: usize = 64;
+/// Longest bracketed list a message echoes whole, characters.
+const LIST_MAX: usize = 120;
+/// Longest run of digits a message echoes whole (a number longer than this was written in full).
+const DIGITS_MAX: usize = 24;
+
+/// `msg` with what it echoes kept short, so that any message fits its line: a number written out in full
+/// (`1000...0`, 301 digits) in its shortest form (`1e300`), a quoted name over 64 characters cut with an
+/// ellipsis and its length, a bracketed list over 120 characters cut after its first entries with an
+/// ellipsis and its count. The rest of the message, and what it says is allowed, is kept whole.
+pub fn compact(msg: &str) -> String {
+    let c: Vec<char> = msg.chars().collect();
+    let mut out = String::with_capacity(msg.len().min(1024));
+    let mut i = 0;
+    while i < c.len() {
+        // An unmatched quote or bracket (`expected \"`) is plain text.
+        let end = match c[i] {
+            '"' => closing_quote(&c, i),
+            '[' => closing_bracket(&c, i),
+            _ => 0,
+        };
+        if end >= c.len() {
+            out.push(c[i]);
+            i += 1;
+            continue;
+        }
+        match c[i] {
+            '"' => {
+                let inner = &c[i + 1..end.min(c.len())];
+                if inner.len() > QUOTE_MAX {
+                    let head: String = inner[..QUOTE_MAX - 8].iter().collect();
+                    out.push_str(&format!("\"{head}...\" ({} characters)", inner.len()));
+                } else {
+                    out.extend(&c[i..(end + 1).min(c.len())]);
+                }
+                i = end + 1;
+            }
+            '[' => {
+                let list: String = c[i..(end + 1).min(c.len())].iter().collect();
+                if list.chars().count() > LIST_MAX {
+                    out.push_str(&cut_list(&c[i..(end + 1).min(c.len())]));
+                } else {
+                    out.push_str(&compact_numbers(&list));
+                }
+                i = end + 1;
+            }
+            _ => {
+                let start = i;
+                while i < c.len() && c[i] != '"' && c[i] != '[' {
+                    i += 1;
+                }
+                let plain: String = c[start..i].iter().collect();
+                out.push_str(&compact_numbers(&plain));
+            }
+        }
+    }
+    out
+}
+
+/// The index of the quote that closes the one at `open` (a backslash escapes), or the end.
+fn closing_quote(c: &[char], open: usize) -> usize {
+    let mut j = open + 1;
+    while j < c.len() {
+        match c[j] {
+            '\\' => j += 2,
+            '"' => return j,
+            _ => j += 1,
+        }
+    }
+    c.len()
+}
+
+/// The index of the bracket that closes the one at `open` (brackets inside quotes do not count), or the
+/// end.
+fn closing_bracket(c: &[char], open: usize) -> usize {
+    let (mut depth, mut j) = (0usize, open);
+    while j < c.len() {
+        match c[j] {
+            '"' => j = closing_quote(c, j),
+            '[' => depth += 1,
+            ']' => {
+                depth -= 1;
+                if depth == 0 {
+                    return j;
+                }
+            }
+            _ => {}
+        }
+        j += 1;
+    }
+    c.len()
+}
+
+/// A long list cut after the entries that fit, with an ellipsis and the count of its top-level entries.
+fn cut_list(list: &[char]) -> String {
+    let (mut depth, mut entries, mut cut) = (0usize, 1usize, None);
+    let mut j = 0;
+    while j < list.len() {
+        match list[j] {
+            '"' => j = closing_quote(list, j),
+            '[' => depth += 1,
+            ']' => depth = depth.saturating_sub(1),
+            ',' if depth == 1 => {
+                entries += 1;
+                if j < LIST_MAX - 40 {
+                    cut = Some(j);
+                }
+            }
+            _ => {}
+        }
+        j += 1;
+    }
+    let head: String = list[..cut.unwrap_or(1).min(LIST_MAX - 40)].iter().collect();
+    let head = compact(&head);
+    format!("{head}, ...] ({entries} entries)")
+}
+
+/// Every run of more than 24 digits (a number written out in full) in its shortest form.
+fn compact_numbers(text: &str) -> String {
+    let c: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < c.len() {
+        if !c[i].is_ascii_digit() {
+            out.push(c[i]);
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < c.len() && (c[i].is_ascii_digit() || c[i] == '.') {
+            i += 1;
+        }
+        let digits: String = c[start..i].iter().collect();
+        match digits.parse::<f64>() {
+            Ok(x) if digits.len() > DIGITS_MAX && x.is_finite() => out.push_str(&number(x)),
+            _ => out.push_str(&digits),
+        }
+    }
+    out
+}
+
 /// `n` and its noun, singular for one: `1 storey`, `3 storeys`, `0 impacts`. `plural` is the noun's plural
 /// when it is not `singular` + `s`.
 pub fn count(n: usize, singular: &str, plural: Option<&str>) -> String {
@@ -73,6 +228,52 @@ pub fn count(n: usize, singular: &str, plural: Option<&str>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numbers_are_shown_in_their_shortest_form() {
+        assert_eq!(number(1e300), "1e300");
+        assert_eq!(number(0.02), "0.02");
+        assert_eq!(number(-1.0), "-1");
+        assert_eq!(number(2.5e-9), "2.5e-9");
+        assert_eq!(number(f64::NAN), "NaN");
+        // Each reads back to the same value.
+        for x in [1e300, 0.1 + 0.2, 123456.789, 7.3e-12, 1e16] {
+            assert_eq!(number(x).parse::<f64>().unwrap(), x);
+        }
+    }
+
+    #[test]
+    fn a_message_keeps_what_it_says_and_shortens_what_it_echoes() {
+        let full = format!("scale = {} is not allowed: 0 < scale <= 1e6", 1e300);
+        assert_eq!(
+            compact(&full),
+            "scale = 1e300 is not allowed: 0 < scale <= 1e6"
+        );
+        let name = "L".repeat(5000);
+        let long = compact(&format!(
+            "building {name:?}: name too long; allowed: 1 to 64 bytes"
+        ));
+        assert_eq!(
+            long,
+            format!(
+                "building \"{}...\" (5000 characters): name too long; allowed: 1 to 64 bytes",
+                "L".repeat(56)
+            )
+        );
+        let list: Vec<String> = (0..3000).map(|i| format!("n{i}")).collect();
+        let msg = compact(&format!("between = {list:?} is not allowed: two names"));
+        assert!(
+            msg.len() < 160 && msg.ends_with(", ...] (3000 entries) is not allowed: two names"),
+            "{msg}"
+        );
+        assert!(msg.starts_with("between = [\"n0\", \"n1\", "), "{msg}");
+        // An unmatched quote or bracket is text: nothing after it is lost.
+        let open = format!("expected `\"` or `[` at {}", "x".repeat(200));
+        assert_eq!(compact(&open), open);
+        // Short names, lists and numbers pass unchanged.
+        let plain = "contact.0.gap = -0.01 is not allowed: gap >= 0 (m); [\"A\", \"B\"] \"x\"";
+        assert_eq!(compact(plain), plain);
+    }
 
     const MODELS: [&str; 5] = [
         "hunt-crossley",

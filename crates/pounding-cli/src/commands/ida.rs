@@ -9,9 +9,9 @@ use pounding_study::ida::{self, Edp, FitJson, Ida, IdaError};
 
 /// `pounding ida`.
 pub fn run(args: &IdaArgs) -> Result<(), CliError> {
-    let a = &args.sweep;
+    let a = args;
     check_figures(&args.figures)?;
-    let workers = workers(a)?;
+    let workers = workers(a.workers)?;
     let mut study = Ida::read(&a.study).map_err(|e| input(e.0))?;
     if a.no_contact {
         study.base["contacts"] = "off".into();

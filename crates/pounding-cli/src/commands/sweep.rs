@@ -147,7 +147,7 @@ fn write_runs_csv(
 
 /// `pounding sweep`.
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
-    let workers = workers(a)?;
+    let workers = workers(a.workers)?;
     let mut study = Study::read(&a.study).map_err(|e| input(e.0))?;
     if a.no_contact {
         study.without_contact().map_err(|e| input(e.0))?;

@@ -71,11 +71,16 @@ fn finish(
     let root = root.ok_or_else(|| Error::Calibration {
         what,
         e,
-        reason: format!(
-            "e_post ranges from {:.6} to {:.6} for {what} in [{lo}, {hi}]",
-            flo + e,
-            fhi + e
-        ),
+        reason: if (flo + fhi).is_finite() {
+            format!(
+                "e_post ranges from {:.6} to {:.6} for {what} in [{lo}, {hi}]",
+                flo + e,
+                fhi + e
+            )
+        } else {
+            // So small an e puts the impact's scales beyond f64 at an end of the bracket.
+            format!("the impact cannot be integrated at an end of {what} in [{lo}, {hi}]")
+        },
     })?;
     let miss = (e_post(root)? - e).abs();
     if miss > E_TOLERANCE {
