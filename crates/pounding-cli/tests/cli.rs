@@ -3103,3 +3103,50 @@ fn every_error_fits_its_line_whatever_it_echoes() {
         "error: --tolerance 1e300 is not allowed: 1e-12 <= tolerance <= 1e-3"
     );
 }
+
+#[test]
+fn a_restrainer_opens_as_its_joint_does_and_pulls_hardest_there() {
+    // Issue 23: a device's peaks were read at step ends only, so a restrainer's largest opening fell short of
+    // the joint's on the same floors (0.0735600 against 0.0736052 m) and its peak force 7e-4 short of
+    // converged OpenSees. Located on the step's interpolant as the joint's are, the openings agree, and the
+    // peak force is the restrainer's law at that opening: k (opening - slack), exactly.
+    let dir = tmp("restrainer-peaks");
+    for scale in ["1.5", "3.0"] {
+        let text = std::fs::read_to_string(example("bridge-three-span.toml"))
+            .unwrap()
+            .replace("scale = 1.5", &format!("scale = {scale}"));
+        let file = dir.join(format!("bridge-{scale}.toml"));
+        std::fs::write(&file, text).unwrap();
+        let out = dir.join(format!("out-{scale}"));
+        let s = json(&[
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let devices = s["devices"].as_array().unwrap();
+        assert_eq!(devices.len(), 2);
+        for d in devices {
+            let joint = s["sites"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|site| site["between"] == d["between"])
+                .unwrap();
+            let open = d["max_opening"][0].as_f64().unwrap();
+            let joint_open = joint["max_opening"][0].as_f64().unwrap();
+            assert!(
+                (open - joint_open).abs() <= 1e-12 * joint_open,
+                "{open} vs {joint_open}"
+            );
+            let (k, slack) = (f(&d["law"], "stiffness"), f(&d["law"], "slack"));
+            let force = d["peak_force"][0].as_f64().unwrap();
+            assert!(open > slack, "the restrainer pulls at scale {scale}");
+            let law = k * (open - slack);
+            assert!(
+                (force - law).abs() <= 1e-9 * law,
+                "scale {scale}: {force} vs k (opening - slack) = {law}"
+            );
+        }
+    }
+}

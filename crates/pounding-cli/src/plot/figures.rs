@@ -855,7 +855,7 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
             d.impacts
                 .iter()
                 .any(|i| i.consumed)
-                .then(|| "With a bumper, the line is the layer's and the hard law's force together; markers are each law's impacts.".to_string()),
+                .then(|| "With a bumper, the line is the layer's and the hard law's force together and the panel's largest is their sum, as summary.json gives it; markers are each law's impacts.".to_string()),
         )
         .collect(),
         ..Figure::default()
@@ -893,7 +893,17 @@ fn level_panels(d: &RunData, levels: &[Level]) -> (Vec<Panel>, Vec<Panel>) {
         let el = &cd.elements[lv.element];
         let mine: Vec<_> = d.impacts.iter().filter(|i| lv.holds(d, i)).collect();
         let consumed = mine.iter().filter(|i| i.consumed).count();
-        let peak = mine.iter().map(|i| i.peak_force).fold(0.0, f64::max);
+        // One peak per site, as the terminal and summary.json give it (a bumper's layer and the hard law
+        // behind it push together); a site of several levels: this level's own.
+        let site = &d.summary.sites[lv.contact];
+        let peak = if cd.elements.len() == 1 {
+            site.peak_force
+        } else {
+            mine.iter()
+                .map(|i| i.peak_force)
+                .chain(el.force.iter().copied())
+                .fold(0.0, f64::max)
+        };
         let mut title = format!(
             "{}: {} impact{}",
             lv.label,
@@ -944,11 +954,31 @@ fn level_panels(d: &RunData, levels: &[Level]) -> (Vec<Panel>, Vec<Panel>) {
         for &v in rel.iter().chain([&cd.gap]) {
             (lo, hi) = (lo.min(v), hi.max(v));
         }
+        // A bumper is touched before the gap closes: at the gap less its thickness.
+        let face = site.bumper.as_ref().map(|b| cd.gap - b.thickness);
         let mut q = Panel::new(
-            format!("{}: gap {} mm", lv.label, fmt_mm(cd.gap)),
+            match face {
+                Some(f) => format!(
+                    "{}: bumper face at {} mm, gap {} mm",
+                    lv.label,
+                    fmt_mm(f),
+                    fmt_mm(cd.gap)
+                ),
+                None => format!("{}: gap {} mm", lv.label, fmt_mm(cd.gap)),
+            },
             time(),
             Quantity::new("u_left \u{2212} u_right", "m"),
         );
+        if let Some(f) = face {
+            q.series.push(Series {
+                label: format!("bumper face ({} mm): contact above", fmt_mm(f)),
+                mark: Mark::HLine(f),
+                style: Style {
+                    dash: Dash::Dotted,
+                    ..Style::reference()
+                },
+            });
+        }
         q.x_range = Some(t_range);
         q.legend = Legend::None;
         q.series
@@ -982,17 +1012,24 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
     let (mut above, mut ended, mut top) = (0, 0, f64::NEG_INFINITY);
     for lv in levels {
         let cd = &d.contacts[lv.contact];
+        // Impacts on the site's face (a bumper's layer, or the law itself); the hard law behind a consumed
+        // bumper acts within such an impact and is not one.
         let mine: Vec<_> = d
             .impacts
             .iter()
-            .filter(|i| lv.holds(d, i) && i.e_post.is_some())
+            .filter(|i| lv.holds(d, i) && i.e_post.is_some() && !i.consumed)
             .collect();
         if mine.is_empty() {
             continue;
         }
+        // The face's law asks its own e: a bumper's, else the site's.
+        let asked = match &d.summary.sites[lv.contact].bumper {
+            Some(b) => b.law.e,
+            None => cd.e,
+        };
         for e in mine.iter().filter_map(|i| i.e_post) {
             ended += 1;
-            above += usize::from(e > cd.e.unwrap_or(1.0) * (1.0 + 1e-9));
+            above += usize::from(e > asked.unwrap_or(1.0) * (1.0 + 1e-9));
             top = top.max(e);
         }
         r.series.push(Series::points(
@@ -1006,13 +1043,17 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
         ));
     }
     // The requested e of each contact (one line for contacts given the same e).
-    let mut given: Vec<(f64, Vec<&str>)> = Vec::new();
-    // An elastic contact asks none (it delivers 1).
-    for cd in &d.contacts {
-        let Some(e) = cd.e else { continue };
+    let mut given: Vec<(f64, Vec<String>)> = Vec::new();
+    // An elastic contact asks none (it delivers 1); a bumper asks its own.
+    for (cd, site) in d.contacts.iter().zip(&d.summary.sites) {
+        let asked = match &site.bumper {
+            Some(b) => (b.law.e, format!("{} bumper", cd.name)),
+            None => (cd.e, cd.name.clone()),
+        };
+        let (Some(e), name) = asked else { continue };
         match given.iter_mut().find(|g| g.0 == e) {
-            Some(g) => g.1.push(&cd.name),
-            None => given.push((e, vec![&cd.name])),
+            Some(g) => g.1.push(name),
+            None => given.push((e, vec![name])),
         }
     }
     let several = given.len() > 1;
@@ -1077,6 +1118,7 @@ fn impact_loops(d: &RunData) -> Option<Figure> {
             continue;
         }
         let total = mine.len();
+        let hard = mine.iter().filter(|l| d.impacts[l.impact].consumed).count();
         mine.sort_by(|a, b| {
             d.impacts[b.impact]
                 .peak_force
@@ -1084,8 +1126,15 @@ fn impact_loops(d: &RunData) -> Option<Figure> {
         });
         mine.truncate(LOOPS_PER_LEVEL);
         let mut p = Panel::new(
-            if total > mine.len() {
-                format!("{}: strongest {} of {total}", lv.label, mine.len())
+            if hard > 0 {
+                // Loops of the impacts on the bumper and of the hard law behind it when it was consumed.
+                format!(
+                    "{}: top {} of {total} ({hard} consumed)",
+                    lv.label,
+                    mine.len()
+                )
+            } else if total > mine.len() {
+                format!("{}: strongest {} of {total} impacts", lv.label, mine.len())
             } else {
                 format!(
                     "{}: {total} impact{}",
@@ -1143,17 +1192,23 @@ fn impact_loops(d: &RunData) -> Option<Figure> {
     let columns = panels.len().min(2);
     Some(Figure {
         id: "impact-loops".into(),
-        title: "Force against penetration of the strongest impacts of each contact level".into(),
+        title: "Force against penetration of the strongest impacts, by contact level".into(),
         subtitle: d.subtitle.clone(),
         columns,
         plot: (340.0, 220.0),
         panels,
-        notes: vec![
+        notes: std::iter::once(
             "Every accepted integration step of each impact and its located peak (marker), from \
              impact-loops.csv; the area inside a loop is the energy the impact dissipated. Legend: impact \
              number in impacts.csv, time of touch, peak force."
-                .into(),
-        ],
+                .to_string(),
+        )
+        .chain(d.impacts.iter().any(|i| i.consumed).then(|| {
+            "With a bumper, \"consumed\" counts the loops of the hard law behind it once the layer was \
+             consumed: each within an impact on the bumper, not an impact of its own."
+                .to_string()
+        }))
+        .collect(),
         ..Figure::default()
     })
 }

@@ -112,7 +112,9 @@ pub(super) fn total_force(sys: &System, e: usize, y: &[f64], ds: &mut [f64]) -> 
     f + fv
 }
 
-/// Peaks of every device element.
+/// Peaks of every device element, located on the step's interpolant as the floors' and the contacts' are:
+/// its deformation's extrema (a restrainer's largest opening and force, exactly as the joint beside it
+/// records them), the extremum of its rate (a dashpot's force) and the step's end.
 pub(super) struct DevicePeaks {
     devices: Vec<DeviceRef>,
     pub force: Vec<f64>,
@@ -120,6 +122,8 @@ pub(super) struct DevicePeaks {
     pub opening: Vec<f64>,
     /// Room for the rates of a device's states.
     rates: Vec<f64>,
+    /// Room for a device's states between nodes.
+    states: Vec<f64>,
 }
 
 impl DevicePeaks {
@@ -131,18 +135,45 @@ impl DevicePeaks {
             closing: vec![0.0; n],
             opening: vec![0.0; n],
             rates: room(m),
+            states: room(m),
         }
     }
 }
 
 impl Observer for DevicePeaks {
     fn segment(&mut self, seg: &Segment<'_, '_>) {
+        let sys = seg.system;
+        let h = seg.t1 - seg.t0;
         for (k, d) in self.devices.iter().enumerate() {
-            let (x, _) = seg.system.deformation(d.element, seg.y1);
-            let f = total_force(seg.system, d.element, seg.y1, &mut self.rates);
-            self.force[k] = self.force[k].max(f.abs());
-            self.closing[k] = self.closing[k].max(x);
-            self.opening[k] = self.opening[k].max(-x);
+            let e = d.element;
+            let ((xa, va), (xb, vb)) = (sys.deformation(e, seg.y0), sys.deformation(e, seg.y1));
+            let f = total_force(sys, e, seg.y1, &mut self.rates);
+            let (mut force, mut hi, mut lo) = (f.abs(), xb, -xb);
+            let p = Hermite::new(xa, xb, va, vb, h);
+            let [s1, s2] = p.extrema();
+            for s in [s1, s2, p.inflection()] {
+                if s.is_nan() {
+                    continue;
+                }
+                let x = p.at(s);
+                hi = hi.max(x);
+                lo = lo.max(-x);
+                // The force between nodes: deformation and rate on the interpolant the openings are read
+                // on (so that a restrainer's peak force is its law at its largest opening), its own
+                // states on the step's dense output.
+                let t = seg.t0 + s * h;
+                let block = sys.layout().block(e);
+                let states = &mut self.states[..block.len()];
+                for (kk, z) in block.clone().zip(states.iter_mut()) {
+                    *z = seg.dense.component(t, kk);
+                }
+                let rates = &mut self.rates[..block.len()];
+                let (fe, fv) = sys.elements()[e].evaluate(x, p.slope(s), states, rates);
+                force = force.max((fe + fv).abs());
+            }
+            self.force[k] = self.force[k].max(force);
+            self.closing[k] = self.closing[k].max(hi);
+            self.opening[k] = self.opening[k].max(lo);
         }
     }
 }

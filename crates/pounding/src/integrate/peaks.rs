@@ -68,6 +68,25 @@ impl Hermite {
     }
 }
 
+impl Hermite {
+    /// The slope (rate per unit time) at the fraction `s` of the step.
+    pub fn slope(&self, s: f64) -> f64 {
+        (self.d + s * (2.0 * self.b + 3.0 * s * self.c)) / self.h
+    }
+
+    /// The fraction of the step (in (0, 1)) where the slope is extreme (the curvature vanishes), or `NaN`:
+    /// where a rate, such as a dashpot's force, peaks.
+    pub fn inflection(&self) -> f64 {
+        // p''(s) = 2 b + 6 c s.
+        let s = -self.b / (3.0 * self.c);
+        if s > 0.0 && s < 1.0 {
+            s
+        } else {
+            f64::NAN
+        }
+    }
+}
+
 /// Largest `|p|` of the cubic Hermite interpolant of `p` (values `pa`, `pb`, slopes `va`, `vb`) on a step of
 /// length `h`, over its interior extremum (if any) and its end: `(fraction of the step, |p|)`.
 pub fn hermite_peak(pa: f64, pb: f64, va: f64, vb: f64, h: f64) -> (f64, f64) {
