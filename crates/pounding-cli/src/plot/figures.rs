@@ -867,11 +867,15 @@ fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figur
         panels: closing,
         plot: (PLOT.0, multiple_height(n)),
         share_x: true,
-        notes: vec![
+        notes: vec![format!(
             "u_left \u{2212} u_right of each pair of contact floors (for a wall, the floor's displacement towards \
-             it); dashed: the gap, contact above it. One axis for every level."
-                .into(),
-        ],
+             it); dashed: the gap, contact above it{}. One axis for every level.",
+            if d.summary.sites.iter().any(|s| s.bumper.is_some()) {
+                "; dotted: a bumper's face, touched first"
+            } else {
+                ""
+            }
+        )],
         ..Figure::default()
     };
 
