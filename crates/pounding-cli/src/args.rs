@@ -125,15 +125,8 @@ pub struct IdaArgs {
     /// (created if missing; an IDA started again resumes from its store).
     #[arg(long, value_name = "DIR")]
     pub out: std::path::PathBuf,
-    /// Threads running scenarios [default: the number of cores].
-    #[arg(long)]
-    pub workers: Option<usize>,
-    /// No progress bar.
-    #[arg(long, short)]
-    pub quiet: bool,
-    /// Every run without contact (contacts = "off"): contacts and walls record closings only; devices stay.
-    #[arg(long)]
-    pub no_contact: bool,
+    #[command(flatten)]
+    pub runs: StudyRuns,
     #[command(flatten)]
     pub figures: FigureArgs,
 }
@@ -146,6 +139,13 @@ pub struct SweepArgs {
     /// missing; a sweep started again with the same study resumes from its store).
     #[arg(long, value_name = "DIR")]
     pub out: std::path::PathBuf,
+    #[command(flatten)]
+    pub runs: StudyRuns,
+}
+
+/// How a study's runs are run: its threads, its progress bar, and with or without contact.
+#[derive(Args, Debug)]
+pub struct StudyRuns {
     /// Threads running scenarios [default: the number of cores].
     #[arg(long)]
     pub workers: Option<usize>,

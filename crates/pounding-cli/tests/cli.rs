@@ -2844,19 +2844,11 @@ fn a_sweep_over_contacts_gives_acceleration_and_shear_amplification_in_runs_csv(
     // sdof_without_contact_matches_nigam_jennings establishes at the default tolerance), and runs.csv's
     // ratios against two separate `pounding run`s.
     let dir = tmp("contacts-axis");
-    let study = dir.join("amp.toml");
-    std::fs::write(
-        &study,
-        format!(
-            "scenario = {:?}\n[axes]\ncontacts = [\"on\", \"off\"]\n",
-            example("two-sdof.toml")
-        ),
-    )
-    .unwrap();
+    let file = study(&dir, "amp.toml", "contacts = [\"on\", \"off\"]");
     let out = dir.join("out");
     let o = pounding(&[
         "sweep",
-        study.to_str().unwrap(),
+        file.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
     ]);

@@ -11,12 +11,12 @@ use pounding_study::ida::{self, Edp, FitJson, Ida, IdaError};
 pub fn run(args: &IdaArgs) -> Result<(), CliError> {
     let a = args;
     check_figures(&args.figures)?;
-    let workers = workers(a.workers)?;
+    let workers = workers(a.runs.workers)?;
     let mut study = Ida::read(&a.study).map_err(|e| input(e.0))?;
-    if a.no_contact {
+    if a.runs.no_contact {
         study.base["contacts"] = "off".into();
     }
-    let (bar, mut report) = progress(a.quiet);
+    let (bar, mut report) = progress(a.runs.quiet);
     let out = ida::run(&study, &a.out, workers, &mut report).map_err(|e| match e {
         IdaError::Input(e) => input(e.0),
         IdaError::Io(m) => CliError::Io(m),

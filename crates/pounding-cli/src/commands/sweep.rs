@@ -147,9 +147,9 @@ fn write_runs_csv(
 
 /// `pounding sweep`.
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
-    let workers = workers(a.workers)?;
+    let workers = workers(a.runs.workers)?;
     let mut study = Study::read(&a.study).map_err(|e| input(e.0))?;
-    if a.no_contact {
+    if a.runs.no_contact {
         study.without_contact().map_err(|e| input(e.0))?;
     }
     let n = study.len();
@@ -178,7 +178,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
             store_path.display()
         );
     }
-    let (bar, mut report) = progress(a.quiet);
+    let (bar, mut report) = progress(a.runs.quiet);
     let swept = sweep::run(
         n,
         &scenario,
