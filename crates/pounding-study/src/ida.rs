@@ -637,7 +637,12 @@ pub fn run(
     );
     // Every run's key: what a store of the first layout knew this IDA by, and what an earlier IDA's store
     // must hold no more than to grow into this one's (new records or levels).
-    let keys = || crate::sweep::run_keys(len, &scenario, workers);
+    // Made at most once, for the check and the opening alike.
+    let made = std::cell::OnceCell::new();
+    let keys = || {
+        made.get_or_init(|| crate::sweep::run_keys(len, &scenario, workers))
+            .clone()
+    };
     let db = out.join("study.sqlite");
     let store_err = |e: StoreError| match e {
         StoreError::Mismatch(m) => IdaError::Input(InputError::new(m)),

@@ -160,7 +160,12 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     };
     // Every run's key: what a store of the first layout knew this study by, and what an earlier study's
     // store must hold no more than to grow into this one's.
-    let keys = || sweep::run_keys(n, &scenario, workers);
+    // Made at most once, for the check and the opening alike.
+    let made = std::cell::OnceCell::new();
+    let keys = || {
+        made.get_or_init(|| sweep::run_keys(n, &scenario, workers))
+            .clone()
+    };
     let store_path = a.out.join("study.sqlite");
     let store_err = |e: StoreError| match e {
         StoreError::Mismatch(m) => input(m),

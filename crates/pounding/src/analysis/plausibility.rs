@@ -12,11 +12,9 @@ pub const PLAUSIBLE_PERIOD: (f64, f64) = (0.05, 20.0);
 /// Peak ground accelerations above this many g are said.
 pub const PLAUSIBLE_PGA_G: f64 = 5.0;
 
-/// `x` with four significant digits.
+/// `x` with four significant digits, in its shortest form (`0.007071`, `1e300`).
 fn sig(x: f64) -> String {
-    let s = format!("{x:.3e}");
-    let v: f64 = s.parse().unwrap_or(x);
-    format!("{v}")
+    crate::words::number(format!("{x:.3e}").parse().unwrap_or(x))
 }
 
 impl Scenario {
