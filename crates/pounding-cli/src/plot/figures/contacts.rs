@@ -1,0 +1,489 @@
+//! The contacts of a run: force and relative displacement per contact level, delivered e, impact loops.
+
+use super::common::{fmt_mm, force, time};
+use crate::output::{fmt_num, fmt_sig};
+use crate::plot::axis::human;
+use crate::plot::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
+use crate::run_data::RunData;
+
+/// A contact level of a run: one contact element (a floor pair of a contact, or a wall's floor).
+struct Level {
+    /// Index of the contact in [`RunData::contacts`].
+    contact: usize,
+    /// Index of the element in the contact.
+    element: usize,
+    /// "contact west|east, floors 2-2" or "wall moat, floor 1".
+    label: String,
+    /// Its colour and marker shape, the same in every figure of the run.
+    style: Style,
+}
+
+impl Level {
+    /// Whether impact `i` happened at this level.
+    fn holds(&self, d: &RunData, i: &crate::run_data::ImpactData) -> bool {
+        i.contact == self.contact
+            && i.floors == d.contacts[self.contact].elements[self.element].floors
+    }
+}
+
+/// Every contact level of the run, contacts left to right, then walls; floor pairs in order.
+fn contact_levels(d: &RunData) -> Vec<Level> {
+    let mut out = Vec::new();
+    for (c, cd) in d.contacts.iter().enumerate() {
+        for (e, el) in cd.elements.iter().enumerate() {
+            let short = if cd.wall {
+                format!("floor {}", el.floors.0.max(el.floors.1))
+            } else {
+                format!("floors {}-{}", el.floors.0, el.floors.1)
+            };
+            let what = if cd.wall { "wall" } else { "contact" };
+            out.push(Level {
+                contact: c,
+                element: e,
+                label: format!("{what} {}, {short}", cd.name),
+                style: Style::level(out.len()),
+            });
+        }
+    }
+    out
+}
+
+/// The plot height of one of `n` small multiples, px: the usual 250 for one, less for many.
+fn multiple_height(n: usize) -> f64 {
+    match n {
+        0 | 1 => PLOT.1,
+        2 | 3 => 170.0,
+        _ => 120.0,
+    }
+}
+
+/// Contact forces and relative displacements, one panel per contact level (small multiples sharing the
+/// time axis), and the delivered e of every ended impact against its velocity at touch.
+pub fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<Figure>) {
+    let levels = contact_levels(d);
+    if levels.is_empty() {
+        return (None, None, None);
+    }
+    let (forces, closing) = level_panels(d, &levels);
+    let n = levels.len();
+    let force_fig = Figure {
+        id: "contact-force".into(),
+        title: format!(
+            "Contact force at each contact level ({n} level{})",
+            if n == 1 { "" } else { "s" }
+        ),
+        subtitle: d.subtitle.clone(),
+        panels: forces,
+        plot: (PLOT.0, multiple_height(n)),
+        share_x: true,
+        notes: vec![
+            "Line: the force at the output samples with each impact's located peak inserted; markers: the \
+             located peak of each impact (peak_force_N of impacts.csv). Each panel has its own force axis."
+                .into(),
+        ]
+        .into_iter()
+        .chain(
+            d.impacts
+                .iter()
+                .any(|i| i.consumed)
+                .then(|| "With a bumper, the line is the layer's and the hard law's force together and the panel's largest is their sum, as summary.json gives it; markers are each law's impacts.".to_string()),
+        )
+        .collect(),
+        ..Figure::default()
+    };
+    let closing_fig = Figure {
+        id: "relative-displacement".into(),
+        title: "Relative displacement of the contact floors against the gap".into(),
+        subtitle: d.subtitle.clone(),
+        panels: closing,
+        plot: (PLOT.0, multiple_height(n)),
+        share_x: true,
+        notes: vec![format!(
+            "u_left \u{2212} u_right of each pair of contact floors (for a wall, the floor's displacement towards \
+             it); dashed: the gap, contact above it{}. One axis for every level.",
+            if d.summary.sites.iter().any(|s| s.bumper.is_some()) {
+                "; dotted: a bumper's face, touched first"
+            } else {
+                ""
+            }
+        )],
+        ..Figure::default()
+    };
+
+    (Some(force_fig), Some(closing_fig), restitution(d, &levels))
+}
+
+/// For each contact level: its force over time, and its closing against its gap (on one range for every
+/// level).
+fn level_panels(d: &RunData, levels: &[Level]) -> (Vec<Panel>, Vec<Panel>) {
+    let t_range = (
+        d.t.first().copied().unwrap_or(0.0),
+        d.t.last().copied().unwrap_or(1.0),
+    );
+    let mut forces = Vec::new();
+    let mut closing = Vec::new();
+    let (mut lo, mut hi) = (0.0f64, 0.0f64);
+    for lv in levels {
+        let cd = &d.contacts[lv.contact];
+        let el = &cd.elements[lv.element];
+        let mine: Vec<_> = d.impacts.iter().filter(|i| lv.holds(d, i)).collect();
+        let consumed = mine.iter().filter(|i| i.consumed).count();
+        // One peak per site, as the terminal and summary.json give it (a bumper's layer and the hard law
+        // behind it push together); a site of several levels: this level's own.
+        let site = &d.summary.sites[lv.contact];
+        let peak = if cd.elements.len() == 1 {
+            site.peak_force
+        } else {
+            mine.iter()
+                .map(|i| i.peak_force)
+                .chain(el.force.iter().copied())
+                .fold(0.0, f64::max)
+        };
+        let mut title = format!(
+            "{}: {} impact{}",
+            lv.label,
+            mine.len() - consumed,
+            if mine.len() - consumed == 1 { "" } else { "s" }
+        );
+        if consumed > 0 {
+            title += &format!(", bumper consumed in {consumed}");
+        }
+        if !mine.is_empty() {
+            title += &format!(", largest {}", human(peak, "N", 3));
+        }
+        let mut p = Panel::new(title, time(), force());
+        p.x_range = Some(t_range);
+        p.y_zero = true;
+        p.legend = Legend::None;
+        if mine.is_empty() && el.force.iter().all(|f| *f == 0.0) {
+            // A level that never touched: a plain 0 to 1 MN axis, not one scaled to nothing.
+            p.y_range = Some((0.0, 1.0e6));
+        }
+        // The samples, with each impact's located peak inserted, so the curve reaches its true peak.
+        let peaks: Vec<(f64, f64)> = mine
+            .iter()
+            .map(|i| (i.time_of_peak_force, i.peak_force))
+            .collect();
+        let (t, f) = merge(&d.t, &el.force, &peaks);
+        p.series.push(Series::line(&lv.label, t, f, lv.style));
+        if !mine.is_empty() {
+            p.series.push(Series::points(
+                format!("{}: peak of each impact", lv.label),
+                mine.iter().map(|i| i.time_of_peak_force).collect(),
+                mine.iter().map(|i| i.peak_force).collect(),
+                Style {
+                    width: 1.6,
+                    ..lv.style
+                },
+            ));
+        }
+        forces.push(p);
+
+        // A wall's side does not move relative to the ground.
+        let u = |b: Option<usize>, f: usize, k: usize| {
+            b.map_or(0.0, |b| d.buildings[b].floors[f - 1][k])
+        };
+        let rel: Vec<f64> = (0..d.t.len())
+            .map(|k| u(cd.left, el.floors.0, k) - u(cd.right, el.floors.1, k))
+            .collect();
+        for &v in rel.iter().chain([&cd.gap]) {
+            (lo, hi) = (lo.min(v), hi.max(v));
+        }
+        // A bumper is touched before the gap closes: at the gap less its thickness.
+        let face = site.bumper.as_ref().map(|b| cd.gap - b.thickness);
+        let mut q = Panel::new(
+            match face {
+                Some(f) => format!(
+                    "{}: bumper face at {} mm, gap {} mm",
+                    lv.label,
+                    fmt_mm(f),
+                    fmt_mm(cd.gap)
+                ),
+                None => format!("{}: gap {} mm", lv.label, fmt_mm(cd.gap)),
+            },
+            time(),
+            Quantity::new("u_left \u{2212} u_right", "m"),
+        );
+        if let Some(f) = face {
+            q.series.push(Series {
+                label: format!("bumper face ({} mm): contact above", fmt_mm(f)),
+                mark: Mark::HLine(f),
+                style: Style {
+                    dash: Dash::Dotted,
+                    ..Style::reference()
+                },
+            });
+        }
+        q.x_range = Some(t_range);
+        q.legend = Legend::None;
+        q.series
+            .push(Series::line(&lv.label, d.t.clone(), rel, lv.style));
+        q.series.push(Series {
+            label: format!("gap ({} mm): contact above", fmt_mm(cd.gap)),
+            mark: Mark::HLine(cd.gap),
+            style: Style::reference(),
+        });
+        closing.push(q);
+    }
+    // One range for every level: the gap line at one height, and the levels compare at a glance.
+    let pad = 0.04 * (hi - lo);
+    for q in &mut closing {
+        q.y_range = Some((lo - pad, hi + pad));
+    }
+    (forces, closing)
+}
+
+/// The delivered e of each ended impact against its impact velocity, one colour and shape per level, with
+/// the e each contact was asked for.
+fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
+    let mut r = Panel::new(
+        "",
+        Quantity::new("relative velocity at touch v_i", "m/s"),
+        Quantity::new("delivered e (e_post)", ""),
+    );
+    r.y_zero = true;
+    r.x_zero = true;
+    r.legend = Legend::Right;
+    let (mut above, mut ended, mut top) = (0, 0, f64::NEG_INFINITY);
+    for lv in levels {
+        let cd = &d.contacts[lv.contact];
+        // Impacts on the site's face (a bumper's layer, or the law itself); the hard law behind a consumed
+        // bumper acts within such an impact and is not one.
+        let mine: Vec<_> = d
+            .impacts
+            .iter()
+            .filter(|i| lv.holds(d, i) && i.e_post.is_some() && !i.consumed)
+            .collect();
+        if mine.is_empty() {
+            continue;
+        }
+        // The face's law asks its own e: a bumper's, else the site's.
+        let asked = match &d.summary.sites[lv.contact].bumper {
+            Some(b) => b.law.e,
+            None => cd.e,
+        };
+        for e in mine.iter().filter_map(|i| i.e_post) {
+            ended += 1;
+            above += usize::from(e > asked.unwrap_or(1.0) * (1.0 + 1e-9));
+            top = top.max(e);
+        }
+        r.series.push(Series::points(
+            &lv.label,
+            mine.iter().map(|i| i.v_i).collect(),
+            mine.iter().filter_map(|i| i.e_post).collect(),
+            Style {
+                width: 1.8,
+                ..lv.style
+            },
+        ));
+    }
+    // The requested e of each contact (one line for contacts given the same e).
+    let mut given: Vec<(f64, Vec<String>)> = Vec::new();
+    // An elastic contact asks none (it delivers 1); a bumper asks its own.
+    for (cd, site) in d.contacts.iter().zip(&d.summary.sites) {
+        let asked = match &site.bumper {
+            Some(b) => (b.law.e, format!("{} bumper", cd.name)),
+            None => (cd.e, cd.name.clone()),
+        };
+        let (Some(e), name) = asked else { continue };
+        match given.iter_mut().find(|g| g.0 == e) {
+            Some(g) => g.1.push(name),
+            None => given.push((e, vec![name])),
+        }
+    }
+    let several = given.len() > 1;
+    for (k, (e, names)) in given.iter().enumerate() {
+        r.series.push(Series {
+            label: if several {
+                format!("requested e = {} ({})", fmt_num(*e), names.join(", "))
+            } else {
+                format!("requested e = {}", fmt_num(*e))
+            },
+            mark: Mark::HLine(*e),
+            // Two contacts given different e: dashes, then dots.
+            style: Style {
+                width: 1.4,
+                dash: [Dash::Dashed, Dash::Dotted][k % 2],
+                ..Style::reference()
+            },
+        });
+    }
+    (ended > 0).then(|| {
+        let mut notes = Vec::new();
+        if above > 0 {
+            notes.push(format!(
+                "{above} of {ended} impacts lie above the requested e{}: each contact law is calibrated to \
+                 deliver e between two free bodies, but the storey forces act on the floors during a contact \
+                 between buildings (docs/verification.md, \"Impacts inside a run\").{}",
+                if top > 1.0 {
+                    format!(" (up to {})", fmt_sig(top, 4))
+                } else {
+                    String::new()
+                },
+                if top > 1.0 {
+                    " Above 1, the storeys pushed the floors apart during the contact."
+                } else {
+                    ""
+                }
+            ));
+        }
+        Figure {
+            id: "impact-restitution".into(),
+            title: "Delivered coefficient of restitution of each impact, by contact level".into(),
+            subtitle: d.subtitle.clone(),
+            panels: vec![r],
+            notes,
+            ..Figure::default()
+        }
+    })
+}
+
+/// The force–penetration loops of the strongest impacts (at most [`LOOPS_PER_LEVEL`]) of each contact level,
+/// from impact-loops.csv (none for a folder without it).
+pub fn impact_loops(d: &RunData) -> Option<Figure> {
+    let levels = contact_levels(d);
+    let mut panels = Vec::new();
+    for lv in &levels {
+        let mut mine: Vec<_> = d
+            .loops
+            .iter()
+            .filter(|l| lv.holds(d, &d.impacts[l.impact]))
+            .collect();
+        if mine.is_empty() {
+            continue;
+        }
+        let total = mine.len();
+        let hard = mine.iter().filter(|l| d.impacts[l.impact].consumed).count();
+        mine.sort_by(|a, b| {
+            d.impacts[b.impact]
+                .peak_force
+                .total_cmp(&d.impacts[a.impact].peak_force)
+        });
+        mine.truncate(LOOPS_PER_LEVEL);
+        let mut p = Panel::new(
+            if hard > 0 {
+                // Loops of the impacts on the bumper and of the hard law behind it when it was consumed.
+                format!(
+                    "{}: top {} of {total} ({hard} consumed)",
+                    lv.label,
+                    mine.len()
+                )
+            } else if total > mine.len() {
+                format!("{}: strongest {} of {total} impacts", lv.label, mine.len())
+            } else {
+                format!(
+                    "{}: {total} impact{}",
+                    lv.label,
+                    if total == 1 { "" } else { "s" }
+                )
+            },
+            Quantity::new("penetration", "m"),
+            force(),
+        );
+        p.x_zero = true;
+        p.y_zero = true;
+        for (rank, l) in mine.iter().enumerate() {
+            let i = &d.impacts[l.impact];
+            let dash = [Dash::Solid, Dash::Dashed, Dash::Dotted][rank % 3];
+            let st = Style {
+                dash,
+                width: 1.5,
+                ..lv.style
+            };
+            p.series.push(Series::line(
+                format!(
+                    "#{} at {} s: {}",
+                    l.impact + 1,
+                    fmt_sig(i.time, 4),
+                    human(i.peak_force, "N", 3)
+                ),
+                l.penetration.clone(),
+                l.force.clone(),
+                st,
+            ));
+        }
+        // The located peaks.
+        let peak_of = |l: &&crate::run_data::LoopData| {
+            let k = (0..l.force.len())
+                .max_by(|&a, &b| l.force[a].total_cmp(&l.force[b]))
+                .unwrap_or(0);
+            (l.penetration[k], l.force[k])
+        };
+        let pk: Vec<(f64, f64)> = mine.iter().map(peak_of).collect();
+        p.series.push(Series::points(
+            "",
+            pk.iter().map(|p| p.0).collect(),
+            pk.iter().map(|p| p.1).collect(),
+            Style {
+                width: 1.6,
+                ..lv.style
+            },
+        ));
+        panels.push(p);
+    }
+    if panels.is_empty() {
+        return None;
+    }
+    let columns = panels.len().min(2);
+    Some(Figure {
+        id: "impact-loops".into(),
+        title: "Force against penetration of the strongest impacts, by contact level".into(),
+        subtitle: d.subtitle.clone(),
+        columns,
+        plot: (340.0, 220.0),
+        panels,
+        notes: std::iter::once(
+            "Every accepted integration step of each impact and its located peak (marker), from \
+             impact-loops.csv; the area inside a loop is the energy the impact dissipated. Legend: impact \
+             number in impacts.csv, time of touch, peak force."
+                .to_string(),
+        )
+        .chain(d.impacts.iter().any(|i| i.consumed).then(|| {
+            "With a bumper, \"consumed\" counts the loops of the hard law behind it once the layer was \
+             consumed: each within an impact on the bumper, not an impact of its own."
+                .to_string()
+        }))
+        .collect(),
+        ..Figure::default()
+    })
+}
+
+/// Impacts drawn per contact level in `impact-loops.svg`.
+pub const LOOPS_PER_LEVEL: usize = 3;
+
+/// `(t, f)` with the points `extra` inserted in time order.
+fn merge(t: &[f64], f: &[f64], extra: &[(f64, f64)]) -> (Vec<f64>, Vec<f64>) {
+    let mut extra = extra.to_vec();
+    extra.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut out_t = Vec::with_capacity(t.len() + extra.len());
+    let mut out_f = Vec::with_capacity(t.len() + extra.len());
+    let mut k = 0;
+    for (&ti, &fi) in t.iter().zip(f) {
+        while k < extra.len() && extra[k].0 < ti {
+            out_t.push(extra[k].0);
+            out_f.push(extra[k].1);
+            k += 1;
+        }
+        out_t.push(ti);
+        out_f.push(fi);
+    }
+    for &(te, fe) in &extra[k..] {
+        out_t.push(te);
+        out_f.push(fe);
+    }
+    (out_t, out_f)
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn merged_points_keep_time_order() {
+        let (t, f) = super::merge(
+            &[0.0, 1.0, 2.0],
+            &[0.0, 0.0, 0.0],
+            &[(1.5, 9.0), (0.5, 7.0)],
+        );
+        assert_eq!(t, [0.0, 0.5, 1.0, 1.5, 2.0]);
+        assert_eq!(f, [0.0, 7.0, 0.0, 9.0, 0.0]);
+    }
+}
