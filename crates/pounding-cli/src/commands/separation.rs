@@ -52,29 +52,32 @@ pub fn run(a: &SeparationArgs) -> Result<(), CliError> {
     save_out(&a.out, ("separation", &v), Vec::new(), &[fig], false)
 }
 
-/// The report as tables on the terminal, m.
+/// Millimetres per metre, for the terminal.
+const MM: f64 = 1e3;
+
+/// The report as tables on the terminal, lengths in mm (separation.json holds m).
 fn print(v: &SeparationReport) {
     let table = |pairs: &[PairReport]| {
         for p in pairs {
             for l in &p.levels {
                 println!(
-                    "{:<20} {:>3}-{:<3} {:>10.5}  {:>10.5}  {:>10.5}    {:>10.5}  {:>10.5}  {:>10.5}  {:.4}",
+                    "{:<20} {:>3}-{:<3} {:>12.2}  {:>13.2}  {:>15.2}  {:>8.2}  {:>8.2}  {:>8.2}  {:.4}",
                     p.between.join("|"),
                     l.floors.0,
                     l.floors.1,
-                    l.peak_left,
-                    l.peak_right,
-                    l.required_gap,
-                    l.abs,
-                    l.srss,
-                    l.ddc,
+                    MM * l.peak_left,
+                    MM * l.peak_right,
+                    MM * l.required_gap,
+                    MM * l.abs,
+                    MM * l.srss,
+                    MM * l.ddc,
                     l.rho
                 );
             }
         }
     };
-    println!("required separation (a run without contact) and the rules' estimates, m");
-    println!("pair                 floors   peak_left  peak_right  required_gap         abs        srss         ddc    rho");
+    println!("required separation (a run without contact) and the rules' estimates, mm (separation.json holds m)");
+    println!("pair                 floors  peak_left_mm  peak_right_mm  required_gap_mm    abs_mm   srss_mm    ddc_mm  rho");
     let (records, statistics) = match v {
         SeparationReport::One { pairs, .. } => return table(pairs),
         SeparationReport::Suite {
@@ -98,16 +101,16 @@ fn print(v: &SeparationReport) {
         for p in &statistics.pairs {
             for l in &p.levels {
                 println!(
-                    "{:<20} {:>3}-{:<3} {:>10.5}  {:>10.5}  {:>10.5}    {:>10.5}  {:>10.5}  {:>10.5}",
+                    "{:<20} {:>3}-{:<3} {:>12.2}  {:>13.2}  {:>15.2}  {:>8.2}  {:>8.2}  {:>8.2}",
                     p.between.join("|"),
                     l.floors.0,
                     l.floors.1,
-                    pick(&l.peak_left),
-                    pick(&l.peak_right),
-                    pick(&l.required_gap),
-                    pick(&l.abs),
-                    pick(&l.srss),
-                    pick(&l.ddc)
+                    MM * pick(&l.peak_left),
+                    MM * pick(&l.peak_right),
+                    MM * pick(&l.required_gap),
+                    MM * pick(&l.abs),
+                    MM * pick(&l.srss),
+                    MM * pick(&l.ddc)
                 );
             }
         }

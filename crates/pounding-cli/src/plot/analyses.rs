@@ -1,7 +1,7 @@
 //! Figures of the analyses beyond one run: a record and its response spectra, the required separation against
 //! the code rules, and an IDA's curves and fragility functions.
 
-use super::{Figure, Legend, Panel, Quantity, Series, Style, PLOT};
+use super::{Figure, Legend, Panel, Quantity, Series, Shape, Style, PLOT};
 use pounding::ground_motion::spectrum::Spectrum;
 use pounding::ground_motion::Record;
 use pounding::separation::Level;
@@ -71,7 +71,8 @@ pub fn spectrum(s: &Spectrum, title: &str) -> Figure {
             y.to_vec(),
             Style::nth(0),
         ));
-        p.x_tight = true;
+        // The periods are log-spaced: a log axis gives every decade the same room.
+        p.x_log = true;
         p.y_zero = true;
         p.legend = Legend::None;
         p
@@ -117,8 +118,11 @@ pub fn separation(report: &SeparationReport, subtitle: &str) -> Figure {
                 hi = hi.max(g).max(e);
             }
         }
+        // Where rules agree their points coincide (SRSS and DDC for well-separated periods): each rule
+        // its own shape, drawn largest first, so that every one stays visible on the one before.
         let style = Style {
-            width: 3.0,
+            width: [4.2, 2.8, 1.5][i],
+            shape: [Shape::Circle, Shape::Square, Shape::Diamond][i],
             ..Style::nth(i)
         };
         p.series

@@ -178,9 +178,17 @@ impl Axis {
         } else {
             (1e-3, 1e3)
         };
-        let first = (lo.log10() - 1e-9).ceil() as i32;
-        let last = (hi.log10() + 1e-9).floor() as i32;
-        let ticks = (first..=last).map(|k| 10f64.powi(k)).collect();
+        // Ticks at the decades; over fewer than three, at 1, 2 and 5 times them too.
+        let decades = (lo.log10().floor() as i32)..=(hi.log10().ceil() as i32);
+        let few = (hi / lo).log10() < 3.0;
+        let ticks = decades
+            .flat_map(|k| {
+                let d = 10f64.powi(k);
+                let m: &[f64] = if few { &[1.0, 2.0, 5.0] } else { &[1.0] };
+                m.iter().map(move |m| m * d)
+            })
+            .filter(|t| *t >= lo * (1.0 - 1e-9) && *t <= hi * (1.0 + 1e-9))
+            .collect();
         let label = if q.unit.is_empty() {
             q.name.clone()
         } else {
@@ -211,11 +219,15 @@ impl Axis {
     /// The label of the tick at `value` (SI), in the axis's prefixed unit, with a typographic minus.
     pub fn tick_label(&self, value: f64) -> String {
         if self.log {
-            let k = value.log10().round() as i32;
+            // 1, 2 or 5 times a power of ten: as many decimals as its first digit needs.
+            let k = (value.log10() + 1e-9).floor() as i32;
+            let m = (value / 10f64.powi(k)).round();
             return if (-4..=5).contains(&k) {
                 format!("{:.*}", (-k).max(0) as usize, value)
-            } else {
+            } else if m == 1.0 {
                 format!("1e{k}").replace('-', "\u{2212}")
+            } else {
+                format!("{m}e{k}").replace('-', "\u{2212}")
             };
         }
         let x = value / 10f64.powi(self.prefix);
@@ -305,6 +317,29 @@ mod tests {
         assert_eq!(labels, ["0.001", "0.01", "0.1", "1", "10", "100", "1000"]);
         assert!((a.fraction(1.0) - 0.5).abs() < 1e-12);
         assert!(a.fraction(0.0) < 0.0);
+    }
+
+    #[test]
+    fn short_log_axis_has_1_2_5_ticks() {
+        let a = Axis::log(&Quantity::new("period", "s"), 0.05, 10.0);
+        let labels: Vec<String> = a.ticks.iter().map(|t| a.tick_label(*t)).collect();
+        assert_eq!(labels, ["0.05", "0.1", "0.2", "0.5", "1", "2", "5", "10"]);
+        assert!((a.fraction(0.05)).abs() < 1e-12 && (a.fraction(10.0) - 1.0).abs() < 1e-12);
+        let b = Axis::log(&Quantity::new("x", ""), 2e-7, 6e-5);
+        let labels: Vec<String> = b.ticks.iter().map(|t| b.tick_label(*t)).collect();
+        assert_eq!(
+            labels,
+            [
+                "2e\u{2212}7",
+                "5e\u{2212}7",
+                "1e\u{2212}6",
+                "2e\u{2212}6",
+                "5e\u{2212}6",
+                "1e\u{2212}5",
+                "2e\u{2212}5",
+                "5e\u{2212}5"
+            ]
+        );
     }
 
     #[test]

@@ -197,6 +197,8 @@ pub struct Panel {
     pub y_zero: bool,
     /// Logarithmic y axis (needs `y_range`; values below it are drawn below the frame and clipped).
     pub y_log: bool,
+    /// Logarithmic x axis over the data's positive range (log-spaced periods, frequencies).
+    pub x_log: bool,
     /// Fixed x range (SI) instead of the data's.
     pub x_range: Option<(f64, f64)>,
     /// Fixed y range (SI) instead of the data's.
@@ -205,6 +207,8 @@ pub struct Panel {
     pub series: Vec<Series>,
     /// Legend placement.
     pub legend: Legend,
+    /// Start a new row of the figure's grid with this panel (groups of small multiples, one per row).
+    pub new_row: bool,
 }
 
 impl Panel {
@@ -218,10 +222,12 @@ impl Panel {
             x_zero: false,
             y_zero: false,
             y_log: false,
+            x_log: false,
             x_range: None,
             y_range: None,
             series: Vec::new(),
             legend: Legend::Inside,
+            new_row: false,
         }
     }
 

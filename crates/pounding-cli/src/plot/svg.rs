@@ -65,7 +65,8 @@ pub fn render(fig: &Figure) -> String {
     let bottom = 8.0 + TICK + 10.0 + LABEL + 12.0;
     let cell_w = left + size.w + right;
     let width = cell_w * columns as f64;
-    let rows = fig.panels.len().div_ceil(columns);
+    let cells = grid(&fig.panels, columns);
+    let rows = cells.last().map_or(0, |c| c.0 + 1);
     // Small multiples sharing x: the tick labels and the x label under the bottom row only.
     let bottom_of = |row: usize| {
         if fig.share_x && row + 1 < rows {
@@ -130,12 +131,13 @@ pub fn render(fig: &Figure) -> String {
         );
     }
     for (k, (panel, (xa, ya))) in fig.panels.iter().zip(&axes).enumerate() {
-        let (row, col) = (k / columns, k % columns);
+        let (row, col) = cells[k];
         let x0 = col as f64 * cell_w + left;
         let y0 = row_top[row] + top;
         let clip = format!("{}-clip{k}", fig.id);
         let m = Map::new(xa, ya, (x0, y0), size);
-        let x_labels = !fig.share_x || row + 1 == rows || k + columns >= fig.panels.len();
+        let below = cells.contains(&(row + 1, col));
+        let x_labels = !fig.share_x || !below;
         panel_svg(&mut s, panel, &m, (places[k], &sames[k]), &clip, x_labels);
     }
     for (i, line) in notes.iter().enumerate() {
@@ -148,6 +150,20 @@ pub fn render(fig: &Figure) -> String {
     }
     s.push_str("\n</svg>\n");
     s
+}
+
+/// The (row, column) of each panel: row by row, `columns` to a row, a panel with `new_row` starting the next.
+fn grid(panels: &[Panel], columns: usize) -> Vec<(usize, usize)> {
+    let mut cells = Vec::with_capacity(panels.len());
+    let (mut row, mut col) = (0, 0);
+    for (k, p) in panels.iter().enumerate() {
+        if k > 0 && (col == columns || (p.new_row && col > 0)) {
+            (row, col) = (row + 1, 0);
+        }
+        cells.push((row, col));
+        col += 1;
+    }
+    cells
 }
 
 /// The axes of a panel: fixed ranges where given, otherwise the data's (y including 0 if asked).
@@ -166,7 +182,12 @@ fn axes_of(p: &Panel) -> (Axis, Axis) {
     } else {
         Axis::new(&p.y, yl, yh, tight_y)
     };
-    (Axis::new(&p.x, xl, xh, p.x_tight || p.x_range.is_some()), y)
+    let x = if p.x_log {
+        Axis::log(&p.x, xl, xh)
+    } else {
+        Axis::new(&p.x, xl, xh, p.x_tight || p.x_range.is_some())
+    };
+    (x, y)
 }
 
 /// A subtitle on one line no wider than `width` px at `size` px: the longest run of its "; "-separated
@@ -298,9 +319,10 @@ fn panel_svg(
     let (x1, y1) = (x0 + m.size.w, y0 + m.size.h);
     let _ = write!(
         s,
-        "\n<g class=\"panel\" data-title=\"{}\" data-y-scale=\"{}\" data-x-lo=\"{}\" data-x-hi=\"{}\" data-y-lo=\"{}\" data-y-hi=\"{}\" \
+        "\n<g class=\"panel\" data-title=\"{}\" data-x-scale=\"{}\" data-y-scale=\"{}\" data-x-lo=\"{}\" data-x-hi=\"{}\" data-y-lo=\"{}\" data-y-hi=\"{}\" \
          data-left=\"{}\" data-right=\"{}\" data-top=\"{}\" data-bottom=\"{}\">",
         esc(&p.title),
+        if xa.log { "log" } else { "linear" },
         if ya.log { "log" } else { "linear" },
         xa.lo,
         xa.hi,
