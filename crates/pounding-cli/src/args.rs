@@ -159,7 +159,7 @@ pub struct StudyRuns {
 
 #[derive(Args, Debug)]
 #[command(
-    after_help = "Files in --out: scenario.toml, summary.json, response.csv, impacts.csv, impact-loops.csv, energy.csv. With --plots: record.svg, displacement.svg, envelopes.svg, hysteresis.svg, energy.svg; hysteresis-storeys.svg (a building with two or more inelastic storeys), isolators.svg (isolated buildings), contact-force.svg and relative-displacement.svg (contacts or walls), impact-loops.svg (an impact happened), impact-restitution.svg (an impact ended), device-force.svg (devices). With --report: report.html. See docs/scenarios.md and docs/figures.md."
+    after_help = "Files in --out: scenario.toml, summary.json, response.csv, impacts.csv, impact-loops.csv, energy.csv. With --plots: record.svg, displacement.svg, energy.svg; envelopes.svg and hysteresis.svg (storeys above any bearings: not for decks alone), hysteresis-storeys.svg (two or more inelastic storeys), isolators.svg (isolated buildings, decks on bearings), contact-force.svg and relative-displacement.svg (contacts or walls), impact-loops.svg (an impact happened), impact-restitution.svg (an impact ended), device-force.svg (devices). With --report: report.html. See docs/scenarios.md and docs/figures.md."
 )]
 pub struct RunArgs {
     /// Scenario file (TOML): ground motion, buildings left to right, contacts. See examples/.
@@ -371,9 +371,10 @@ pub struct ModelArgs {
     /// Contact model (see `pounding models`).
     #[arg(long, value_parser = named::<Model>())]
     pub model: Model,
-    /// Requested coefficient of restitution e_pre, 0 < e <= 1.
+    /// Requested coefficient of restitution e_pre, 0 < e <= 1 (required by the damped models; the elastic
+    /// ones, hooke and hertz, deliver 1 and take none).
     #[arg(long)]
-    pub e: f64,
+    pub e: Option<f64>,
     /// Exponent n of the force law (default: the model's, 1 or 1.5).
     #[arg(long)]
     pub n: Option<f64>,
@@ -402,7 +403,8 @@ impl ModelArgs {
     pub fn options(&self) -> pounding::contact::ContactOptions {
         pounding::contact::ContactOptions {
             model: self.model,
-            e: self.e,
+            // An elastic model takes no e (it delivers 1); a damped one without it is refused first.
+            e: self.e.unwrap_or(1.0),
             exponent: self.n,
             damping: self.damping,
             alpha: self.alpha,

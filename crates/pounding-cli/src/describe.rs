@@ -9,6 +9,22 @@ use serde_json::Value;
 
 /// The contact specification of `a` with stiffness `k` (N/m^n).
 pub fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
+    match (a.model.is_damped(), a.e) {
+        (true, None) => {
+            return Err(input(format!(
+                "--e is required by model {}: the coefficient of restitution it is to deliver, 0 < e <= 1",
+                a.model.name()
+            )))
+        }
+        (false, Some(e)) if e != 1.0 => {
+            return Err(input(format!(
+                "--e {} is not allowed with model {}: it is elastic and delivers e = 1 (leave --e out, or choose a damped model, see pounding models)",
+                fmt_num(e),
+                a.model.name()
+            )))
+        }
+        _ => {}
+    }
     a.options().build(k).map_err(|e| match e {
         pounding::contact::OptionError::Value(v) => CliError::from(v),
         other => input(other.message(flag)),
@@ -89,8 +105,10 @@ pub fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
             "",
         )
         .add("n", num(s.exponent()), "")
-        .add("tension", s.tension().name(), "")
-        .add("damping", s.damping().name(), "");
+        .add("tension", s.tension().name(), "");
+    if s.model().is_damped() {
+        rep.add("damping", s.damping().name(), "");
+    }
     if s.model() == Model::Papi {
         let rule = match s.alpha_rule() {
             AlphaRule::Given(_) => "given",
@@ -105,8 +123,11 @@ pub fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
 
 /// Adds the results of one impact to a report.
 pub fn results(rep: &mut Report, s: &ContactModel, r: &ImpactResult, exact_e: Option<f64>) {
-    rep.add("e_pre", num(s.restitution()), "")
-        .add("e_post", num(r.e_post), "")
+    // An elastic model is asked for no e.
+    if let Some(e) = s.asked_restitution() {
+        rep.add("e_pre", num(e), "");
+    }
+    rep.add("e_post", num(r.e_post), "")
         .add("e_post_exact", exact_e.map_or(Value::Null, num), "")
         .add("peak_force", num(r.peak_force), "N")
         .add("time_of_peak_force", num(r.time_of_peak_force), "s")

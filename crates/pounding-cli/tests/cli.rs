@@ -1553,15 +1553,26 @@ fn a_free_body_impact_delivers_the_asked_e_for_every_model_by_default() {
         .collect();
     assert_eq!(names.len(), 16);
     for name in &names {
+        let elastic = name == "hooke" || name == "hertz";
+        if elastic {
+            // Asked no e, an elastic model reports none and delivers 1; asked another, it refuses.
+            let v = json(&["impact", "--model", name]);
+            assert!(
+                v.get("e_pre").is_none() && v.get("damping").is_none(),
+                "{v}"
+            );
+            assert!((f(&v, "e_post") - 1.0).abs() < 1e-8, "{name}");
+            let err = one_line_error(&["impact", "--model", name, "--e", "0.65"]);
+            assert!(err.contains("--e 0.65") && err.contains("elastic"), "{err}");
+            continue;
+        }
+        let err = one_line_error(&["impact", "--model", name]);
+        assert!(err.contains("--e is required"), "{err}");
         for e in [0.65, 0.9] {
             let v = json(&["impact", "--model", name, "--e", &e.to_string()]);
-            let want = if name == "hooke" || name == "hertz" {
-                1.0
-            } else {
-                e
-            };
             let got = f(&v, "e_post");
-            assert!((got - want).abs() < 1e-8, "{name} at e = {e}: {got}");
+            assert!((got - e).abs() < 1e-8, "{name} at e = {e}: {got}");
+            assert_eq!(f(&v, "e_pre"), e);
         }
     }
     let dir = tmp("elastic-e");
