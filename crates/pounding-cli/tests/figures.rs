@@ -35,6 +35,7 @@ fn example(name: &str) -> String {
 struct Panel {
     title: String,
     log_y: bool,
+    log_x: bool,
     x: (f64, f64),
     y: (f64, f64),
     /// Data per 0.005 px, along x and y.
@@ -69,6 +70,7 @@ fn panels(text: &str) -> Vec<Panel> {
             let mut p = Panel {
                 title: g.attribute("data-title").unwrap_or("").into(),
                 log_y: g.attribute("data-y-scale") == Some("log"),
+                log_x: g.attribute("data-x-scale") == Some("log"),
                 x: (attr(g, "data-x-lo"), attr(g, "data-x-hi")),
                 y: (attr(g, "data-y-lo"), attr(g, "data-y-hi")),
                 ..Panel::default()
@@ -83,7 +85,7 @@ fn panels(text: &str) -> Vec<Panel> {
                 0.0051 / (r - l) * (p.x.1 - p.x.0),
                 0.0051 / (b - t) * (p.y.1 - p.y.0),
             );
-            let (x, y, log) = (p.x, p.y, p.log_y);
+            let (x, y, log, log_x) = (p.x, p.y, p.log_y, p.log_x);
             let data = |px: f64, py: f64| {
                 let fx = (px - l) / (r - l);
                 let fy = (b - py) / (b - t);
@@ -92,7 +94,12 @@ fn panels(text: &str) -> Vec<Panel> {
                 } else {
                     y.0 + fy * (y.1 - y.0)
                 };
-                (x.0 + fx * (x.1 - x.0), yv)
+                let xv = if log_x {
+                    x.0 * (x.1 / x.0).powf(fx)
+                } else {
+                    x.0 + fx * (x.1 - x.0)
+                };
+                (xv, yv)
             };
             for n in g.descendants() {
                 let label = n.attribute("data-label").unwrap_or("").to_string();
@@ -793,19 +800,29 @@ fn inelastic_run_envelopes_and_loops_match_the_results() {
     let residual = buildings[b]["residual_drift"][j - 1].as_f64().unwrap();
     assert!((end.0 - residual).abs() <= p.res.0, "{end:?} vs {residual}");
 
-    // Every inelastic storey of that building, on common axes.
+    // Every inelastic storey of every building (issue 23: the other building's were nowhere), building by
+    // building, on axes common to the building's storeys.
     let all = read_panels(&dir.join("hysteresis-storeys.svg"));
-    let storeys = numbers(&buildings[b]["inelastic_storeys"]);
-    assert_eq!(all.len(), storeys.len());
-    for (k, (p, j)) in all.iter().zip(storeys).enumerate() {
-        assert!(p.title.starts_with(&format!("storey {j} ")), "{}", p.title);
-        check_loop(
-            p,
-            &loop_of(b, j as usize),
-            numbers(&buildings[b]["yield_forces"])[k],
-        );
-        assert_eq!((p.x, p.y), (all[0].x, all[0].y));
+    let mut at = 0;
+    for (b, bs) in buildings.iter().enumerate() {
+        let name = bs["name"].as_str().unwrap();
+        let storeys = numbers(&bs["inelastic_storeys"]);
+        let mine = &all[at..at + storeys.len()];
+        at += storeys.len();
+        let model = scenario["building"][b]["storey_model"].as_str().unwrap();
+        for (k, (p, j)) in mine.iter().zip(storeys).enumerate() {
+            let head = format!("{name}, storey {j}: {model}, \u{3bc} ");
+            assert!(p.title.starts_with(&head), "{}", p.title);
+            // The ductility to 3 significant digits.
+            let mu: f64 = p.title[head.len()..].parse().unwrap();
+            let want = numbers(&bs["ductility"])[k];
+            assert!((mu - want).abs() <= 5e-3 * want, "{}: {want}", p.title);
+            check_loop(p, &loop_of(b, j as usize), numbers(&bs["yield_forces"])[k]);
+            assert_eq!((p.x, p.y), (mine[0].x, mine[0].y));
+        }
     }
+    assert_eq!(at, all.len());
+    assert!(buildings.len() == 2 && all[0].x != all[all.len() - 1].x);
 
     // The report has both figures and a row per storey with its ductility.
     let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
@@ -1236,4 +1253,180 @@ fn the_report_shows_mode_shapes_with_a_largest_component_of_one() {
                 .all(|p| !p.is_empty() && p.trim_start_matches(['-', '+']).parse::<f64>().is_ok());
         assert!(!looks_like_e, "{t:?} in e-notation");
     }
+}
+
+/// The figures follow what was hit and what the structure is (issue 23): contact-force draws the levels that
+/// were hit and names the others; a bridge's decks have bearings, no storeys and no height envelope; an
+/// isolator's drift is no drift ratio; log-spaced periods on a log axis; the separation rules' points all
+/// visible where they coincide.
+#[test]
+fn figures_follow_what_was_hit_and_what_the_structure_is() {
+    // Three in a row: impacts.csv says which levels pounded; the figure has exactly those panels.
+    let dir = tmp("follow-row");
+    let s = ok_json(&[
+        "run",
+        &example("three-in-a-row.toml"),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+        "--plots",
+    ]);
+    let (ih, irows) = csv(&dir.join("impacts.csv"));
+    let left = col(&ih, &irows, "floor_left");
+    let sites = s["sites"].as_array().unwrap();
+    let mut hit = Vec::new();
+    let mut silent = Vec::new();
+    for site in sites {
+        let name = site["name"].as_str().unwrap();
+        let site_col = ih.iter().position(|h| h == "contact").unwrap();
+        for level in site["levels"].as_array().unwrap() {
+            let f = level["left"].as_f64().unwrap();
+            let n = irows
+                .iter()
+                .zip(&left)
+                .filter(|(r, l)| r[site_col] == name && **l == f)
+                .count();
+            let label = format!("contact {name}, floors {f}-{}", level["right"]);
+            if n > 0 {
+                hit.push((label, n));
+            } else {
+                silent.push(format!("{f}-{}", level["right"]));
+            }
+        }
+    }
+    assert!(
+        !silent.is_empty() && !hit.is_empty(),
+        "the example has both"
+    );
+    let p = read_panels(&dir.join("contact-force.svg"));
+    assert_eq!(p.len(), hit.len());
+    for (q, (label, n)) in p.iter().zip(&hit) {
+        assert!(
+            q.title.starts_with(&format!("{label}: {n} impact")),
+            "{} vs {label}",
+            q.title
+        );
+    }
+    let text = std::fs::read_to_string(dir.join("contact-force.svg")).unwrap();
+    let total = hit.len() + silent.len();
+    assert!(text.contains(&format!("levels that were hit ({} of {total})", hit.len())));
+    assert!(text.contains("Not hit"), "the silent levels are named");
+    for f in &silent {
+        assert!(text.contains(f.as_str()), "{f} named");
+    }
+    // Relative displacement keeps every level: how near the silent ones came.
+    assert_eq!(
+        read_panels(&dir.join("relative-displacement.svg")).len(),
+        total
+    );
+
+    // A bridge: decks on bearings.
+    let dir = tmp("follow-bridge");
+    ok_json(&[
+        "run",
+        &example("bridge-three-span.toml"),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+        "--plots",
+    ]);
+    for absent in ["envelopes.svg", "hysteresis.svg", "hysteresis-storeys.svg"] {
+        assert!(
+            !dir.join(absent).exists(),
+            "{absent}: a deck has no storeys"
+        );
+    }
+    assert_eq!(
+        figure_title(&dir.join("isolators.svg")),
+        "Bearing force against displacement"
+    );
+    for q in read_panels(&dir.join("isolators.svg")) {
+        assert!(
+            q.title.starts_with("deck span") && q.title.contains("bilinear bearings"),
+            "{}",
+            q.title
+        );
+    }
+    let d = read_panels(&dir.join("displacement.svg"));
+    assert!(
+        d[1..].iter().all(|q| q.title.starts_with("deck span")),
+        "{:?}",
+        d[1].title
+    );
+    for q in read_panels(&dir.join("contact-force.svg")) {
+        assert!(!q.title.contains("floor"), "{}", q.title);
+    }
+
+    // An isolated building: drift ratios of the storeys above the isolator only.
+    let dir = tmp("follow-moat");
+    let s = ok_json(&[
+        "run",
+        &example("isolated-moat.toml"),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+        "--plots",
+    ]);
+    let ratios = numbers(&s["buildings"][0]["peak_drift_ratio"]);
+    let drift = &read_panels(&dir.join("envelopes.svg"))[1];
+    let pts = &drift.lines[0].1;
+    assert_eq!(
+        pts.len(),
+        2 * (ratios.len() - 1),
+        "no step for the isolator"
+    );
+    let top = ratios[1..].iter().fold(0.0f64, |a, r| a.max(*r));
+    assert!(
+        (max_x(pts) - 100.0 * top).abs() <= drift.res.0,
+        "{} vs {top}",
+        max_x(pts)
+    );
+    assert!(
+        100.0 * ratios[0] > 10.0 * max_x(pts),
+        "the isolator's would have dwarfed them"
+    );
+
+    // The spectrum's periods on a log axis: the SD curve reads back exactly through it.
+    let dir = tmp("follow-spectrum");
+    let v = ok_json(&[
+        "record",
+        "spectrum",
+        "el-centro-1940",
+        "--out",
+        dir.to_str().unwrap(),
+        "--plots",
+        "--json",
+    ]);
+    let sd = &read_panels(&dir.join("spectrum.svg"))[0];
+    assert!(sd.log_x);
+    let (periods, want) = (numbers(&v["periods"]), numbers(&v["sd"]));
+    let line = &sd.lines[0].1;
+    assert_eq!(line.len(), periods.len());
+    for ((t, y), (tw, yw)) in line.iter().zip(periods.iter().zip(&want)) {
+        assert!((t / tw - 1.0).abs() < 1e-4, "{t} vs {tw}");
+        assert!((y - yw).abs() <= sd.res.1, "{y} vs {yw}");
+    }
+
+    // Separation: each rule its own marker shape (SRSS and DDC coincide here to 0.1 mm).
+    let dir = tmp("follow-separation");
+    ok_json(&[
+        "separation",
+        &example("three-vs-eight-storey.toml"),
+        "--out",
+        dir.to_str().unwrap(),
+        "--plots",
+        "--json",
+    ]);
+    let p = &read_panels(&dir.join("separation.svg"))[0];
+    let labels: Vec<&str> = p.points.iter().map(|x| x.0.as_str()).collect();
+    assert_eq!(labels, ["ABS", "SRSS", "DDC"]);
+    let shapes: Vec<&String> = p.point_styles.iter().map(|x| &x.1).collect();
+    assert!(
+        shapes[0] != shapes[1] && shapes[1] != shapes[2] && shapes[0] != shapes[2],
+        "{shapes:?}"
+    );
+}
+
+fn max_x(pts: &[(f64, f64)]) -> f64 {
+    pts.iter().fold(f64::NEG_INFINITY, |a, p| a.max(p.0))
 }

@@ -139,6 +139,11 @@ def test_walls_devices_and_isolators_match_the_command_line(tmp_path):
         assert row[f"{x['name']}_impacts"] == x["impacts"]
         assert row[f"{x['name']}_peak_force_N"] == x["peak_force"]
     assert row["abutment-west_impacts"] == walls.sum()
+    # Decks on bearings: no storey above them, so no drift ratio and no storey ductility (the bearings' own
+    # is in the summary); the bearings' displacement is.
+    for b in r.summary["buildings"]:
+        assert f"{b['name']}_peak_drift_ratio" not in row and f"{b['name']}_peak_ductility" not in row
+        assert row[f"{b['name']}_isolator_displacement_m"] == b["isolator"]["peak_displacement"]
 
 
 # Walls and devices may have any name: commas, quotes, | and letters beyond ASCII (building names are

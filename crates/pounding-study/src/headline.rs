@@ -23,9 +23,9 @@ impl Cell {
 }
 
 /// `(column, value)` pairs of one run's summary, with units in the column names: the record's PGA; for each
-/// building its largest floor displacement, storey drift ratio (storeys above an isolator), absolute floor
-/// acceleration and storey shear (restoring force, the isolator's included), its largest ductility where
-/// storeys can yield, and its isolator's displacement; each contact site's (contacts and walls alike)
+/// building its largest floor displacement, storey drift ratio (storeys above an isolator; none for a deck),
+/// absolute floor acceleration and storey shear (restoring force, the isolator's included), its largest
+/// ductility where storeys above any isolator can yield, and its isolator's displacement; each contact site's (contacts and walls alike)
 /// impacts, peak force and largest penetration; the energy balance error and the integration steps.
 pub fn headline(s: &RunSummary) -> Vec<(String, Cell)> {
     let max = |v: &[f64]| Cell::Number(v.iter().copied().fold(0.0, f64::max));
@@ -36,10 +36,13 @@ pub fn headline(s: &RunSummary) -> Vec<(String, Cell)> {
             format!("{name}_peak_displacement_m"),
             max(&b.peak_displacement),
         ));
-        row.push((
-            format!("{name}_peak_drift_ratio"),
-            max(b.structural_drift_ratios()),
-        ));
+        // A deck has no storey above its bearings: no drift ratio.
+        if !b.structural_drift_ratios().is_empty() {
+            row.push((
+                format!("{name}_peak_drift_ratio"),
+                max(b.structural_drift_ratios()),
+            ));
+        }
         row.push((
             format!("{name}_peak_floor_acceleration_m_per_s2"),
             max(&b.peak_absolute_acceleration),
@@ -48,8 +51,11 @@ pub fn headline(s: &RunSummary) -> Vec<(String, Cell)> {
             format!("{name}_peak_storey_shear_N"),
             max(&b.peak_storey_shear),
         ));
-        if !b.ductility.is_empty() {
-            row.push((format!("{name}_peak_ductility"), max(&b.ductility)));
+        if !b.structural_ductility().is_empty() {
+            row.push((
+                format!("{name}_peak_ductility"),
+                max(b.structural_ductility()),
+            ));
         }
         if let Some(iso) = &b.isolator {
             row.push((

@@ -35,8 +35,8 @@ pub enum Edp {
     Displacement(Option<String>),
     /// Largest storey shear (restoring force, an isolator's included), N, of a building, or of all.
     StoreyShear(Option<String>),
-    /// Largest ductility (peak drift over yield drift) of an inelastic storey, of a building or of all
-    /// (0 where no storey can yield).
+    /// Largest ductility (peak drift over yield drift) of an inelastic storey above any isolator, of a
+    /// building or of all (0 where no such storey can yield).
     Ductility(Option<String>),
     /// Largest contact force of any contact, N.
     PeakForce,
@@ -61,7 +61,7 @@ impl Edp {
         match self {
             Edp::DriftRatio(b) => of(b, BuildingSummary::structural_drift_ratios),
             Edp::StoreyShear(b) => of(b, |b| &b.peak_storey_shear),
-            Edp::Ductility(b) => of(b, |b| &b.ductility),
+            Edp::Ductility(b) => of(b, BuildingSummary::structural_ductility),
             Edp::Acceleration(b) => of(b, |b| &b.peak_absolute_acceleration),
             Edp::Displacement(b) => of(b, |b| &b.peak_displacement),
             Edp::PeakForce => sites(|c| c.peak_force),
@@ -188,11 +188,16 @@ pub struct Ida {
     pub inelastic: Vec<String>,
 }
 
-/// The buildings of `s` with storeys that can yield.
+/// The buildings of `s` with storeys that can yield (above any isolator: its ductility is the isolator's).
 fn inelastic(s: &pounding::analysis::Scenario) -> Vec<String> {
     s.buildings()
         .iter()
-        .filter(|b| b.structure.storey_laws().iter().any(|l| l.is_inelastic()))
+        .filter(|b| {
+            let skip = usize::from(b.structure.isolator().is_some());
+            b.structure.storey_laws()[skip..]
+                .iter()
+                .any(|l| l.is_inelastic())
+        })
         .map(|b| b.name.clone())
         .collect()
 }

@@ -4,6 +4,7 @@
 use super::markup::{dl, e, kj, mm, mn, n};
 use crate::output::fmt_sig;
 use crate::plot::axis::plain;
+use pounding::structure::Form;
 use pounding_study::summary::{BuildingSummary, RunSummary, SitePlace, SiteSummary};
 
 /// A building's storey models in a few words: "linear", "bilinear", or "1-2 bilinear, 3 linear".
@@ -33,14 +34,23 @@ pub fn models(b: &BuildingSummary) -> String {
     runs.join(", ")
 }
 
-/// A building in a line: storeys, models, T1, roof displacement, largest ductility.
+/// A building in a line: storeys, models, T1, roof displacement, largest ductility of its storeys (an
+/// isolator's is in its own line); a deck: its period and displacement.
 fn building(b: &BuildingSummary) -> String {
     let peak = b.peak_displacement.last().copied().unwrap_or(0.0);
-    // The storey with the largest ductility, if any storey is inelastic.
+    if b.form() == Form::Deck {
+        return format!(
+            "T1 = {} s on its bearings, peak displacement {} mm",
+            n(b.periods[0]),
+            mm(peak)
+        );
+    }
+    // The storey with the largest ductility, if any storey above any isolator is inelastic.
+    let skip = b.ductility.len() - b.structural_ductility().len();
     let most = b
-        .ductility
+        .structural_ductility()
         .iter()
-        .zip(&b.inelastic_storeys)
+        .zip(&b.inelastic_storeys[skip..])
         .max_by(|a, c| a.0.total_cmp(c.0))
         .map(|(mu, j)| format!(", largest ductility {} (storey {j})", fmt_sig(*mu, 3)))
         .unwrap_or_default();
@@ -105,7 +115,7 @@ pub fn section(h: &mut String, s: &RunSummary) {
         ),
     );
     for b in &s.buildings {
-        dl(h, &format!("building {}", b.name), building(b));
+        dl(h, &format!("{} {}", b.form().noun(), b.name), building(b));
     }
     for b in &s.buildings {
         if let Some(iso) = &b.isolator {
@@ -114,11 +124,16 @@ pub fn section(h: &mut String, s: &RunSummary) {
                 (Some(c), _) => format!(" against a clearance of {} mm", mm(c)),
                 _ => String::new(),
             };
+            // A bearing or isolator that yields: its ductility (storey 1 of the lists).
+            let mu = match (b.inelastic_storeys.first(), b.ductility.first()) {
+                (Some(1), Some(mu)) => format!(", ductility {}", fmt_sig(*mu, 3)),
+                _ => String::new(),
+            };
             dl(
                 h,
-                &format!("isolator of {}", b.name),
+                &format!("{} of {}", b.form().isolator_noun(), b.name),
                 format!(
-                    "{}, peak displacement {} mm{clearance}",
+                    "{}, peak displacement {} mm{mu}{clearance}",
                     e(iso.model.name()),
                     mm(iso.peak_displacement)
                 ),

@@ -2,6 +2,7 @@
 
 use super::markup::{e, kj, mm, mn, n, secs, table};
 use crate::plot::axis::plain;
+use pounding::structure::Form;
 use pounding_study::summary::{DampingSummary, RunSummary, SitePlace, SiteSummary};
 
 /// The modal properties of each building.
@@ -79,11 +80,21 @@ pub fn response(h: &mut String, s: &RunSummary) {
                 // Ductility, yield force and hysteretic energy are listed for the inelastic storeys only.
                 let at = b.inelastic_storeys.iter().position(|&i| i == j + 1);
                 let only = |v: &[f64], f: fn(f64) -> String| at.map_or(String::new(), |i| f(v[i]));
+                // An isolator (a deck's bearings) is storey 1; its drift over its height is no drift ratio.
+                let iso = j == 0 && b.isolator.is_some();
                 vec![
-                    (j + 1).to_string(),
+                    if iso {
+                        format!("1 ({})", b.form().isolator_noun())
+                    } else {
+                        (j + 1).to_string()
+                    },
                     e(b.storey_models[j].name()),
                     mm(b.peak_drift[j]),
-                    format!("{:.3}", 100.0 * b.peak_drift_ratio[j]),
+                    if iso {
+                        "\u{2013}".to_string()
+                    } else {
+                        format!("{:.3}", 100.0 * b.peak_drift_ratio[j])
+                    },
                     mn(b.peak_storey_shear[j]),
                     mm(b.residual_drift[j]),
                     only(&b.yield_forces, mn),
@@ -96,7 +107,12 @@ pub fn response(h: &mut String, s: &RunSummary) {
             h,
             &format!("storeys-{k}"),
             &format!(
-                "Storeys of building {} (shear: the restoring force; ductility: peak drift / yield drift, inelastic storeys only)",
+                "{} of {} {} (shear: the restoring force; ductility: peak drift / yield drift, inelastic storeys only)",
+                match b.form() {
+                    Form::Deck => "Bearings",
+                    _ => "Storeys",
+                },
+                b.form().noun(),
                 b.name
             ),
             &[

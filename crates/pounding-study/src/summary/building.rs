@@ -2,7 +2,7 @@
 
 use pounding::analysis::{Building, BuildingResponse};
 use pounding::element::StoreyModel;
-use pounding::structure::{IsolatorKind, IsolatorModel};
+use pounding::structure::{Form, IsolatorKind, IsolatorModel};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -163,8 +163,20 @@ impl BuildingSummary {
         &self.peak_drift_ratio[usize::from(self.isolator.is_some())..]
     }
 
+    /// The ductility of each inelastic storey of the structure (above an isolator, whose ductility is the
+    /// isolator's own), dimensionless; empty if none can yield.
+    pub fn structural_ductility(&self) -> &[f64] {
+        let isolator = self.isolator.is_some() && self.inelastic_storeys.first() == Some(&1);
+        &self.ductility[usize::from(isolator)..]
+    }
+
     /// Whether any storey yields (bilinear or Bouc–Wen).
     pub fn is_inelastic(&self) -> bool {
         !self.inelastic_storeys.is_empty()
+    }
+
+    /// What the structure is, for the words that name it and its parts.
+    pub fn form(&self) -> Form {
+        Form::of(self.isolator.is_some(), self.storeys)
     }
 }

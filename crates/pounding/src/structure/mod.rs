@@ -9,8 +9,10 @@
 //! `c = 2 zeta sqrt(k m)`, which is the same formula with `w2 = w1`.
 
 mod eigen;
+mod form;
 pub mod isolation;
 
+pub use form::Form;
 pub use isolation::{Isolator, IsolatorKind, IsolatorModel};
 
 use crate::element::StoreyLaw;
@@ -305,6 +307,11 @@ impl ShearBuilding {
         };
         b.isolator = Some(isolator);
         Ok(b)
+    }
+
+    /// What the structure is: a building, an isolated building, or a deck on its bearings.
+    pub fn form(&self) -> Form {
+        Form::of(self.isolator.is_some(), self.storeys())
     }
 
     /// The isolator under the base slab, if the building is isolated ([`ShearBuilding::isolated`]).

@@ -5,6 +5,7 @@ use crate::describe::contact_label;
 use crate::output::{fmt_num, fmt_sig};
 use pounding::analysis::{Building, Bumper, Scenario, SiteKind};
 use pounding::element::StoreyLaw;
+use pounding::structure::{Form, IsolatorModel};
 use pounding_study::input::Loaded;
 use std::path::Path;
 
@@ -87,16 +88,15 @@ fn damping(b: &Building) -> String {
     )
 }
 
-/// A storey's law in words, with units.
-fn storey_law(j: usize, l: &StoreyLaw) -> String {
+/// A storey's law in words, with units: "bilinear F_y 1.4e6 N, a 0.12".
+fn storey_law(l: &StoreyLaw) -> String {
     match *l {
-        StoreyLaw::Linear => format!("{}: linear", j + 1),
+        StoreyLaw::Linear => "linear".to_string(),
         StoreyLaw::Bilinear {
             yield_force,
             post_yield_ratio,
         } => format!(
-            "{}: bilinear F_y {} N, a {}",
-            j + 1,
+            "bilinear F_y {} N, a {}",
             fmt_sig(yield_force, 4),
             fmt_num(post_yield_ratio)
         ),
@@ -107,8 +107,7 @@ fn storey_law(j: usize, l: &StoreyLaw) -> String {
             beta,
             gamma,
         } => format!(
-            "{}: bouc-wen F_y {} N, a {}, n {}, beta {}, gamma {}",
-            j + 1,
+            "bouc-wen F_y {} N, a {}, n {}, beta {}, gamma {}",
             fmt_sig(yield_force, 4),
             fmt_num(post_yield_ratio),
             fmt_num(n),
@@ -118,9 +117,55 @@ fn storey_law(j: usize, l: &StoreyLaw) -> String {
     }
 }
 
-/// A building, its storey laws and its modes.
+/// A deck on its bearings: its mass, the bearings' law, its period.
+fn deck(b: &Building) {
+    let st = &b.structure;
+    let Some(iso) = st.isolator() else { return };
+    // The bearings' own parameters (a friction pendulum's radius and friction, else the storey law's).
+    let law = match iso.model {
+        IsolatorModel::FrictionPendulum {
+            radius,
+            mu,
+            yield_displacement,
+        } => format!(
+            "R {} m, mu {}, d_y {} m",
+            fmt_num(radius),
+            fmt_num(mu),
+            fmt_num(yield_displacement)
+        ),
+        _ => {
+            let words = storey_law(&st.storey_laws()[0]);
+            let rest = words
+                .split_once(' ')
+                .map_or(String::new(), |x| format!(", {}", x.1));
+            format!("k {} N/m{rest}", fmt_sig(st.stiffnesses()[0], 4))
+        }
+    };
+    let viscous = format!("{} N s/m", fmt_sig(iso.damping, 4));
+    let damped = match (st.storey_laws()[0].is_inelastic(), iso.damping > 0.0) {
+        (true, false) => "damped by their hysteresis".to_string(),
+        (true, true) => format!("damped by their hysteresis and {viscous}"),
+        (false, true) => format!("damped by {viscous}"),
+        (false, false) => "undamped".to_string(),
+    };
+    println!(
+        "\ndeck {:?}: {} kg on {} bearings, {law}; {damped}",
+        b.name,
+        fmt_num(st.total_mass()),
+        iso.model.name(),
+    );
+    println!(
+        "  period {} s (initial stiffness of the bearings)",
+        fmt_sig(st.modes().periods()[0], 4)
+    );
+}
+
+/// A building, its storey laws and its modes (a deck: [`deck`]).
 fn building(b: &Building) {
     let st = &b.structure;
+    if st.form() == Form::Deck {
+        return deck(b);
+    }
     let modes = st.modes();
     let part = modes.participation(st.masses());
     let m_tot = st.total_mass();
@@ -137,7 +182,7 @@ fn building(b: &Building) {
         let desc: Vec<String> = laws
             .iter()
             .enumerate()
-            .map(|(j, l)| storey_law(j, l))
+            .map(|(j, l)| format!("{}: {}", j + 1, storey_law(l)))
             .collect();
         println!("  storeys: {}", desc.join("; "));
         if st.isolator().is_some() {

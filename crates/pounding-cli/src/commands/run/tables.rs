@@ -3,6 +3,7 @@
 
 use crate::output::{fmt_num, fmt_table};
 use pounding::analysis::{Results, Scenario};
+use pounding::structure::Form;
 
 /// Prints the results `r` of a run of `s`.
 pub fn print(s: &Scenario, r: &Results) {
@@ -33,22 +34,47 @@ fn floors(s: &Scenario, r: &Results) {
     println!(
         "building    floor  displacement_mm    at_s  abs_acceleration_m_per_s2  storey  drift_mm  drift_ratio_%  shear_MN"
     );
+    let mut isolated = false;
     for (b, resp) in s.buildings().iter().zip(&r.buildings) {
         let h = b.structure.heights();
+        let form = b.structure.form();
         for (f, h_f) in h.iter().enumerate() {
+            // An isolator's drift over its height is no drift ratio.
+            let iso = f == 0 && form != Form::Building;
+            isolated |= iso;
             println!(
-                "{:<10}  {:>5}  {:>15}  {:>6.2}  {:>25}  {:>6}  {:>8}  {:>13.3}  {:>8}",
+                "{:<10}  {:>5}  {:>15}  {:>6.2}  {:>25}  {:>6}  {:>8}  {:>13}  {:>8}",
                 b.name,
-                f + 1,
+                if form == Form::Deck {
+                    "deck".to_string()
+                } else {
+                    (f + 1).to_string()
+                },
                 mm(resp.peak_displacement[f]),
                 resp.time_of_peak_displacement[f],
                 fmt_table(resp.peak_absolute_acceleration[f], 4),
-                f + 1,
+                storey_name(form, f),
                 mm(resp.peak_drift[f]),
-                100.0 * resp.peak_drift[f] / h_f,
+                if iso {
+                    "-".to_string()
+                } else {
+                    format!("{:.3}", 100.0 * resp.peak_drift[f] / h_f)
+                },
                 mn(resp.peak_storey_shear[f])
             );
         }
+    }
+    if isolated {
+        println!("(iso: the isolator, a deck's bearings; its drift is its displacement, see the isolator table)");
+    }
+}
+
+/// Storey `j` (from 0) in a table's storey column: its number, or `iso` for an isolator (a deck's bearings).
+fn storey_name(form: Form, j: usize) -> String {
+    if j == 0 && form != Form::Building {
+        "iso".to_string()
+    } else {
+        (j + 1).to_string()
     }
 }
 
@@ -68,7 +94,7 @@ fn inelastic(s: &Scenario, r: &Results) {
                     println!(
                         "{:<10}  {:>6}  {:<8}  {:>9.3}  {:>17}  {:>20}",
                         b.name,
-                        j + 1,
+                        storey_name(b.structure.form(), j),
                         law.name(),
                         mu,
                         mm(resp.residual_drift[j]),
@@ -97,10 +123,14 @@ fn isolators(s: &Scenario, r: &Results) {
                 Some(c) if resp.peak_drift[0] > c => "  EXCEEDED",
                 _ => "",
             };
+            let model = match st.form() {
+                Form::Deck => format!("{} bearings", iso.model.name()),
+                _ => iso.model.name().to_string(),
+            };
             println!(
                 "{:<10}  {:<17}  {:>20}  {:>12}  {:>11}{over}",
                 s.buildings()[b].name,
-                iso.model.name(),
+                model,
                 mm(resp.peak_drift[0]),
                 clearance,
                 mm(resp.residual_drift[0])

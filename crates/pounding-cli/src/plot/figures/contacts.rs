@@ -19,6 +19,12 @@ struct Level {
 }
 
 impl Level {
+    /// Whether this level was hit: an impact, or a force at some output sample.
+    fn hit(&self, d: &RunData) -> bool {
+        let el = &d.contacts[self.contact].elements[self.element];
+        d.impacts.iter().any(|i| self.holds(d, i)) || el.force.iter().any(|f| *f != 0.0)
+    }
+
     /// Whether impact `i` happened at this level.
     fn holds(&self, d: &RunData, i: &crate::run_data::ImpactData) -> bool {
         i.contact == self.contact
@@ -26,26 +32,71 @@ impl Level {
     }
 }
 
+/// The note naming the levels that were never hit, grouped by site: "Not hit (no force): contact
+/// west|east, floors 1-1, 2-2; wall moat."
+fn silent_note(d: &RunData, silent: &[&Level]) -> String {
+    let mut groups: Vec<(usize, Vec<String>)> = Vec::new();
+    for lv in silent {
+        let cd = &d.contacts[lv.contact];
+        let el = &cd.elements[lv.element];
+        let pair = if cd.wall {
+            format!("floor {}", el.floors.0.max(el.floors.1))
+        } else {
+            format!("{}-{}", el.floors.0, el.floors.1)
+        };
+        match groups.last_mut() {
+            Some(g) if g.0 == lv.contact => g.1.push(pair),
+            _ => groups.push((lv.contact, vec![pair])),
+        }
+    }
+    let parts: Vec<String> = groups
+        .iter()
+        .map(|(c, pairs)| {
+            let cd = &d.contacts[*c];
+            let what = if cd.wall { "wall" } else { "contact" };
+            if single_floor(d, cd.left) && single_floor(d, cd.right) {
+                format!("{what} {}", cd.name)
+            } else if cd.wall {
+                format!("{what} {}, {}", cd.name, pairs.join(", "))
+            } else {
+                format!("{what} {}, floors {}", cd.name, pairs.join(", "))
+            }
+        })
+        .collect();
+    format!(
+        "Not hit (no force over the run, not drawn; their closing is in relative-displacement.svg): {}.",
+        parts.join("; ")
+    )
+}
+
 /// Every contact level of the run, contacts left to right, then walls; floor pairs in order.
 fn contact_levels(d: &RunData) -> Vec<Level> {
     let mut out = Vec::new();
     for (c, cd) in d.contacts.iter().enumerate() {
         for (e, el) in cd.elements.iter().enumerate() {
-            let short = if cd.wall {
-                format!("floor {}", el.floors.0.max(el.floors.1))
-            } else {
-                format!("floors {}-{}", el.floors.0, el.floors.1)
-            };
             let what = if cd.wall { "wall" } else { "contact" };
+            // Between single-floor structures (decks, one-storey buildings) a floor number tells nothing.
+            let label = if single_floor(d, cd.left) && single_floor(d, cd.right) {
+                format!("{what} {}", cd.name)
+            } else if cd.wall {
+                format!("{what} {}, floor {}", cd.name, el.floors.0.max(el.floors.1))
+            } else {
+                format!("{what} {}, floors {}-{}", cd.name, el.floors.0, el.floors.1)
+            };
             out.push(Level {
                 contact: c,
                 element: e,
-                label: format!("{what} {}, {short}", cd.name),
+                label,
                 style: Style::level(out.len()),
             });
         }
     }
     out
+}
+
+/// Whether side `b` of a contact (a building, or a wall's `None`) has one floor only.
+pub fn single_floor(d: &RunData, b: Option<usize>) -> bool {
+    b.is_none_or(|b| d.buildings[b].floors.len() == 1)
 }
 
 /// The plot height of one of `n` small multiples, px: the usual 250 for one, less for many.
@@ -66,15 +117,41 @@ pub fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<F
     }
     let (forces, closing) = level_panels(d, &levels);
     let n = levels.len();
+    // Panels for the levels that were hit; the silent ones are named in a note.
+    let hit: Vec<bool> = levels.iter().map(|lv| lv.hit(d)).collect();
+    let silent: Vec<&Level> = levels
+        .iter()
+        .zip(&hit)
+        .filter(|h| !*h.1)
+        .map(|h| h.0)
+        .collect();
+    let mut forces: Vec<Panel> = forces
+        .into_iter()
+        .zip(&hit)
+        .filter(|p| *p.1)
+        .map(|p| p.0)
+        .collect();
+    let m = forces.len();
+    if m == 0 {
+        let mut p = Panel::new("no contact level was hit", time(), force());
+        p.y_range = Some((0.0, 1.0e6));
+        p.x_range = d.t.first().zip(d.t.last()).map(|(a, b)| (*a, *b));
+        p.legend = Legend::None;
+        forces.push(p);
+    }
     let force_fig = Figure {
         id: "contact-force".into(),
-        title: format!(
-            "Contact force at each contact level ({n} level{})",
-            if n == 1 { "" } else { "s" }
-        ),
+        title: if m == n {
+            format!(
+                "Contact force at each contact level ({n} level{})",
+                if n == 1 { "" } else { "s" }
+            )
+        } else {
+            format!("Contact force at the levels that were hit ({m} of {n})")
+        },
         subtitle: d.subtitle.clone(),
         panels: forces,
-        plot: (PLOT.0, multiple_height(n)),
+        plot: (PLOT.0, multiple_height(m)),
         share_x: true,
         notes: vec![
             "Line: the force at the output samples with each impact's located peak inserted; markers: the \
@@ -82,6 +159,7 @@ pub fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<F
                 .into(),
         ]
         .into_iter()
+        .chain((!silent.is_empty()).then(|| silent_note(d, &silent)))
         .chain(
             d.impacts
                 .iter()
@@ -155,10 +233,6 @@ fn level_panels(d: &RunData, levels: &[Level]) -> (Vec<Panel>, Vec<Panel>) {
         p.x_range = Some(t_range);
         p.y_zero = true;
         p.legend = Legend::None;
-        if mine.is_empty() && el.force.iter().all(|f| *f == 0.0) {
-            // A level that never touched: a plain 0 to 1 MN axis, not one scaled to nothing.
-            p.y_range = Some((0.0, 1.0e6));
-        }
         // The samples, with each impact's located peak inserted, so the curve reaches its true peak.
         let peaks: Vec<(f64, f64)> = mine
             .iter()

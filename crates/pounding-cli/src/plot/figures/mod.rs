@@ -22,7 +22,7 @@ pub fn run(d: &RunData) -> Vec<Figure> {
     let (forces, closing, restitution) = contact_figures(d);
     let mut figs = vec![record(d), displacement(d)];
     if !d.buildings.is_empty() {
-        figs.push(envelopes(d));
+        figs.extend(envelopes(d));
         figs.extend(hysteresis(d));
         figs.extend(isolators(d));
     }

@@ -6,6 +6,7 @@ use crate::output::{fmt_num, fmt_sig};
 use crate::plot::axis::human;
 use crate::plot::{Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
 use crate::run_data::RunData;
+use pounding::structure::Form;
 
 /// The ground motion, and each building's floor displacements with the instants of its impacts.
 pub fn displacement(d: &RunData) -> Figure {
@@ -31,21 +32,26 @@ pub fn displacement(d: &RunData) -> Figure {
     ));
     let mut panels = vec![ground];
     for (b, bd) in d.buildings.iter().enumerate() {
+        let form = d.summary.buildings[b].form();
         let mut p = Panel::new(
-            format!(
-                "building {}: floor displacements relative to the ground",
-                bd.name
-            ),
+            match form {
+                Form::Deck => format!("deck {}: displacement relative to the ground", bd.name),
+                _ => format!(
+                    "building {}: floor displacements relative to the ground",
+                    bd.name
+                ),
+            },
             time(),
             Quantity::new("displacement", "m"),
         );
         p.x_tight = true;
         let n = bd.floors.len();
         for (f, u) in bd.floors.iter().enumerate() {
-            let label = if f + 1 == n && n > 1 {
-                format!("floor {} (roof)", f + 1)
-            } else {
-                format!("floor {}", f + 1)
+            let label = match (form, f) {
+                (Form::Deck, _) => "deck".to_string(),
+                _ if f + 1 == n && n > 1 => format!("floor {} (roof)", f + 1),
+                (Form::IsolatedBuilding, 0) => "floor 1 (base slab)".to_string(),
+                _ => format!("floor {}", f + 1),
             };
             p.series.push(Series::line(
                 label,
@@ -74,7 +80,19 @@ pub fn displacement(d: &RunData) -> Figure {
     }
     Figure {
         id: "displacement".into(),
-        title: "Floor displacements".into(),
+        title: {
+            let decks = d
+                .summary
+                .buildings
+                .iter()
+                .filter(|b| b.form() == Form::Deck);
+            match (decks.count(), d.buildings.len()) {
+                (0, _) => "Floor displacements",
+                (k, n) if k == n => "Deck displacements",
+                _ => "Floor and deck displacements",
+            }
+        }
+        .into(),
         subtitle: d.subtitle.clone(),
         panels,
         columns: 1,
@@ -91,16 +109,40 @@ pub fn devices(d: &RunData) -> Option<Figure> {
     let panels = d
         .devices
         .iter()
-        .map(|dd| {
+        .zip(&d.summary.devices)
+        .map(|(dd, ds)| {
+            // One floor pair needs no legend: the title says what it joins.
+            let one = dd.elements.len() == 1;
+            // A side's floor, where it has more than one (a wall or a deck has not).
+            let side = |name: &str, floor: usize| {
+                let many = d
+                    .buildings
+                    .iter()
+                    .any(|b| b.name == name && b.floors.len() > 1);
+                match (one && many, floor) {
+                    (true, f) => format!("{name} floor {f}"),
+                    _ => name.to_string(),
+                }
+            };
+            let el = dd.elements.first().map_or((0, 0), |e| e.floors);
+            let joins = format!(
+                ", {} to {}",
+                side(&ds.between[0], el.0),
+                side(&ds.between[1], el.1)
+            );
             let mut p = Panel::new(
-                format!("device {} ({})", dd.name, dd.model),
+                format!("device {} ({}{joins})", dd.name, dd.model),
                 time(),
                 Quantity::new("force, positive pushing apart", "N"),
             );
             p.x_tight = true;
             for (k, el) in dd.elements.iter().enumerate() {
                 p.series.push(Series::line(
-                    format!("floors {}-{}", el.floors.0, el.floors.1),
+                    if one {
+                        String::new()
+                    } else {
+                        format!("floors {}-{}", el.floors.0, el.floors.1)
+                    },
                     d.t.clone(),
                     el.force.clone(),
                     Style::nth(k),
@@ -206,10 +248,11 @@ fn steps(v: &[f64], z: &[f64]) -> (Vec<f64>, Vec<f64>) {
     (x, y)
 }
 
-/// Peak response over height, one line per building, four panels side by side: floor displacement and
-/// absolute acceleration at the floors (0 and the record's PGA at the ground), storey drift ratio and storey
-/// shear as steps over each storey's height.
-pub fn envelopes(d: &RunData) -> Figure {
+/// Peak response over height, one line per building (decks have no height: none for them), four panels side
+/// by side: floor displacement and absolute acceleration at the floors (0 and the record's PGA at the
+/// ground), storey drift ratio (storeys above any isolator) and storey shear as steps over each storey's
+/// height.
+pub fn envelopes(d: &RunData) -> Option<Figure> {
     let (z, height) = levels(d);
     let panel = |title: &str, q: Quantity| {
         let mut p = Panel::new(title, q, height.clone());
@@ -235,8 +278,14 @@ pub fn envelopes(d: &RunData) -> Figure {
         Quantity::new("peak storey shear", "N"),
     );
     let pga = d.summary.record.pga;
+    let mut isolated = false;
     for (b, bd) in d.buildings.iter().enumerate() {
         let s = &d.summary.buildings[b];
+        match s.form() {
+            Form::Deck => continue,
+            Form::IsolatedBuilding => isolated = true,
+            Form::Building => {}
+        }
         let z = &z[b];
         let line = Style {
             width: 1.8,
@@ -253,8 +302,13 @@ pub fn envelopes(d: &RunData) -> Figure {
             z.clone(),
             dotted,
         ));
-        let ratio: Vec<f64> = s.peak_drift_ratio.iter().map(|r| 100.0 * r).collect();
-        let (x, y) = steps(&ratio, z);
+        // An isolator's drift over its height is no drift ratio: the storeys above it only.
+        let ratio: Vec<f64> = s
+            .structural_drift_ratios()
+            .iter()
+            .map(|r| 100.0 * r)
+            .collect();
+        let (x, y) = steps(&ratio, &z[z.len() - 1 - ratio.len()..]);
         drift.series.push(Series::line(&bd.name, x, y, line));
         acc.series.push(Series::line(
             &bd.name,
@@ -265,19 +319,27 @@ pub fn envelopes(d: &RunData) -> Figure {
         let (x, y) = steps(&s.peak_storey_shear, z);
         shear.series.push(Series::line(&bd.name, x, y, line));
     }
+    if disp.series.is_empty() {
+        return None;
+    }
     disp.legend = Legend::Inside;
-    Figure {
+    Some(Figure {
         id: "envelopes".into(),
         title: "Peak response over height".into(),
         subtitle: format!(
-            "{}; floor values as dots at the floors (at the ground: 0 and the record's PGA), storey values as steps over each storey",
-            d.subtitle
+            "{}; floor values as dots at the floors (at the ground: 0 and the record's PGA), storey values as steps over each storey{}",
+            d.subtitle,
+            if isolated {
+                "; drift ratio above the isolator (its displacement: isolators.svg), shear of the isolator included"
+            } else {
+                ""
+            }
         ),
         panels: vec![disp, drift, acc, shear],
         columns: 4,
         plot: (240.0, 360.0),
         ..Figure::default()
-    }
+    })
 }
 
 /// The record as the run applied it: ground acceleration at the output samples, and the velocity and

@@ -4,9 +4,11 @@ use super::common::human_si;
 use crate::output::fmt_sig;
 use crate::plot::{Figure, Legend, Mark, Panel, Quantity, Series, Style};
 use crate::run_data::RunData;
+use pounding::structure::Form;
 
 /// One storey's identity and numbers from summary.json: building, storey (from 0), model, yield force
-/// (inelastic storeys), ductility and hysteretic energy.
+/// (inelastic storeys), ductility and hysteretic energy. An isolator (storey 1 of an isolated building) has
+/// its own figure and is not among them.
 struct StoreyInfo {
     building: usize,
     storey: usize,
@@ -16,23 +18,20 @@ struct StoreyInfo {
     hysteretic_energy: Option<f64>,
 }
 
-/// The storeys of building `b`, from summary.json.
+/// The storeys of building `b` above any isolator, from summary.json.
 fn storey_info(d: &RunData, b: usize) -> Vec<StoreyInfo> {
     let s = &d.summary.buildings[b];
     let n = d.buildings[b].storey_shear.len();
     let inelastic = &s.inelastic_storeys;
     let (fy, mu, eh) = (&s.yield_forces, &s.ductility, &s.hysteretic_energy);
-    (0..n)
+    (usize::from(s.isolator.is_some())..n)
         .map(|j| {
             let k = inelastic.iter().position(|&i| i == j + 1);
             let pick = |v: &[f64]| k.and_then(|k| v.get(k).copied()).filter(|x| x.is_finite());
             StoreyInfo {
                 building: b,
                 storey: j,
-                model: match (j, &s.isolator) {
-                    (0, Some(iso)) => format!("isolator, {}", iso.model),
-                    _ => s.storey_models[j].name().to_string(),
-                },
+                model: s.storey_models[j].name().to_string(),
                 yield_force: pick(fy),
                 ductility: pick(mu),
                 hysteretic_energy: pick(eh),
@@ -86,58 +85,31 @@ fn storey_title(i: &StoreyInfo) -> String {
     }
 }
 
-/// The loop of every isolator: its force against its displacement (storey 1), with its clearance.
+/// The loop of every isolator (a deck's bearings): its force against its displacement (storey 1 of the
+/// files), with its clearance.
 pub fn isolators(d: &RunData) -> Option<Figure> {
+    let forms: Vec<Form> = d
+        .summary
+        .buildings
+        .iter()
+        .filter(|b| b.isolator.is_some())
+        .map(|b| b.form())
+        .collect();
+    let decks = forms.iter().filter(|f| **f == Form::Deck).count();
+    // The words of what is drawn: isolators, bearings, or both.
+    let (what, thing, under) = match (decks, forms.len() - decks) {
+        (0, _) => ("Isolator", "isolator", "the base slab"),
+        (_, 0) => ("Bearing", "bearing", "the deck"),
+        _ => ("Isolator and bearing", "isolator", "the base slab or deck"),
+    };
     let panels: Vec<Panel> = (0..d.buildings.len())
-        .filter_map(|b| {
-            let iso = d.summary.buildings[b].isolator.as_ref()?;
-            let model = iso.model.name();
-            let u = drift(d, b, 0);
-            let f = d.buildings[b].storey_shear[0].clone();
-            let mut p = Panel::new(
-                format!(
-                    "{}: {model} isolator, peak displacement {}",
-                    d.buildings[b].name,
-                    human_si(iso.peak_displacement, "m")
-                ),
-                Quantity::new("isolator displacement", "m"),
-                Quantity::new("isolator force", "N"),
-            );
-            p.x_zero = true;
-            p.y_zero = true;
-            let top = f.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-            p.series.push(Series::line(
-                "",
-                u,
-                f,
-                Style {
-                    width: 1.2,
-                    ..Style::nth(0)
-                },
-            ));
-            if let Some(c) = iso.clearance {
-                for (k, x) in [c, -c].into_iter().enumerate() {
-                    let label = if k == 0 {
-                        format!("clearance \u{b1}{}", human_si(c, "m"))
-                    } else {
-                        String::new()
-                    };
-                    p.series.push(Series::line(
-                        label,
-                        vec![x, x],
-                        vec![-top, top],
-                        Style::reference(),
-                    ));
-                }
-            }
-            Some(p)
-        })
+        .filter_map(|b| isolator_panel(d, b, thing))
         .collect();
     (!panels.is_empty()).then(|| Figure {
         id: "isolators".into(),
-        title: "Isolator force against displacement".into(),
+        title: format!("{what} force against displacement"),
         subtitle: format!(
-            "{}; displacement of the base slab relative to the ground; force: the isolator's restoring force",
+            "{}; displacement of {under} relative to the ground; force: the {thing}'s restoring force",
             d.subtitle
         ),
         panels,
@@ -147,9 +119,65 @@ pub fn isolators(d: &RunData) -> Option<Figure> {
     })
 }
 
-/// The force-drift loop of the most strained storey: the largest ductility over every building, or, with
-/// no inelastic storey, the largest peak drift ratio. With two or more inelastic storeys in its building, a
-/// second figure has the loop of each of them on common axes.
+/// The loop of building `b`'s isolator, if it has one, on axes named after `thing`.
+fn isolator_panel(d: &RunData, b: usize, thing: &str) -> Option<Panel> {
+    let s = &d.summary.buildings[b];
+    let iso = s.isolator.as_ref()?;
+    let u = drift(d, b, 0);
+    let f = d.buildings[b].storey_shear[0].clone();
+    let mut p = Panel::new(
+        format!(
+            "{} {}: {} {}, peak displacement {}",
+            s.form().noun(),
+            s.name,
+            iso.model.name(),
+            s.form().isolator_noun(),
+            human_si(iso.peak_displacement, "m")
+        ),
+        Quantity::new(format!("{thing} displacement"), "m"),
+        Quantity::new(format!("{thing} force"), "N"),
+    );
+    p.x_zero = true;
+    p.y_zero = true;
+    let top = f.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    p.series.push(Series::line("", u, f, loop_style()));
+    if let Some(c) = iso.clearance {
+        for (k, x) in [c, -c].into_iter().enumerate() {
+            let label = if k == 0 {
+                format!("clearance \u{b1}{}", human_si(c, "m"))
+            } else {
+                String::new()
+            };
+            p.series.push(Series::line(
+                label,
+                vec![x, x],
+                vec![-top, top],
+                Style::reference(),
+            ));
+        }
+    }
+    Some(p)
+}
+
+fn drift_q() -> Quantity {
+    Quantity::new("storey drift", "m")
+}
+
+fn shear_q() -> Quantity {
+    Quantity::new("storey shear", "N")
+}
+
+/// The style of a storey's loop.
+fn loop_style() -> Style {
+    Style {
+        width: 1.2,
+        ..Style::nth(0)
+    }
+}
+
+/// The force-drift loop of the most strained storey (the largest ductility over every building, or, with
+/// no inelastic storey, the largest peak drift ratio), and, when more than one storey yields, the loops of
+/// every inelastic storey of every building. Isolators are in [`isolators`]; a run of decks has no storeys.
 pub fn hysteresis(d: &RunData) -> Vec<Figure> {
     let all: Vec<StoreyInfo> = (0..d.buildings.len())
         .flat_map(|b| storey_info(d, b))
@@ -167,13 +195,17 @@ pub fn hysteresis(d: &RunData) -> Vec<Figure> {
     let Some(most) = most else {
         return Vec::new();
     };
+    let mut figs = vec![most_strained(d, most)];
+    let yielding: Vec<&StoreyInfo> = all.iter().filter(|i| i.ductility.is_some()).collect();
+    if yielding.len() >= 2 {
+        figs.push(every_yielding(d, &yielding));
+    }
+    figs
+}
+
+/// The loop of storey `most`, with its yield lines and the end of the analysis marked.
+fn most_strained(d: &RunData, most: &StoreyInfo) -> Figure {
     let name = &d.buildings[most.building].name;
-    let drift_q = || Quantity::new("storey drift", "m");
-    let shear_q = || Quantity::new("storey shear", "N");
-    let loop_style = Style {
-        width: 1.2,
-        ..Style::nth(0)
-    };
     let end_style = Style {
         width: 2.0,
         ..Style::nth(1)
@@ -197,7 +229,7 @@ pub fn hysteresis(d: &RunData) -> Vec<Figure> {
     p.y_zero = true;
     if let (Some(&ue), Some(&ve)) = (u.last(), v.last()) {
         p.series
-            .push(Series::line("", u.clone(), v.clone(), loop_style));
+            .push(Series::line("", u.clone(), v.clone(), loop_style()));
         p.series.push(Series::points(
             format!("end of the analysis: drift {}", human_si(ue, "m")),
             vec![ue],
@@ -213,7 +245,7 @@ pub fn hysteresis(d: &RunData) -> Vec<Figure> {
     } else {
         "no inelastic storey; the largest peak drift ratio of the run"
     };
-    let mut figs = vec![Figure {
+    Figure {
         id: "hysteresis".into(),
         title: format!(
             "Storey shear against drift: building {name}, storey {}",
@@ -227,20 +259,27 @@ pub fn hysteresis(d: &RunData) -> Vec<Figure> {
         columns: 1,
         plot: (620.0, 380.0),
         ..Figure::default()
-    }];
+    }
+}
 
-    // Every inelastic storey of that building, on common axes so that the loops compare.
-    let mine: Vec<&StoreyInfo> = all
-        .iter()
-        .filter(|i| i.building == most.building && i.ductility.is_some())
-        .collect();
-    if mine.len() >= 2 {
+/// The loop of every inelastic storey, one row per building, on axes common to the building's storeys so
+/// that its loops compare (buildings differ too much for one range).
+fn every_yielding(d: &RunData, yielding: &[&StoreyInfo]) -> Figure {
+    let buildings: Vec<usize> = {
+        let mut b: Vec<usize> = yielding.iter().map(|i| i.building).collect();
+        b.dedup();
+        b
+    };
+    let one = buildings.len() == 1;
+    let mut panels = Vec::new();
+    for &b in &buildings {
+        let mine: Vec<&&StoreyInfo> = yielding.iter().filter(|i| i.building == b).collect();
         let curves: Vec<(Vec<f64>, &Vec<f64>)> = mine
             .iter()
             .map(|i| {
                 (
-                    drift(d, i.building, i.storey),
-                    &d.buildings[i.building].storey_shear[i.storey],
+                    drift(d, b, i.storey),
+                    &d.buildings[b].storey_shear[i.storey],
                 )
             })
             .collect();
@@ -260,33 +299,53 @@ pub fn hysteresis(d: &RunData) -> Vec<Figure> {
             ),
             0.06,
         );
-        let panels = mine
-            .iter()
-            .zip(curves)
-            .map(|(i, (u, v))| {
-                let mut p = Panel::new(storey_title(i), drift_q(), shear_q());
-                p.x_range = Some(xr);
-                p.y_range = Some(yr);
-                p.legend = Legend::None;
-                p.series.push(Series::line("", u, v.clone(), loop_style));
-                if let Some(fy) = i.yield_force {
-                    yield_lines(&mut p, fy, false);
-                }
-                p
-            })
-            .collect();
-        figs.push(Figure {
-            id: "hysteresis-storeys".into(),
-            title: format!("Storey shear against drift: every inelastic storey of building {name}"),
-            subtitle: format!(
-                "{}; common axes; dashed: \u{b1}F_y of the storey",
-                d.subtitle
-            ),
-            panels,
-            columns: mine.len().min(4),
-            plot: (260.0, 190.0),
-            ..Figure::default()
-        });
+        for (k, (i, (u, v))) in mine.iter().zip(curves).enumerate() {
+            // Small panels: the ductility as μ, the building's name when there are several.
+            let short = format!(
+                "storey {}: {}, \u{3bc} {}",
+                i.storey + 1,
+                i.model,
+                fmt_sig(i.ductility.unwrap_or(0.0), 3)
+            );
+            let title = if one {
+                short
+            } else {
+                format!("{}, {short}", d.buildings[b].name)
+            };
+            let mut p = Panel::new(title, drift_q(), shear_q());
+            p.x_range = Some(xr);
+            p.y_range = Some(yr);
+            p.legend = Legend::None;
+            p.new_row = k == 0;
+            p.series.push(Series::line("", u, v.clone(), loop_style()));
+            if let Some(fy) = i.yield_force {
+                yield_lines(&mut p, fy, false);
+            }
+            panels.push(p);
+        }
     }
-    figs
+    let widest = buildings
+        .iter()
+        .map(|&b| yielding.iter().filter(|i| i.building == b).count())
+        .max()
+        .unwrap_or(1);
+    Figure {
+        id: "hysteresis-storeys".into(),
+        title: if one {
+            format!(
+                "Storey shear against drift: every inelastic storey of building {}",
+                d.buildings[buildings[0]].name
+            )
+        } else {
+            "Storey shear against drift: every inelastic storey, one row per building".into()
+        },
+        subtitle: format!(
+            "{}; \u{3bc}: ductility; axes common to a building's storeys; dashed: \u{b1}F_y of the storey",
+            d.subtitle
+        ),
+        panels,
+        columns: widest.min(4),
+        plot: (260.0, 190.0),
+        ..Figure::default()
+    }
 }
