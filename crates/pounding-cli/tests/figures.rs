@@ -170,12 +170,32 @@ fn read_panels(path: &Path) -> Vec<Panel> {
     panels(&std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())))
 }
 
-/// Parses every SVG in `dir`: each is well-formed, has at least one panel, and every plotted value is finite.
+/// Every panel title of an SVG whose text is cut (the panel's `data-title` is the whole title).
+fn cut_titles(text: &str) -> Vec<String> {
+    let doc = roxmltree::Document::parse(text).expect("well-formed SVG");
+    doc.descendants()
+        .filter(|n| n.attribute("class") == Some("panel"))
+        .filter_map(|g| {
+            let whole = g.attribute("data-title").unwrap_or("");
+            let shown = g
+                .descendants()
+                .find(|t| t.attribute("class") == Some("ptitle"))
+                .and_then(|t| t.text())
+                .unwrap_or("");
+            (shown != whole).then(|| whole.to_string())
+        })
+        .collect()
+}
+
+/// Parses every SVG in `dir`: each is well-formed, has at least one panel, no panel title cut, and every
+/// plotted value is finite.
 fn every_svg_reads_back(dir: &Path) -> usize {
     let mut n = 0;
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|x| x == "svg") {
+            let cut = cut_titles(&std::fs::read_to_string(&path).unwrap());
+            assert!(cut.is_empty(), "{}: titles cut: {cut:?}", path.display());
             let ps = read_panels(&path);
             assert!(!ps.is_empty(), "{}: no panel", path.display());
             for p in &ps {
@@ -1319,6 +1339,7 @@ fn figures_follow_what_was_hit_and_what_the_structure_is() {
         read_panels(&dir.join("relative-displacement.svg")).len(),
         total
     );
+    assert!(every_svg_reads_back(&dir) >= 8);
 
     // A bridge: decks on bearings.
     let dir = tmp("follow-bridge");
@@ -1356,6 +1377,8 @@ fn figures_follow_what_was_hit_and_what_the_structure_is() {
     for q in read_panels(&dir.join("contact-force.svg")) {
         assert!(!q.title.contains("floor"), "{}", q.title);
     }
+    assert!(every_svg_reads_back(&dir) >= 8);
+    assert!(every_svg_reads_back(&dir) >= 8);
 
     // An isolated building: drift ratios of the storeys above the isolator only.
     let dir = tmp("follow-moat");

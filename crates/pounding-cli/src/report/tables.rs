@@ -28,7 +28,10 @@ pub fn modes(h: &mut String, s: &RunSummary) {
         table(
             h,
             &format!("modes-{k}"),
-            &format!("Building {}", b.name),
+            &match b.form() {
+                Form::Deck => format!("Deck {} on its bearings", b.name),
+                _ => format!("Building {}", b.name),
+            },
             &[
                 "mode",
                 "period (s)",

@@ -443,7 +443,7 @@ pub fn impact_loops(d: &RunData) -> Option<Figure> {
                     mine.len()
                 )
             } else if total > mine.len() {
-                format!("{}: strongest {} of {total} impacts", lv.label, mine.len())
+                format!("{}: top {} of {total}", lv.label, mine.len())
             } else {
                 format!(
                     "{}: {total} impact{}",
@@ -504,7 +504,7 @@ pub fn impact_loops(d: &RunData) -> Option<Figure> {
         title: "Force against penetration of the strongest impacts, by contact level".into(),
         subtitle: d.subtitle.clone(),
         columns,
-        plot: (340.0, 220.0),
+        plot: (360.0, 220.0),
         panels,
         notes: std::iter::once(
             "Every accepted integration step of each impact and its located peak (marker), from \
