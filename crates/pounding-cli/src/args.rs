@@ -371,10 +371,17 @@ pub struct ModelArgs {
     /// Contact model (see `pounding models`).
     #[arg(long, value_parser = named::<Model>())]
     pub model: Model,
-    /// Requested coefficient of restitution e_pre, 0 < e <= 1 (required by the damped models; the elastic
-    /// ones, hooke and hertz, deliver 1 and take none).
+    /// Requested coefficient of restitution e_pre, 0 < e <= 1 (a damped model needs it, or --e-table, or
+    /// --damping-constant; the elastic ones, hooke and hertz, deliver 1 and take none).
     #[arg(long)]
     pub e: Option<f64>,
+    /// e against the impact velocity: a file of two columns, v_i (m/s) and e, velocities increasing
+    /// (read linearly between rows, held beyond the ends; each impact is calibrated to e at its v_i).
+    #[arg(long, value_name = "FILE")]
+    pub e_table: Option<std::path::PathBuf>,
+    /// Hunt-Crossley family: a material damping constant D/K (s/m) instead of e, F = K d^n (1 + (D/K) d').
+    #[arg(long)]
+    pub damping_constant: Option<f64>,
     /// Exponent n of the force law (default: the model's, 1 or 1.5).
     #[arg(long)]
     pub n: Option<f64>,
@@ -400,11 +407,11 @@ pub struct ModelArgs {
 
 impl ModelArgs {
     /// The library's contact options these arguments give.
-    pub fn options(&self) -> pounding::contact::ContactOptions {
+    /// The options, with what the contact is asked to deliver (`e`, from [`crate::restitution::asked`]).
+    pub fn options(&self, e: pounding::contact::Restitution) -> pounding::contact::ContactOptions {
         pounding::contact::ContactOptions {
             model: self.model,
-            // An elastic model takes no e (it delivers 1); a damped one without it is refused first.
-            e: self.e.unwrap_or(1.0),
+            e,
             exponent: self.n,
             damping: self.damping,
             alpha: self.alpha,

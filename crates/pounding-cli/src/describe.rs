@@ -3,29 +3,16 @@
 use crate::args::{BodiesArgs, ModelArgs};
 use crate::error::{flag, input, CliError};
 use crate::output::{fmt_num, num, Report};
-use pounding::contact::{AlphaRule, ContactModel, DampingParameter, Model};
+use pounding::contact::{
+    AlphaRule, ContactModel, DampingParameter, Model, Restitution, RestitutionTable,
+};
 use pounding::impact::ImpactResult;
 use serde_json::Value;
 
 /// The contact specification of `a` with stiffness `k` (N/m^n).
 pub fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
-    match (a.model.is_damped(), a.e) {
-        (true, None) => {
-            return Err(input(format!(
-                "--e is required by model {}: the coefficient of restitution it is to deliver, 0 < e <= 1",
-                a.model.name()
-            )))
-        }
-        (false, Some(e)) if e != 1.0 => {
-            return Err(input(format!(
-                "--e {} is not allowed with model {}: it is elastic and delivers e = 1 (leave --e out, or choose a damped model, see pounding models)",
-                fmt_num(e),
-                a.model.name()
-            )))
-        }
-        _ => {}
-    }
-    a.options().build(k).map_err(|e| match e {
+    let e = crate::restitution::asked(a.model, a.e, a.e_table.as_deref(), a.damping_constant)?;
+    a.options(e).build(k).map_err(|e| match e {
         pounding::contact::OptionError::Value(v) => CliError::from(v),
         other => input(other.message(flag)),
     })
@@ -42,16 +29,23 @@ pub fn stiffness_unit(n: f64) -> String {
 
 /// One line describing a contact model and its damping: `papi, k = 2e9 N/m, e = 0.65, ...`.
 pub fn contact_label(s: &ContactModel, p: Option<DampingParameter>) -> String {
-    let asked = s
-        .asked_restitution()
-        .map_or_else(|| "elastic".to_string(), |e| format!("e = {}", fmt_num(e)));
+    let asked = match s.asked() {
+        None => "elastic".to_string(),
+        Some(Restitution::Constant(e)) => format!("e = {}", fmt_num(*e)),
+        Some(Restitution::Table(t)) => table_label(t),
+        Some(Restitution::DampingConstant(c)) => {
+            format!("damping constant D/K = {} s/m", fmt_num(*c))
+        }
+    };
     let mut text = format!(
         "{}, k = {} {}, {asked}",
         s.model().name(),
         fmt_num(s.stiffness()),
         stiffness_unit(s.exponent()),
     );
-    if s.model().is_damped() {
+    // A damping constant is the damping itself: nothing calibrated, no formula.
+    let material = matches!(s.asked(), Some(Restitution::DampingConstant(_)));
+    if s.model().is_damped() && !material {
         text.push_str(&format!(", damping {}", s.damping()));
         if s.model() == Model::Papi {
             text.push_str(&format!(", {} reading", s.reading()));
@@ -73,6 +67,20 @@ pub fn contact_label(s: &ContactModel, p: Option<DampingParameter>) -> String {
     }
     text.push_str(&format!(", tension {}", s.tension()));
     text
+}
+
+/// A table e(v_i) in a few words: "e from 3 rows, 0.8 at 0.1 m/s to 0.5 at 2 m/s".
+pub fn table_label(t: &RestitutionTable) -> String {
+    let p = t.points();
+    let (first, last) = (p[0], p[p.len() - 1]);
+    format!(
+        "e from {} (held beyond: {} at {} m/s to {} at {} m/s)",
+        pounding::words::count(p.len(), "row", None),
+        fmt_num(first.1),
+        fmt_num(first.0),
+        fmt_num(last.1),
+        fmt_num(last.0)
+    )
 }
 
 /// Adds the damping parameter by its name (for papi: alpha and the factors chi, chi_r).
@@ -122,10 +130,15 @@ pub fn describe(rep: &mut Report, s: &ContactModel, p: DampingParameter) {
 }
 
 /// Adds the results of one impact to a report.
-pub fn results(rep: &mut Report, s: &ContactModel, r: &ImpactResult, exact_e: Option<f64>) {
-    // An elastic model is asked for no e.
-    if let Some(e) = s.asked_restitution() {
-        rep.add("e_pre", num(e), "");
+pub fn results(
+    rep: &mut Report,
+    s: &ContactModel,
+    (r, v_i): (&ImpactResult, f64),
+    exact_e: Option<f64>,
+) {
+    // An elastic model is asked for no e; a table or a damping constant asks e(v_i) of this impact.
+    if let Some(asked) = s.asked() {
+        rep.add("e_pre", num(asked.at(v_i)), "");
     }
     rep.add("e_post", num(r.e_post), "")
         .add("e_post_exact", exact_e.map_or(Value::Null, num), "")

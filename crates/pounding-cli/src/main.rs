@@ -12,6 +12,7 @@ mod plot;
 mod progress;
 mod records;
 mod report;
+mod restitution;
 mod run_data;
 mod scenario;
 

@@ -88,6 +88,8 @@ pub struct ImpactData {
     pub time: f64,
     /// Relative velocity at touch, m/s.
     pub v_i: f64,
+    /// The e its law was built to deliver between free bodies (`None`: an elastic law, or an older folder).
+    pub e_asked: Option<f64>,
     /// Delivered e, if the impact ended.
     pub e_post: Option<f64>,
     /// Largest force, N.
@@ -175,6 +177,7 @@ impl RunData {
                     floors: (r.floor_left.unwrap_or(0), r.floor_right.unwrap_or(0)),
                     time: r.time_s,
                     v_i: r.v_i_m_per_s,
+                    e_asked: r.e_asked,
                     e_post: r.e_post,
                     peak_force: r.peak_force_n,
                     time_of_peak_force: r.time_of_peak_force_s,

@@ -3153,3 +3153,216 @@ fn a_restrainer_opens_as_its_joint_does_and_pulls_hardest_there() {
         }
     }
 }
+
+/// Issue 24: e against the impact velocity. A scenario's table is read at each impact's v_i (impacts.csv's
+/// e_asked, against the table interpolated here); a one-row table runs exactly as that constant e; a
+/// damping constant runs the Hunt–Crossley family; bad tables and keys get one line naming the key; the
+/// command line reads a table from a file.
+#[test]
+fn restitution_tables_and_damping_constants_run_and_refuse_what_they_cannot() {
+    let dir = tmp("e-table");
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let with = |name: &str, e_line: &str| {
+        let path = dir.join(name);
+        let text = base
+            .lines()
+            .map(|l| if l.starts_with("e = ") { e_line } else { l })
+            .collect::<Vec<_>>()
+            .join("\n");
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let run = |scenario: &std::path::Path, out: &str| {
+        let out = dir.join(out);
+        let o = pounding(&[
+            "run",
+            scenario.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        out
+    };
+    let table = run(
+        &with(
+            "table.toml",
+            "e = { table = [[0.1, 0.8], [0.5, 0.65], [2.0, 0.5]] }",
+        ),
+        "table",
+    );
+    let text = std::fs::read_to_string(table.join("impacts.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).unwrap();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert!(rows.len() > 5);
+    let interpolated = |v: f64| -> f64 {
+        if v <= 0.1 {
+            0.8
+        } else if v <= 0.5 {
+            0.8 + (0.65 - 0.8) * (v - 0.1) / 0.4
+        } else if v <= 2.0 {
+            0.65 + (0.5 - 0.65) * (v - 0.5) / 1.5
+        } else {
+            0.5
+        }
+    };
+    let mut spread = (f64::INFINITY, 0.0f64);
+    for r in &rows {
+        let v: f64 = r[col("v_i_m_per_s")].parse().unwrap();
+        let asked: f64 = r[col("e_asked")].parse().unwrap();
+        assert!((asked - interpolated(v)).abs() < 1e-12, "v {v}: {asked}");
+        spread = (spread.0.min(asked), spread.1.max(asked));
+    }
+    assert!(
+        spread.1 - spread.0 > 0.05,
+        "the impacts asked different e: {spread:?}"
+    );
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(table.join("summary.json")).unwrap())
+            .unwrap();
+    // The site's law is flattened into it.
+    let law = &s["sites"][0];
+    assert_eq!(law["e_table"][1], serde_json::json!([0.5, 0.65]));
+    assert!(law.get("e").is_none());
+
+    // One row: the same run as the constant e, to the last bit.
+    let one = run(&with("one.toml", "e = { table = [[1.0, 0.65]] }"), "one");
+    let constant = run(&with("constant.toml", "e = 0.65"), "constant");
+    for file in ["impacts.csv", "response.csv", "energy.csv"] {
+        let (a, b) = (
+            std::fs::read(one.join(file)).unwrap(),
+            std::fs::read(constant.join(file)).unwrap(),
+        );
+        assert!(a == b, "{file} differs");
+    }
+
+    // A damping constant on a Hunt–Crossley model: each impact asks e(c v_i).
+    let hc = base
+        .replace("model = \"papi\"", "model = \"hunt-crossley\"")
+        .replace("stiffness_unit = \"N/m\"", "stiffness_unit = \"N/m^1.5\"");
+    let hc_with = |name: &str, line: &str| {
+        let path = dir.join(name);
+        let text = hc
+            .lines()
+            .map(|l| if l.starts_with("e = ") { line } else { l })
+            .collect::<Vec<_>>()
+            .join("\n");
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let dk = run(&hc_with("dk.toml", "damping_constant = 0.3"), "dk");
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(dk.join("summary.json")).unwrap()).unwrap();
+    let p = &s["sites"][0]["damping_parameter"];
+    assert_eq!(
+        (p["name"].as_str(), p["value"].as_f64()),
+        (Some("damping_constant"), Some(0.3))
+    );
+
+    // Refusals: one line, exit 2, naming the key.
+    for (file, text, key) in [
+        (
+            "unsorted.toml",
+            with("u.toml", "e = { table = [[0.5, 0.6], [0.2, 0.7]] }"),
+            "e.table = row 2 [0.2, 0.7] is not allowed: rows sorted",
+        ),
+        (
+            "range.toml",
+            with("r.toml", "e = { table = [[0.5, 1.2]] }"),
+            "e.table = row 1 [0.5, 1.2] is not allowed: 0 < e <= 1",
+        ),
+        (
+            "negative.toml",
+            hc_with("n.toml", "damping_constant = -0.3"),
+            "damping_constant = -0.3 is not allowed",
+        ),
+        (
+            "both.toml",
+            hc_with("b.toml", "e = 0.6\ndamping_constant = 0.3"),
+            "damping_constant = 0.3 is not allowed beside e",
+        ),
+        (
+            "papi.toml",
+            with("p.toml", "damping_constant = 0.3"),
+            "not papi",
+        ),
+    ] {
+        let o = pounding(&[
+            "run",
+            text.to_str().unwrap(),
+            "--out",
+            dir.join(file).to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        assert_eq!(o.status.code(), Some(2), "{file}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{file}: {err}");
+        assert!(err.contains(key), "{file}: {err}");
+        assert!(!dir.join(file).exists(), "{file}: nothing written");
+    }
+
+    // The command line: --e-table FILE, read with a header and comments; e_pre is e at the impact's v.
+    let csv = dir.join("e.csv");
+    std::fs::write(
+        &csv,
+        "v_i_m_per_s,e\n# Jankowski-like fall\n0.1, 0.8\n0.5 0.65\n2.0,0.5\n",
+    )
+    .unwrap();
+    let v = json(&[
+        "impact",
+        "--model",
+        "hertzdamp",
+        "--e-table",
+        csv.to_str().unwrap(),
+        "--v",
+        "1.25",
+    ]);
+    assert!((f(&v, "e_pre") - 0.575).abs() < 1e-12);
+    assert!((f(&v, "e_post") - 0.575).abs() < 1e-8);
+    std::fs::write(&csv, "0.5,0.6\n0.2,0.7\n").unwrap();
+    let err = one_line_error(&[
+        "impact",
+        "--model",
+        "hertzdamp",
+        "--e-table",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(err.contains("--e-table") && err.contains("row 2"), "{err}");
+    std::fs::write(&csv, "0.1,0.8\n0.5\n").unwrap();
+    let err = one_line_error(&[
+        "impact",
+        "--model",
+        "hertzdamp",
+        "--e-table",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(err.contains("line 2"), "{err}");
+    let o = pounding(&[
+        "impact",
+        "--model",
+        "hertzdamp",
+        "--e-table",
+        dir.join("absent.csv").to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = one_line_error(&[
+        "impact",
+        "--model",
+        "hunt-crossley",
+        "--e",
+        "0.6",
+        "--damping-constant",
+        "0.3",
+    ]);
+    assert!(err.contains("not allowed together"), "{err}");
+    let v = json(&[
+        "impact",
+        "--model",
+        "flores",
+        "--damping-constant",
+        "0.3",
+        "--v",
+        "2",
+    ]);
+    assert!((f(&v, "e_post") - 0.711950).abs() < 1e-6);
+}

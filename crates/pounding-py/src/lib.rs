@@ -103,8 +103,8 @@ fn matrix<'py>(py: Python<'py>, cols: &[Vec<f64>], n: usize) -> PyResult<Bound<'
     Ok(d)
 }
 
-/// The impacts as columns: the rows of impacts.csv ([`ImpactRow`]) turned into lists (`e_post` NaN where
-/// the impact gave none, the floor 0 on a wall's side).
+/// The impacts as columns: the rows of impacts.csv ([`ImpactRow`]) turned into lists (`e_asked` and `e_post`
+/// NaN where the impact has none, the floor 0 on a wall's side).
 fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'py, PyDict>> {
     let rows = ImpactRow::all(s, r);
     let d = PyDict::new(py);
@@ -124,6 +124,7 @@ fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'p
         rows.iter().map(|i| i.layer.name()).collect::<Vec<_>>(),
     )?;
     d.set_item("v_i_m_per_s", num(|i| i.v_i_m_per_s))?;
+    d.set_item("e_asked", num(|i| i.e_asked.unwrap_or(f64::NAN)))?;
     d.set_item("e_post", num(|i| i.e_post.unwrap_or(f64::NAN)))?;
     d.set_item("peak_force_N", num(|i| i.peak_force_n))?;
     d.set_item("time_of_peak_force_s", num(|i| i.time_of_peak_force_s))?;

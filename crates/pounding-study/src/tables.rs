@@ -66,6 +66,11 @@ pub struct ImpactRow {
     pub layer: Layer,
     /// Relative velocity at touch, m/s.
     pub v_i_m_per_s: f64,
+    /// The coefficient of restitution its law was built to deliver between two free bodies: the contact's
+    /// `e`, its table read at `v_i`, or its damping constant's `e` at `v_i` (`v_i` floored at the smallest
+    /// impact velocity, as the law was); blank for an elastic law (and in folders written before it).
+    #[serde(default)]
+    pub e_asked: Option<f64>,
     /// Delivered coefficient of restitution `-v_out / v_i` (blank if the impact had not ended, or rested).
     pub e_post: Option<f64>,
     /// Largest contact force, N.
@@ -94,6 +99,12 @@ impl ImpactRow {
             .map(|i| {
                 let site = &s.sites()[i.site];
                 let level = site.levels[i.level];
+                // The law of this impact: the bumper's layer, or the site's own (behind a consumed bumper too).
+                let law = match (i.layer, &site.bumper) {
+                    (Layer::Bumper, Some(b)) => b.contact.spec(),
+                    _ => site.contact.spec(),
+                };
+                let v_law = i.v_i.max(s.min_impact_velocity());
                 ImpactRow {
                     time_s: i.time,
                     contact: site.name.clone(),
@@ -101,6 +112,7 @@ impl ImpactRow {
                     floor_right: level.right,
                     layer: i.layer,
                     v_i_m_per_s: i.v_i,
+                    e_asked: law.asked().map(|r| r.at(v_law)),
                     e_post: i.e_post,
                     peak_force_n: i.peak_force,
                     time_of_peak_force_s: i.time_of_peak_force,
@@ -267,6 +279,7 @@ impl Table for ImpactRow {
         "floor_right",
         "layer",
         "v_i_m_per_s",
+        "e_asked",
         "e_post",
         "peak_force_N",
         "time_of_peak_force_s",

@@ -42,16 +42,23 @@ pub fn exact_xi(e: f64, n: f64) -> Result<f64, Error> {
 impl ContactModel {
     /// Fixes the damping parameter, calibrating it where asked. Calibration is done once here: the
     /// parameter is dimensionless and the same for every impact (except `impact-material` with a given
-    /// `d_m`, which is calibrated per impact in [`PreparedContact::law`]).
+    /// `d_m` and a table `e(v_i)`, calibrated per impact in [`PreparedContact::law`]: Jankowski's law then
+    /// integrates impacts at each touch).
     pub fn prepare(&self) -> Result<PreparedContact, Error> {
         let parameter = if self.calibrated_per_impact() {
             None
         } else {
             Some(match self.closed_form_parameter(None)? {
                 Some(p) => p,
-                None => DampingParameter::Xi(exact_xi(self.restitution(), self.exponent())?),
+                None => {
+                    DampingParameter::Xi(exact_xi(self.restitution().at(0.0), self.exponent())?)
+                }
             })
         };
-        Ok(PreparedContact::new(self.clone(), parameter))
+        Ok(PreparedContact::new(
+            self.clone(),
+            parameter,
+            Some(exact_xi),
+        ))
     }
 }

@@ -80,7 +80,7 @@ pub fn impact(a: &ImpactArgs) -> Result<(), CliError> {
         )
         .add("v", num(b.v), "m/s")
         .add("effective_mass", num(setup.mass), "kg");
-    results(&mut rep, &s, &r, exact_e);
+    results(&mut rep, &s, (&r, setup.v_i), exact_e);
     rep.add("velocity_1_after", num(v1), "m/s")
         .add("velocity_2_after", num(v2), "m/s");
     let inputs = bodies_text(&a.bodies);
@@ -158,7 +158,7 @@ pub fn drop(a: &DropArgs) -> Result<(), CliError> {
         .add("mass", num(setup.mass), "kg")
         .add("hertz_stiffness", num(drop.hertz_stiffness()), "N/m^1.5")
         .add("v_i", num(setup.v_i), "m/s");
-    results(&mut rep, &s, &r, None);
+    results(&mut rep, &s, (&r, setup.v_i), None);
     let inputs = format!(
         "ball R = {} m, E = {} Pa, h = {} m, v_i = {} m/s",
         fmt_num(a.radius),

@@ -159,6 +159,7 @@ fn site_row(c: &SiteSummary) -> Vec<String> {
         DampingSummary::Alpha { value } => format!("alpha = {}", n(value)),
         DampingSummary::Xi { value } => format!("xi = {}", n(value)),
         DampingSummary::EDesign { value } => format!("e_design = {}", n(value)),
+        DampingSummary::DampingConstant { value } => format!("D/K = {} s/m", n(value)),
     };
     let seat = match (c.seat, c.unseated) {
         (Some(x), Some(true)) => format!("{}: UNSEATED", mm(x)),

@@ -174,7 +174,8 @@ class Result:
     walls alike, each with its ``kind``), ``impacts`` (columns as numpy arrays: ``time_s``, ``contact`` (the
     site's name: a contact ``"left|right"`` or a wall's name), ``floor_left``, ``floor_right`` (0 on a
     wall's side), ``layer`` (``direct``, ``bumper``, or ``consumed``: the hard law behind a consumed bumper),
-    ``v_i_m_per_s``, ``e_post`` (NaN where an impact gave none), ``peak_force_N``, ``time_of_peak_force_s``,
+    ``v_i_m_per_s``, ``e_asked`` (the e its law was built to deliver between free bodies: the contact's e, or
+    its table or damping constant at v_i; NaN for an elastic law), ``e_post`` (NaN where an impact gave none), ``peak_force_N``, ``time_of_peak_force_s``,
     ``duration_s``, ``dissipated_energy_J``, ``max_penetration_m``, ``ended``, ``resting``) and
     ``histories`` (a :class:`Histories`, or None for a run without them)."""
 

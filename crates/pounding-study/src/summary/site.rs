@@ -3,7 +3,7 @@
 use pounding::analysis::{
     Bumper, ContactSite, Level, Results, Scenario, Side, SiteKind, SiteResponse,
 };
-use pounding::contact::{DampingParameter, Model, PreparedContact};
+use pounding::contact::{DampingParameter, Model, PreparedContact, Restitution};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -51,7 +51,7 @@ impl From<Level> for LevelSummary {
 pub enum DampingSummary {
     /// An elastic law: no damping.
     None,
-    /// Calibrated anew at every impact (`impact-material` with a given `max_penetration`).
+    /// Calibrated anew at every impact (`impact-material` with a given `max_penetration`, a table `e(v_i)`).
     PerImpact,
     /// Damping ratio of a linear dashpot, `c = 2 zeta sqrt(k m)`.
     Zeta {
@@ -79,6 +79,12 @@ pub enum DampingSummary {
         /// Its value.
         value: f64,
     },
+    /// A material damping constant D/K of the Hunt–Crossley law, s/m (the one value not dimensionless).
+    #[serde(rename = "damping_constant")]
+    DampingConstant {
+        /// Its value, s/m.
+        value: f64,
+    },
 }
 
 impl DampingSummary {
@@ -92,6 +98,9 @@ impl DampingSummary {
             Some(DampingParameter::Papi { alpha, .. }) => DampingSummary::Alpha { value: alpha },
             Some(DampingParameter::Xi(value)) => DampingSummary::Xi { value },
             Some(DampingParameter::EDesign(value)) => DampingSummary::EDesign { value },
+            Some(DampingParameter::DampingConstant(value)) => {
+                DampingSummary::DampingConstant { value }
+            }
         }
     }
 }
@@ -105,6 +114,9 @@ pub struct ContactLawSummary {
     /// hertz), which delivers 1.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub e: Option<f64>,
+    /// The table `e(v_i)` asked of it instead, rows `[v_i (m/s), e]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub e_table: Option<Vec<[f64; 2]>>,
     /// Stiffness, N/m^exponent.
     pub stiffness: f64,
     /// Exponent of the force law (dimensionless).
@@ -120,6 +132,12 @@ impl ContactLawSummary {
         Self {
             model: spec.model(),
             e: spec.asked_restitution(),
+            e_table: match spec.asked() {
+                Some(Restitution::Table(t)) => {
+                    Some(t.points().iter().map(|p| [p.0, p.1]).collect())
+                }
+                _ => None,
+            },
             stiffness: spec.stiffness(),
             exponent: spec.exponent(),
             damping_parameter: DampingSummary::of(contact.parameter()),

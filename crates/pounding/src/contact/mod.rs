@@ -23,10 +23,12 @@ pub mod exact;
 mod law;
 mod model;
 mod options;
+mod restitution;
 
 pub use law::{ForceLaw, Phase, Turn};
 pub use model::{Family, Formula, Model, ModelInfo, MODELS};
 pub use options::{ContactOptions, OptionError};
+pub use restitution::{material_e, Restitution, RestitutionTable};
 
 use crate::error::check;
 use crate::Error;
@@ -104,6 +106,9 @@ pub enum DampingParameter {
     Xi(f64),
     /// The `e` put into the bilinear loop's dissipated-energy formula.
     EDesign(f64),
+    /// A material damping constant `c = D/K`, s/m (not dimensionless): the Hunt–Crossley law
+    /// `F = k d^n (1 + c v)`, whose factor `chi = c v_i` grows with the impact velocity.
+    DampingConstant(f64),
 }
 
 impl DampingParameter {
@@ -116,6 +121,7 @@ impl DampingParameter {
             DampingParameter::Papi { alpha, .. } => Some(("alpha", alpha)),
             DampingParameter::Xi(x) => Some(("xi", x)),
             DampingParameter::EDesign(e) => Some(("e_design", e)),
+            DampingParameter::DampingConstant(c) => Some(("damping_constant", c)),
         }
     }
 }
@@ -126,7 +132,7 @@ pub struct ContactModel {
     model: Model,
     k: f64,
     n: f64,
-    e: f64,
+    restitution: Restitution,
     damping: Damping,
     alpha: AlphaRule,
     reading: Reading,
@@ -154,7 +160,7 @@ impl ContactModel {
             model,
             k: check("k", k, k > 0.0, "k > 0 (N/m^n)")?,
             n: info.default_n,
-            e: check("e", e, e > 0.0 && e <= 1.0, "0 < e <= 1")?,
+            restitution: Restitution::Constant(check("e", e, e > 0.0 && e <= 1.0, "0 < e <= 1")?),
             damping: d.damping,
             alpha: AlphaRule::Calibrate,
             reading: d.reading,
@@ -194,6 +200,56 @@ impl ContactModel {
             )?;
         }
         self.alpha = alpha;
+        Ok(self)
+    }
+
+    /// Asks for `r` instead of one `e`: a table `e(v_i)` (a damped model), or a material damping constant (a
+    /// model of the Hunt–Crossley family, [`Formula::Chi`], whose laws all become `F = k d^n (1 + c v)`).
+    pub fn with_restitution(mut self, r: Restitution) -> Result<Self, Error> {
+        let info = self.model.info();
+        let refuse = |name: &'static str, value: String, allowed: String| {
+            Err(Error::Choice {
+                name,
+                value,
+                allowed,
+            })
+        };
+        match &r {
+            Restitution::Constant(e) => {
+                check("e", *e, *e > 0.0 && *e <= 1.0, "0 < e <= 1")?;
+            }
+            Restitution::Table(t) if info.parameter.is_none() => {
+                return refuse(
+                    "e.table",
+                    crate::words::count(t.points().len(), "row", None),
+                    format!(
+                        "only with a damped model, not {} (elastic: it delivers e = 1)",
+                        info.name
+                    ),
+                )
+            }
+            Restitution::Table(_) => {}
+            Restitution::DampingConstant(c) => {
+                check(
+                    "damping_constant",
+                    *c,
+                    *c >= 0.0,
+                    "damping_constant >= 0 (s/m)",
+                )?;
+                if !matches!(info.formula, Formula::Chi(_)) {
+                    return refuse(
+                        "damping_constant",
+                        crate::words::number(*c),
+                        format!(
+                            "only with a model of the Hunt-Crossley family (ye, hunt-crossley, herbert-mcwhannell, \
+                             lee-wang, lankarani-nikravesh, gonthier, zhiying-qishao, flores, hertzdamp), not {}",
+                            info.name
+                        ),
+                    );
+                }
+            }
+        }
+        self.restitution = r;
         Ok(self)
     }
 
@@ -239,14 +295,19 @@ impl ContactModel {
     pub fn exponent(&self) -> f64 {
         self.n
     }
-    /// Requested coefficient of restitution `e_pre`.
-    pub fn restitution(&self) -> f64 {
-        self.e
+    /// What the contact is asked to deliver: one `e`, a table `e(v_i)` or a material damping constant.
+    pub fn restitution(&self) -> &Restitution {
+        &self.restitution
     }
-    /// The coefficient of restitution this contact is built to deliver, `e_pre`; `None` for an elastic
-    /// model (hooke, hertz), which has no damping to calibrate and delivers 1 whatever `e` it was given.
+    /// The one coefficient of restitution this contact is built to deliver, `e_pre`; `None` for an elastic
+    /// model (hooke, hertz), which has no damping to calibrate and delivers 1 whatever `e` it was given,
+    /// and for a table or a damping constant ([`ContactModel::asked`]).
     pub fn asked_restitution(&self) -> Option<f64> {
-        self.model.info().parameter.map(|_| self.e)
+        self.asked().and_then(Restitution::constant)
+    }
+    /// What a damped contact is asked to deliver; `None` for an elastic model.
+    pub fn asked(&self) -> Option<&Restitution> {
+        self.model.info().parameter.map(|_| &self.restitution)
     }
     /// Damping choice.
     pub fn damping(&self) -> Damping {
@@ -268,9 +329,11 @@ impl ContactModel {
     /// Whether the damping parameter is calibrated per impact (`impact-material` with exact damping and a
     /// given `d_m`: the ratio of `d_m` to each impact's elastic penetration changes the calibration).
     pub(crate) fn calibrated_per_impact(&self) -> bool {
-        self.model == Model::ImpactMaterial
+        let d_m = self.model == Model::ImpactMaterial
             && self.damping == Damping::Exact
-            && self.max_penetration.is_some()
+            && self.max_penetration.is_some();
+        // A table asks each impact its own e.
+        d_m || (matches!(self.restitution, Restitution::Table(_)) && self.model.is_damped())
     }
 
     /// The damping parameter from its formula or a closed-form calibration; `impact` gives `(m, v_i)` for
@@ -280,7 +343,18 @@ impl ContactModel {
         &self,
         impact: Option<(f64, f64)>,
     ) -> Result<Option<DampingParameter>, Error> {
-        let e = self.e;
+        let e = match (&self.restitution, impact) {
+            (Restitution::Constant(e), _) => *e,
+            (Restitution::Table(t), Some((_, v_i))) => t.at(v_i),
+            // A table is read per impact ([`ContactModel::calibrated_per_impact`]); before one, at rest.
+            (Restitution::Table(t), None) => t.at(0.0),
+            (Restitution::DampingConstant(c), _) => {
+                return Ok(Some(match self.model.info().formula {
+                    Formula::None => DampingParameter::None,
+                    _ => DampingParameter::DampingConstant(*c),
+                }))
+            }
+        };
         let exact = self.damping == Damping::Exact;
         Ok(Some(match self.model.info().formula {
             Formula::None => DampingParameter::None,
@@ -348,6 +422,14 @@ impl ContactModel {
                 chi_r: chi,
                 v_i,
             },
+            // F = k d^n (1 + c v) is the normalised law with chi = c v_i.
+            DampingParameter::DampingConstant(c) => ForceLaw::HuntCrossley {
+                k,
+                n,
+                chi: c * v_i,
+                chi_r: c * v_i,
+                v_i,
+            },
             DampingParameter::Papi { chi, chi_r, .. } => ForceLaw::HuntCrossley {
                 k,
                 n,
@@ -413,17 +495,31 @@ pub fn bilinear_law(k: f64, n: f64, e_d: f64, a: f64, d_m: f64) -> BilinearLoop 
     }
 }
 
+/// Jankowski's exact damping ratio `xi` for `(e, n)`, found on integrated impacts
+/// ([`crate::calibration::exact_xi`]); handed to a prepared contact that needs it per impact.
+pub(crate) type XiCalibration = fn(f64, f64) -> Result<f64, Error>;
+
 /// A [`ContactModel`] with its damping parameter fixed.
 #[derive(Clone, Debug)]
 pub struct PreparedContact {
     spec: ContactModel,
     parameter: Option<DampingParameter>,
+    xi: Option<XiCalibration>,
 }
 
 impl PreparedContact {
-    /// A prepared contact of `spec` with its damping `parameter` (`None`: calibrated per impact).
-    pub(crate) fn new(spec: ContactModel, parameter: Option<DampingParameter>) -> Self {
-        Self { spec, parameter }
+    /// A prepared contact of `spec` with its damping `parameter` (`None`: calibrated per impact, with `xi`
+    /// where that needs integrated impacts).
+    pub(crate) fn new(
+        spec: ContactModel,
+        parameter: Option<DampingParameter>,
+        xi: Option<XiCalibration>,
+    ) -> Self {
+        Self {
+            spec,
+            parameter,
+            xi,
+        }
     }
 
     /// The specification.
@@ -441,14 +537,18 @@ impl PreparedContact {
     pub fn law(&self, m: f64, v_i: f64) -> Result<(ForceLaw, DampingParameter), Error> {
         let p = match self.parameter {
             Some(p) => p,
-            None => self
-                .spec
-                .closed_form_parameter(Some((m, v_i)))?
-                .ok_or(Error::Calibration {
-                    what: "damping",
-                    e: self.spec.e,
-                    reason: "a law calibrated per impact has a closed form".into(),
-                })?,
+            None => match self.spec.closed_form_parameter(Some((m, v_i)))? {
+                Some(p) => p,
+                None => {
+                    let e = self.spec.restitution.at(v_i);
+                    let xi = self.xi.ok_or(Error::Calibration {
+                        what: "damping",
+                        e,
+                        reason: "no calibration was prepared for this law".into(),
+                    })?;
+                    DampingParameter::Xi(xi(e, self.spec.n)?)
+                }
+            },
         };
         Ok((self.spec.law_with(p, m, v_i), p))
     }

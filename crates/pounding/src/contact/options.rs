@@ -1,7 +1,7 @@
 //! The options that choose and tune a contact model, as a scenario file or a command line gives them, with
 //! the rules that tie them together (an option that applies to one model only, options that conflict).
 
-use super::{AlphaRule, ContactModel, Damping, Model, Reading, Tension};
+use super::{AlphaRule, ContactModel, Damping, Model, Reading, Restitution, Tension};
 use crate::Error;
 
 /// A contact model's options, before they are checked against each other.
@@ -9,8 +9,9 @@ use crate::Error;
 pub struct ContactOptions {
     /// The model.
     pub model: Model,
-    /// Requested coefficient of restitution `e_pre`, 0 < e <= 1 (dimensionless).
-    pub e: f64,
+    /// What the contact is to deliver: `e_pre` (0 < e <= 1, dimensionless), a table `e(v_i)`, or a
+    /// material damping constant (s/m).
+    pub e: Restitution,
     /// Exponent `n` of the force law (dimensionless); `None` for the model's own.
     pub exponent: Option<f64>,
     /// The published damping formula, or the exact value that delivers `e`.
@@ -36,7 +37,7 @@ impl Default for ContactOptions {
     fn default() -> Self {
         ContactOptions {
             model: Model::Papi,
-            e: 0.65,
+            e: Restitution::Constant(0.65),
             exponent: None,
             damping: Damping::Exact,
             alpha: None,
@@ -53,7 +54,7 @@ impl ContactOptions {
     pub fn new(model: Model, e: f64) -> Self {
         ContactOptions {
             model,
-            e,
+            e: Restitution::Constant(e),
             ..Self::default()
         }
     }
@@ -90,7 +91,7 @@ impl ContactOptions {
                 model: self.model,
             });
         }
-        let mut s = ContactModel::new(self.model, k, self.e)?;
+        let mut s = ContactModel::new(self.model, k, 1.0)?.with_restitution(self.e.clone())?;
         if let Some(n) = self.exponent {
             s = s.with_exponent(n)?;
         }

@@ -1,11 +1,13 @@
 //! Validation of a [`ScenarioDoc`] into the library's types, once, with one-line messages that name the key.
 
 use super::{
-    AlphaDoc, BuildingDoc, ContactDoc, Contacts, DeviceDoc, FormatName, GroundMotionDoc,
+    AlphaDoc, BuildingDoc, ContactDoc, Contacts, DeviceDoc, EDoc, FormatName, GroundMotionDoc,
     IsolatorDoc, LawDoc, LawKeys, ScenarioDoc, SchemaError, WallDoc,
 };
 use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, WallSpec};
-use crate::contact::{AlphaRule, AlphaWord, ContactModel, ContactOptions};
+use crate::contact::{
+    AlphaRule, AlphaWord, ContactModel, ContactOptions, Restitution, RestitutionTable,
+};
 use crate::element::{StoreyLaw, StoreyModel};
 use crate::ground_motion::{Builtin, Format, Record, Units};
 use crate::names::Named;
@@ -339,11 +341,34 @@ fn unit_for(n: f64) -> String {
     }
 }
 
-/// The contact options of an entry.
-fn options(c: &LawDoc) -> ContactOptions {
+/// What the entry at `at` asks its contact to deliver: `e` (a number or a table) or `damping_constant`, one of
+/// them; the default `e` without either.
+fn restitution(at: &str, pair: &str, c: &LawDoc) -> Result<Restitution, SchemaError> {
+    let err = |key: &str, e: Error| SchemaError::new(format!("{at}.{key}"), format!("{pair}: {e}"));
+    match (c.e, c.damping_constant) {
+        (Some(_), Some(d)) => Err(SchemaError::new(
+            format!("{at}.damping_constant"),
+            format!(
+                "{pair}: damping_constant = {} is not allowed beside e: give e (the restitution to deliver) or damping_constant (the material's D/K, s/m), not both",
+                crate::words::number(d)
+            ),
+        )),
+        (None, Some(d)) => Restitution::damping_constant(d).map_err(|e| err("damping_constant", e)),
+        (Some(EDoc::Number(e)), None) => Ok(Restitution::Constant(*e)),
+        (Some(EDoc::Table { table }), None) => {
+            RestitutionTable::new(table.iter().map(|r| (r[0], r[1])).collect())
+                .map(Restitution::Table)
+                .map_err(|e| err("e.table", e))
+        }
+        (None, None) => Ok(ContactOptions::default().e),
+    }
+}
+
+/// The contact options of an entry, asked to deliver `e`.
+fn options(c: &LawDoc, e: Restitution) -> ContactOptions {
     ContactOptions {
         model: c.model,
-        e: c.e,
+        e,
         exponent: c.exponent,
         damping: c.damping.unwrap_or(ContactOptions::default().damping),
         alpha: c.alpha.map(|a| match a {
@@ -364,7 +389,7 @@ fn options(c: &LawDoc) -> ContactOptions {
 /// states its unit.
 fn contact_law(at: &str, pair: &str, c: &LawDoc) -> Result<ContactModel, SchemaError> {
     let key = |k: &str| format!("{at}.{k}");
-    let opts = options(c);
+    let opts = options(c, restitution(at, pair, c)?);
     // The stiffness states its unit, so that changing the model cannot silently change what it means.
     let n = opts.exponent();
     match c.stiffness_unit {

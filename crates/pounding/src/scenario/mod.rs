@@ -187,6 +187,23 @@ impl<T: Clone> OneOrMany<T> {
     }
 }
 
+/// A contact's `e`: one number, or a table of `[v_i (m/s), e]` rows (`e = { table = [[0.1, 0.8], [2.0, 0.5]] }`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(
+    untagged,
+    expecting = "expected a number in (0, 1] or { table = [[v_i (m/s), e], ...] }"
+)]
+pub enum EDoc {
+    /// One coefficient of restitution (dimensionless).
+    Number(f64),
+    /// `e` against the impact velocity: rows `[v_i (m/s), e]`, velocities increasing.
+    Table {
+        /// The rows.
+        table: Vec<[f64; 2]>,
+    },
+}
+
 /// `alpha` of `papi`: a number, or `eq8` / `calibrate`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -214,9 +231,14 @@ macro_rules! with_contact_law {
             /// Contact model (default `papi`, [`ContactOptions::default`]).
             #[serde(default = "default_model")]
             pub model: Model,
-            /// Requested coefficient of restitution (dimensionless, default 0.65, [`ContactOptions::default`]).
-            #[serde(default = "default_e")]
-            pub e: f64,
+            /// Requested coefficient of restitution (dimensionless, default 0.65, [`ContactOptions::default`]),
+            /// or a table of it against the impact velocity.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub e: Option<EDoc>,
+            /// Hunt–Crossley family: a material damping constant D/K (s/m) instead of `e`, with the law
+            /// `F = K d^n (1 + (D/K) d')`.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub damping_constant: Option<f64>,
             /// Stiffness, in `stiffness_unit`.
             pub stiffness: f64,
             /// `N/m` or `N/m^n`, matching the model's exponent (required).
@@ -249,7 +271,8 @@ macro_rules! with_contact_law {
             fn law(&self) -> LawDoc<'_> {
                 LawDoc {
                     model: self.model,
-                    e: self.e,
+                    e: self.e.as_ref(),
+                    damping_constant: self.damping_constant,
                     stiffness: self.stiffness,
                     stiffness_unit: self.stiffness_unit.as_deref(),
                     exponent: self.exponent,
@@ -270,8 +293,10 @@ macro_rules! with_contact_law {
 pub struct LawDoc<'a> {
     /// The model.
     pub model: Model,
-    /// Requested coefficient of restitution.
-    pub e: f64,
+    /// Requested coefficient of restitution, or its table.
+    pub e: Option<&'a EDoc>,
+    /// Material damping constant, s/m.
+    pub damping_constant: Option<f64>,
     /// Stiffness, in `stiffness_unit`.
     pub stiffness: f64,
     /// Its unit.
@@ -422,10 +447,6 @@ fn default_damping_ratio() -> f64 {
 fn default_model() -> Model {
     ContactOptions::default().model
 }
-fn default_e() -> f64 {
-    ContactOptions::default().e
-}
-
 crate::named! {
     /// The formats of a record file, by name.
     pub enum FormatName: "format" {

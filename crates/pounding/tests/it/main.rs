@@ -14,6 +14,7 @@ mod integrated;
 mod isolation;
 mod paper;
 mod reliability;
+mod restitution;
 mod separation;
 
 use pounding::contact::{ContactModel, Damping, ForceLaw, Model, Tension};

@@ -3,6 +3,7 @@
 
 use crate::output::{fmt_num, fmt_table};
 use pounding::analysis::{Results, Scenario};
+use pounding::contact::Restitution;
 use pounding::structure::Form;
 
 /// Prints the results `r` of a run of `s`.
@@ -188,7 +189,7 @@ fn sites(s: &Scenario, r: &Results) {
                 (
                     name,
                     lr,
-                    site.contact.spec().asked_restitution(),
+                    site.contact.spec().asked().cloned(),
                     site.seat,
                     site.bumper.is_some(),
                     r.delivered_e(i),
@@ -196,7 +197,15 @@ fn sites(s: &Scenario, r: &Results) {
             });
         let mut spread = false;
         for (name, lr, e_asked, seat, bumper, delivered) in rows {
-            if let (Some((lo, hi)), Some(e)) = (delivered, e_asked) {
+            // A table or a damping constant asks each impact its own e: its column says so (impacts.csv has
+            // each impact's e_asked).
+            let asked = match &e_asked {
+                None => "elastic".to_string(),
+                Some(Restitution::Constant(e)) => fmt_num(*e),
+                Some(Restitution::Table(_)) => "table".to_string(),
+                Some(Restitution::DampingConstant(_)) => "D/K".to_string(),
+            };
+            if let (Some((lo, hi)), Some(e)) = (delivered, e_asked.and_then(|r| r.constant())) {
                 spread |= (lo - e).abs() > 0.01 || (hi - e).abs() > 0.01;
             }
             let range = match delivered {
@@ -222,7 +231,7 @@ fn sites(s: &Scenario, r: &Results) {
                 "{:<20} {:>7}  {:>7}  {:>11}  {:>15}  {:>18}  {:>13}  {:>14}{unseat}{consumed}",
                 name,
                 lr.impacts,
-                e_asked.map_or_else(|| "elastic".to_string(), fmt_num),
+                asked,
                 range,
                 mn(lr.peak_force),
                 mm(lr.max_penetration),

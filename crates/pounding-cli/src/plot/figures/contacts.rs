@@ -5,6 +5,8 @@ use crate::output::{fmt_num, fmt_sig};
 use crate::plot::axis::human;
 use crate::plot::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
 use crate::run_data::RunData;
+use pounding::contact::material_e;
+use pounding_study::summary::DampingSummary;
 
 /// A contact level of a run: one contact element (a floor pair of a contact, or a wall's floor).
 struct Level {
@@ -331,14 +333,17 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
         if mine.is_empty() {
             continue;
         }
-        // The face's law asks its own e: a bumper's, else the site's.
+        // The face's law asks its own e: a bumper's, else the site's; a table or a damping constant asks
+        // each impact its own (impacts.csv's e_asked).
         let asked = match &d.summary.sites[lv.contact].bumper {
             Some(b) => b.law.e,
             None => cd.e,
         };
-        for e in mine.iter().filter_map(|i| i.e_post) {
+        for i in &mine {
+            let Some(e) = i.e_post else { continue };
             ended += 1;
-            above += usize::from(e > asked.unwrap_or(1.0) * (1.0 + 1e-9));
+            let wanted = i.e_asked.or(asked).unwrap_or(1.0);
+            above += usize::from(e > wanted * (1.0 + 1e-9));
             top = top.max(e);
         }
         r.series.push(Series::points(
@@ -351,37 +356,12 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
             },
         ));
     }
-    // The requested e of each contact (one line for contacts given the same e).
-    let mut given: Vec<(f64, Vec<String>)> = Vec::new();
-    // An elastic contact asks none (it delivers 1); a bumper asks its own.
-    for (cd, site) in d.contacts.iter().zip(&d.summary.sites) {
-        let asked = match &site.bumper {
-            Some(b) => (b.law.e, format!("{} bumper", cd.name)),
-            None => (cd.e, cd.name.clone()),
-        };
-        let (Some(e), name) = asked else { continue };
-        match given.iter_mut().find(|g| g.0 == e) {
-            Some(g) => g.1.push(name),
-            None => given.push((e, vec![name])),
-        }
-    }
-    let several = given.len() > 1;
-    for (k, (e, names)) in given.iter().enumerate() {
-        r.series.push(Series {
-            label: if several {
-                format!("requested e = {} ({})", fmt_num(*e), names.join(", "))
-            } else {
-                format!("requested e = {}", fmt_num(*e))
-            },
-            mark: Mark::HLine(*e),
-            // Two contacts given different e: dashes, then dots.
-            style: Style {
-                width: 1.4,
-                dash: [Dash::Dashed, Dash::Dotted][k % 2],
-                ..Style::reference()
-            },
-        });
-    }
+    let v_max = d
+        .impacts
+        .iter()
+        .filter(|i| i.e_post.is_some())
+        .fold(0.0f64, |a, i| a.max(i.v_i));
+    r.series.extend(requested(d, v_max));
     (ended > 0).then(|| {
         let mut notes = Vec::new();
         if above > 0 {
@@ -410,6 +390,70 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
             ..Figure::default()
         }
     })
+}
+
+/// The e each contact asks (a bumper its own): one dashed line for contacts given the same e, and the curve
+/// `e(v_i)` of a table (held beyond its rows) or of a damping constant, up to `v_max` (m/s).
+fn requested(d: &RunData, v_max: f64) -> Vec<Series> {
+    let mut given: Vec<(f64, Vec<String>)> = Vec::new();
+    let mut curves: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
+    for (cd, site) in d.contacts.iter().zip(&d.summary.sites) {
+        let (law, name) = match &site.bumper {
+            Some(b) => (&b.law, format!("{} bumper", cd.name)),
+            None => (&site.law, cd.name.clone()),
+        };
+        if let Some(rows) = &law.e_table {
+            let top = v_max.max(rows.last().map_or(0.0, |r| r[0]));
+            let first = rows.first().map_or(1.0, |r| r[1]);
+            let last = rows.last().map_or(1.0, |r| r[1]);
+            let v = std::iter::once(0.0)
+                .chain(rows.iter().map(|r| r[0]))
+                .chain([top]);
+            let e = std::iter::once(first)
+                .chain(rows.iter().map(|r| r[1]))
+                .chain([last]);
+            curves.push((
+                format!("requested e(v_i), table ({name})"),
+                v.collect(),
+                e.collect(),
+            ));
+        } else if let DampingSummary::DampingConstant { value: c } = law.damping_parameter {
+            let v: Vec<f64> = (0..=60).map(|k| v_max * f64::from(k) / 60.0).collect();
+            let e = v.iter().map(|v| material_e(c * v)).collect();
+            let label = format!("e(v_i) of D/K = {} s/m ({name})", fmt_num(c));
+            curves.push((label, v, e));
+        } else if let Some(e) = law.e {
+            // An elastic contact asks none (it delivers 1).
+            match given.iter_mut().find(|g| g.0 == e) {
+                Some(g) => g.1.push(name),
+                None => given.push((e, vec![name])),
+            }
+        }
+    }
+    let several = given.len() + curves.len() > 1;
+    let style = |k: usize| Style {
+        width: 1.4,
+        // Several requests: dashes, then dots.
+        dash: [Dash::Dashed, Dash::Dotted][k % 2],
+        ..Style::reference()
+    };
+    let mut out: Vec<Series> = given
+        .iter()
+        .enumerate()
+        .map(|(k, (e, names))| Series {
+            label: if several {
+                format!("requested e = {} ({})", fmt_num(*e), names.join(", "))
+            } else {
+                format!("requested e = {}", fmt_num(*e))
+            },
+            mark: Mark::HLine(*e),
+            style: style(k),
+        })
+        .collect();
+    for (k, (label, v, e)) in curves.into_iter().enumerate() {
+        out.push(Series::line(label, v, e, style(given.len() + k)));
+    }
+    out
 }
 
 /// The force–penetration loops of the strongest impacts (at most [`LOOPS_PER_LEVEL`]) of each contact level,

@@ -1,0 +1,91 @@
+//! What a command-line contact is asked to deliver: `--e`, `--e-table FILE` (e against the impact velocity)
+//! or `--damping-constant` (a Hunt–Crossley material's D/K), one of them.
+
+use crate::error::{input, CliError};
+use crate::output::fmt_num;
+use pounding::contact::{Model, Restitution, RestitutionTable};
+use std::path::Path;
+
+/// The table of `path`: one row per line, `v_i` (m/s) and `e` separated by a comma or spaces; blank lines
+/// and lines from `#` are skipped, and so is a first line that is not numbers (a header).
+pub fn read_e_table(path: &Path) -> Result<RestitutionTable, CliError> {
+    let shown = path.display();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Io(format!("--e-table {shown}: cannot read it: {e}")))?;
+    let mut rows = Vec::new();
+    let mut first = true;
+    for (k, line) in text.lines().enumerate() {
+        let line = line.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let fields: Vec<&str> = line
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|f| !f.is_empty())
+            .collect();
+        let numbers: Vec<Option<f64>> = fields.iter().map(|f| f.parse().ok()).collect();
+        let header = first && numbers.iter().all(Option::is_none);
+        first = false;
+        if header {
+            continue;
+        }
+        match numbers[..] {
+            [Some(v), Some(e)] => rows.push((v, e)),
+            _ => {
+                return Err(input(format!(
+                    "--e-table {shown}: line {} {:?} is not allowed: two numbers, v_i (m/s) and e, separated by a comma or spaces",
+                    k + 1,
+                    cut(line)
+                )))
+            }
+        }
+    }
+    RestitutionTable::new(rows).map_err(|e| input(format!("--e-table {shown}: {e}")))
+}
+
+/// A line of a file, for a message: its first 60 characters.
+fn cut(line: &str) -> String {
+    match line.char_indices().nth(60) {
+        Some((i, _)) => format!("{}...", &line[..i]),
+        None => line.to_string(),
+    }
+}
+
+/// What `model` is asked to deliver from `--e`, `--e-table` and `--damping-constant`: at most one of them;
+/// an elastic model takes none (or `--e 1`), a damped one needs one.
+pub fn asked(
+    model: Model,
+    e: Option<f64>,
+    e_table: Option<&Path>,
+    damping_constant: Option<f64>,
+) -> Result<Restitution, CliError> {
+    let given = usize::from(e.is_some())
+        + usize::from(e_table.is_some())
+        + usize::from(damping_constant.is_some());
+    if given > 1 {
+        return Err(input(
+            "--e, --e-table and --damping-constant are not allowed together: give one (the e to deliver, a table of it against v_i, or a material's D/K)",
+        ));
+    }
+    let name = model.name();
+    if !model.is_damped() {
+        return match (e, e_table, damping_constant) {
+            (Some(e), _, _) if e != 1.0 => Err(input(format!(
+                "--e {} is not allowed with model {name}: it is elastic and delivers e = 1 (leave --e out, or choose a damped model, see pounding models)",
+                fmt_num(e)
+            ))),
+            (_, None, None) => Ok(Restitution::Constant(1.0)),
+            _ => Err(input(format!(
+                "--e-table and --damping-constant are not allowed with model {name}: it is elastic and delivers e = 1"
+            ))),
+        };
+    }
+    match (e, e_table, damping_constant) {
+        (Some(e), _, _) => Ok(Restitution::Constant(e)),
+        (_, Some(path), _) => read_e_table(path).map(Restitution::Table),
+        (_, _, Some(c)) => Ok(Restitution::DampingConstant(c)),
+        (None, None, None) => Err(input(format!(
+            "--e is required by model {name}: the coefficient of restitution it is to deliver, 0 < e <= 1 (or --e-table FILE, or --damping-constant for the Hunt-Crossley family)"
+        ))),
+    }
+}
