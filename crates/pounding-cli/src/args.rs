@@ -466,9 +466,13 @@ pub struct CompareArgs {
     /// Contact models, comma-separated (see `pounding models`).
     #[arg(long, value_delimiter = ',', value_parser = named::<Model>(), required = true)]
     pub models: Vec<Model>,
-    /// Requested coefficient of restitution e_pre, 0 < e <= 1.
-    #[arg(long)]
-    pub e: f64,
+    /// Requested coefficient of restitution e_pre, 0 < e <= 1 (or --e-table).
+    #[arg(long, required_unless_present = "e_table")]
+    pub e: Option<f64>,
+    /// e against the impact velocity: a file of two columns, v_i (m/s) and e; read at --v (the damped models
+    /// are asked that e).
+    #[arg(long, value_name = "FILE", conflicts_with = "e")]
+    pub e_table: Option<std::path::PathBuf>,
     /// Damping: the published formula, or the exact value that delivers e.
     #[arg(long, value_parser = named::<Damping>(), default_value_t = ContactOptions::default().damping)]
     pub damping: Damping,

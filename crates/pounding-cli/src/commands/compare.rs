@@ -20,6 +20,12 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         )));
     }
     let setup = bodies.setup();
+    // The e of this impact: the one given, or the table read at its velocity.
+    let e = match (&a.e_table, a.e) {
+        (Some(path), _) => crate::restitution::read_e_table(path)?.at(setup.v_i),
+        (None, Some(e)) => e,
+        (None, None) => return Err(input("--e or --e-table is required")),
+    };
     let opts = ImpactOptions {
         history: true,
         ..ImpactOptions::default()
@@ -28,7 +34,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     for &model in &a.models {
         let n = model.info().default_n;
         let k = pounding::impact::equivalent_stiffness(a.k, setup.mass, setup.v_i, n);
-        let s = ContactModel::new(model, k, a.e)?.with_damping(a.damping);
+        let s = ContactModel::new(model, k, e)?.with_damping(a.damping);
         let (law, _) = s.prepare()?.law(setup.mass, setup.v_i)?;
         let r = simulate(&law, s.tension(), &setup, &opts)?;
         runs.push((s, r));
@@ -46,7 +52,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         })
         .collect();
     let result = json!({
-        "e_pre": num(a.e), "damping": damping, "k_hertz": num(a.k), "m1": num(a.bodies.m1),
+        "e_pre": num(e), "damping": damping, "k_hertz": num(a.k), "m1": num(a.bodies.m1),
         "m2": if a.bodies.m2.is_finite() { num(a.bodies.m2) } else { Value::Null }, "v": num(a.bodies.v),
         "effective_mass": num(setup.mass),
         "units": {"k": "N/m^n", "k_hertz": "N/m^1.5", "peak_force": "N", "time_of_peak_force": "s",
@@ -60,7 +66,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         println!(
             "One impact: {}, e_pre = {}, damping {damping}; k_h = {} N/m^1.5",
             bodies_text(&a.bodies),
-            fmt_num(a.e),
+            fmt_num(e),
             fmt_num(a.k)
         );
         println!(
@@ -107,7 +113,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         let subtitle = format!(
             "e_pre = {1}, {damping} damping; {0}; k_h = {2} N/m^1.5 (models of n \u{2260} 1.5: the equivalent k)",
             bodies_text(&a.bodies),
-            fmt_num(a.e),
+            fmt_num(e),
             fmt_num(a.k)
         );
         figs = figures::impact(
