@@ -403,12 +403,20 @@ pub struct ModelArgs {
     /// impact-material: yield ratio a = d_y / d_m, 0 < a < 1.
     #[arg(long, default_value_t = ContactOptions::default().yield_ratio)]
     pub yield_ratio: f64,
+    /// thornton: yield pressure p_y, Pa (the largest contact pressure; with the sphere's radius).
+    #[arg(long)]
+    pub yield_pressure: Option<f64>,
 }
 
 impl ModelArgs {
     /// The library's contact options these arguments give.
     /// The options, with what the contact is asked to deliver (`e`, from [`crate::restitution::asked`]).
-    pub fn options(&self, e: pounding::contact::Restitution) -> pounding::contact::ContactOptions {
+    /// `radius` (m) is thornton's spheres' radius, where the command has one.
+    pub fn options(
+        &self,
+        e: pounding::contact::Restitution,
+        radius: Option<f64>,
+    ) -> pounding::contact::ContactOptions {
         pounding::contact::ContactOptions {
             model: self.model,
             e,
@@ -419,6 +427,8 @@ impl ModelArgs {
             tension: self.tension,
             max_penetration: self.max_penetration,
             yield_ratio: self.yield_ratio,
+            radius,
+            yield_pressure: self.yield_pressure,
         }
     }
 }
@@ -445,9 +455,12 @@ pub struct BodiesArgs {
 pub struct ImpactArgs {
     #[command(flatten)]
     pub model: ModelArgs,
-    /// Contact stiffness k, N/m^n.
+    /// Contact stiffness k, N/m^n (thornton: the Hertz stiffness (4/3) E* sqrt(R), N/m^1.5).
     #[arg(long, default_value_t = 1.0e9)]
     pub k: f64,
+    /// thornton: radius R of the spheres, m.
+    #[arg(long)]
+    pub radius: Option<f64>,
     #[command(flatten)]
     pub bodies: BodiesArgs,
     /// Print one JSON object on stdout.
@@ -481,6 +494,12 @@ pub struct CompareArgs {
     /// penetration.
     #[arg(long, default_value_t = 1.0e10)]
     pub k: f64,
+    /// thornton: radius R of the spheres, m (k_h is their Hertz stiffness (4/3) E* sqrt(R)).
+    #[arg(long)]
+    pub radius: Option<f64>,
+    /// thornton: yield pressure p_y, Pa.
+    #[arg(long)]
+    pub yield_pressure: Option<f64>,
     #[command(flatten)]
     pub bodies: BodiesArgs,
     /// Print one JSON object on stdout.

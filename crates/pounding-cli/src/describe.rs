@@ -10,9 +10,9 @@ use pounding::impact::ImpactResult;
 use serde_json::Value;
 
 /// The contact specification of `a` with stiffness `k` (N/m^n).
-pub fn contact(a: &ModelArgs, k: f64) -> Result<ContactModel, CliError> {
+pub fn contact(a: &ModelArgs, k: f64, radius: Option<f64>) -> Result<ContactModel, CliError> {
     let e = crate::restitution::asked(a.model, a.e, a.e_table.as_deref(), a.damping_constant)?;
-    a.options(e).build(k).map_err(|e| match e {
+    a.options(e, radius).build(k).map_err(|e| match e {
         pounding::contact::OptionError::Value(v) => CliError::from(v),
         other => input(other.message(flag)),
     })
@@ -29,11 +29,16 @@ pub fn stiffness_unit(n: f64) -> String {
 
 /// One line describing a contact model and its damping: `papi, k = 2e9 N/m, e = 0.65, ...`.
 pub fn contact_label(s: &ContactModel, p: Option<DampingParameter>) -> String {
-    let asked = match s.asked() {
-        None => "elastic".to_string(),
-        Some(Restitution::Constant(e)) => format!("e = {}", fmt_num(*e)),
-        Some(Restitution::Table(t)) => table_label(t),
-        Some(Restitution::DampingConstant(c)) => {
+    let asked = match (s.asked(), s.sphere()) {
+        (_, Some(sp)) => format!(
+            "elastic-plastic, R = {} m, p_y = {} Pa",
+            fmt_num(sp.radius),
+            fmt_num(sp.yield_pressure)
+        ),
+        (None, None) => "elastic".to_string(),
+        (Some(Restitution::Constant(e)), None) => format!("e = {}", fmt_num(*e)),
+        (Some(Restitution::Table(t)), None) => table_label(t),
+        (Some(Restitution::DampingConstant(c)), None) => {
             format!("damping constant D/K = {} s/m", fmt_num(*c))
         }
     };
@@ -93,7 +98,13 @@ pub fn parameter(rep: &mut Report, p: DampingParameter) {
         }
         other => {
             if let Some((name, v)) = other.named() {
-                rep.add(name, num(v), "");
+                // The dimensional parameters: a material damping constant and a yield pressure.
+                let unit = match other {
+                    DampingParameter::DampingConstant(_) => "s/m",
+                    DampingParameter::Yield(_) => "Pa",
+                    _ => "",
+                };
+                rep.add(name, num(v), unit);
             }
         }
     }

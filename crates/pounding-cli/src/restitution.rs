@@ -68,15 +68,15 @@ pub fn asked(
         ));
     }
     let name = model.name();
-    if !model.is_damped() {
+    if let Some(why) = model.asks_no_e() {
         return match (e, e_table, damping_constant) {
             (Some(e), _, _) if e != 1.0 => Err(input(format!(
-                "--e {} is not allowed with model {name}: it is elastic and delivers e = 1 (leave --e out, or choose a damped model, see pounding models)",
+                "--e {} is not allowed with model {name}: {why} (leave --e out, or choose a damped model, see pounding models)",
                 fmt_num(e)
             ))),
             (_, None, None) => Ok(Restitution::Constant(1.0)),
             _ => Err(input(format!(
-                "--e-table and --damping-constant are not allowed with model {name}: it is elastic and delivers e = 1"
+                "--e-table and --damping-constant are not allowed with model {name}: {why}"
             ))),
         };
     }

@@ -255,7 +255,7 @@ fn table1_reproduces_the_clamped_anagnostopoulos_figure() {
 #[test]
 fn models_lists_every_model() {
     let v = json(&["models"]);
-    assert_eq!(v["models"].as_array().unwrap().len(), 16);
+    assert_eq!(v["models"].as_array().unwrap().len(), 17);
 }
 
 #[test]
@@ -1551,8 +1551,9 @@ fn a_free_body_impact_delivers_the_asked_e_for_every_model_by_default() {
         .iter()
         .map(|m| m["name"].as_str().unwrap().to_string())
         .collect();
-    assert_eq!(names.len(), 16);
-    for name in &names {
+    assert_eq!(names.len(), 17);
+    // thornton asks no e: its loss follows from its yield pressure (its own test below).
+    for name in names.iter().filter(|n| *n != "thornton") {
         let elastic = name == "hooke" || name == "hertz";
         if elastic {
             // Asked no e, an elastic model reports none and delivers 1; asked another, it refuses.
@@ -3365,4 +3366,55 @@ fn restitution_tables_and_damping_constants_run_and_refuse_what_they_cannot() {
         "2",
     ]);
     assert!((f(&v, "e_post") - 0.711950).abs() < 1e-6);
+
+    // Thornton's spheres: radius and yield pressure, required by it and refused by the others; no e asked.
+    let th = base
+        .replace(
+            "model = \"papi\"",
+            "model = \"thornton\"\nradius = 0.5\nyield_pressure = 2.0e8",
+        )
+        .replace("stiffness = 2.0e9", "stiffness = 2.0e10")
+        .replace("stiffness_unit = \"N/m\"", "stiffness_unit = \"N/m^1.5\"");
+    let th_path = dir.join("thornton.toml");
+    std::fs::write(&th_path, &th).unwrap();
+    let out = run(&th_path, "thornton");
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let p = &s["sites"][0]["damping_parameter"];
+    assert_eq!(
+        (p["name"].as_str(), p["value"].as_f64()),
+        (Some("yield_pressure"), Some(2.0e8))
+    );
+    assert!(s["sites"][0]["impacts"].as_u64().unwrap() > 0);
+    for (name, text, says) in [
+        (
+            "no-py",
+            th.replace("yield_pressure = 2.0e8", ""),
+            "yield_pressure is required by model thornton",
+        ),
+        (
+            "papi-radius",
+            base.replace("model = \"papi\"", "model = \"papi\"\nradius = 0.5"),
+            "radius applies to thornton only",
+        ),
+    ] {
+        let path = dir.join(format!("{name}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let o = pounding(&[
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            dir.join(name).to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        assert!(err.contains(says), "{name}: {err}");
+    }
+    let err = one_line_error(&["impact", "--model", "thornton", "--k", "2e10"]);
+    assert!(
+        err.contains("--radius") && err.contains("--yield-pressure"),
+        "{err}"
+    );
+    let err = one_line_error(&["impact", "--model", "papi", "--e", "0.6", "--radius", "0.1"]);
+    assert!(err.contains("thornton only"), "{err}");
 }

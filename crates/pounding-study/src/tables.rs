@@ -12,6 +12,7 @@
 use crate::format::{push_time, Shortest};
 use crate::summary::{RunSummary, SitePlace};
 use pounding::analysis::{Histories, ImpactLoop, Layer, Results, Scenario};
+use pounding::contact::exact;
 use serde::{Deserialize, Serialize};
 use std::io::{Read, Write};
 
@@ -67,8 +68,9 @@ pub struct ImpactRow {
     /// Relative velocity at touch, m/s.
     pub v_i_m_per_s: f64,
     /// The coefficient of restitution its law was built to deliver between two free bodies: the contact's
-    /// `e`, its table read at `v_i`, or its damping constant's `e` at `v_i` (`v_i` floored at the smallest
-    /// impact velocity, as the law was); blank for an elastic law (and in folders written before it).
+    /// `e`, its table read at `v_i`, its damping constant's `e` at `v_i`, or Thornton's spheres' `e` at `v_i`
+    /// and the level's effective mass (`v_i` floored at the smallest impact velocity, as the law was); blank
+    /// for an elastic law (and in folders written before it).
     #[serde(default)]
     pub e_asked: Option<f64>,
     /// Delivered coefficient of restitution `-v_out / v_i` (blank if the impact had not ended, or rested).
@@ -101,10 +103,17 @@ impl ImpactRow {
                 let level = site.levels[i.level];
                 // The law of this impact: the bumper's layer, or the site's own (behind a consumed bumper too).
                 let law = match (i.layer, &site.bumper) {
-                    (Layer::Bumper, Some(b)) => b.contact.spec(),
-                    _ => site.contact.spec(),
+                    (Layer::Bumper, Some(b)) => &b.contact,
+                    _ => &site.contact,
                 };
                 let v_law = i.v_i.max(s.min_impact_velocity());
+                // A law asked no e but not elastic (Thornton's spheres): the e it delivers at this v_i.
+                let own = || {
+                    let m = s.effective_mass(site, &level);
+                    let (l, _) = law.law(m, v_law).ok()?;
+                    exact::e_post(&l, law.spec().tension(), m, v_law)
+                        .filter(|_| law.spec().sphere().is_some())
+                };
                 ImpactRow {
                     time_s: i.time,
                     contact: site.name.clone(),
@@ -112,7 +121,7 @@ impl ImpactRow {
                     floor_right: level.right,
                     layer: i.layer,
                     v_i_m_per_s: i.v_i,
-                    e_asked: law.asked().map(|r| r.at(v_law)),
+                    e_asked: law.spec().asked().map(|r| r.at(v_law)).or_else(own),
                     e_post: i.e_post,
                     peak_force_n: i.peak_force,
                     time_of_peak_force_s: i.time_of_peak_force,

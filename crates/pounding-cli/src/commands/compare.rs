@@ -2,11 +2,11 @@
 
 use crate::args::CompareArgs;
 use crate::describe::bodies_text;
-use crate::error::{input, CliError};
+use crate::error::{flag, input, CliError};
 use crate::files::{check_out, save_out};
 use crate::output::{fmt_num, fmt_sig, num};
 use crate::plot::figures::{self, ForceHistory};
-use pounding::contact::ContactModel;
+use pounding::contact::{ContactOptions, Model, OptionError};
 use pounding::impact::{simulate, ImpactOptions, TwoBodies};
 use serde_json::{json, Value};
 
@@ -30,11 +30,27 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         history: true,
         ..ImpactOptions::default()
     };
+    if (a.radius.is_some() || a.yield_pressure.is_some()) && !a.models.contains(&Model::Thornton) {
+        return Err(input(
+            "--radius and --yield-pressure are not allowed without thornton in --models: they are its spheres'",
+        ));
+    }
     let mut runs = Vec::new();
     for &model in &a.models {
         let n = model.info().default_n;
         let k = pounding::impact::equivalent_stiffness(a.k, setup.mass, setup.v_i, n);
-        let s = ContactModel::new(model, k, e)?.with_damping(a.damping);
+        // Thornton's spheres take the radius and yield pressure; the other models are asked e.
+        let thornton = model == Model::Thornton;
+        let options = ContactOptions {
+            damping: a.damping,
+            radius: a.radius.filter(|_| thornton),
+            yield_pressure: a.yield_pressure.filter(|_| thornton),
+            ..ContactOptions::new(model, e)
+        };
+        let s = options.build(k).map_err(|e| match e {
+            OptionError::Value(v) => CliError::from(v),
+            other => input(other.message(flag)),
+        })?;
         let (law, _) = s.prepare()?.law(setup.mass, setup.v_i)?;
         let r = simulate(&law, s.tension(), &setup, &opts)?;
         runs.push((s, r));

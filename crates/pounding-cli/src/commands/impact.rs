@@ -54,7 +54,7 @@ fn history_file(r: &ImpactResult) -> Vec<(String, Vec<u8>)> {
 pub fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     check_out(&a.out)?;
     let bodies = TwoBodies::new(a.bodies.m1, a.bodies.m2, a.bodies.v)?;
-    let s = contact(&a.model, a.k)?;
+    let s = contact(&a.model, a.k, a.radius)?;
     let setup = bodies.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
     let opts = ImpactOptions {
@@ -80,6 +80,10 @@ pub fn impact(a: &ImpactArgs) -> Result<(), CliError> {
         )
         .add("v", num(b.v), "m/s")
         .add("effective_mass", num(setup.mass), "kg");
+    if let (Some(sp), Some(v_y)) = (s.sphere(), exact::thornton_yield_velocity(&law, setup.mass)) {
+        rep.add("radius", num(sp.radius), "m")
+            .add("yield_velocity", num(v_y), "m/s");
+    }
     results(&mut rep, &s, (&r, setup.v_i), exact_e);
     rep.add("velocity_1_after", num(v1), "m/s")
         .add("velocity_2_after", num(v2), "m/s");
@@ -98,9 +102,9 @@ pub fn impact(a: &ImpactArgs) -> Result<(), CliError> {
 }
 
 pub fn calibrate(a: &CalibrateArgs) -> Result<(), CliError> {
-    if !a.model.is_damped() {
+    if let Some(why) = a.model.asks_no_e() {
         return Err(input(format!(
-            "model {} has no damping to calibrate (elastic: e = 1); choose a damped model",
+            "model {} has no damping to calibrate ({why}); choose a damped model",
             a.model
         )));
     }
@@ -140,6 +144,8 @@ pub fn drop(a: &DropArgs) -> Result<(), CliError> {
     let s = contact(
         &a.model,
         drop.equivalent_stiffness(n.max(f64::MIN_POSITIVE)),
+        // The ball's radius is thornton's sphere radius too.
+        Some(a.radius).filter(|_| a.model.model == pounding::contact::Model::Thornton),
     )?;
     let setup = drop.setup();
     let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;

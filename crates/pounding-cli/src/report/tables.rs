@@ -160,6 +160,9 @@ fn site_row(c: &SiteSummary) -> Vec<String> {
         DampingSummary::Xi { value } => format!("xi = {}", n(value)),
         DampingSummary::EDesign { value } => format!("e_design = {}", n(value)),
         DampingSummary::DampingConstant { value } => format!("D/K = {} s/m", n(value)),
+        DampingSummary::YieldPressure { value, radius } => {
+            format!("p_y = {} Pa, R = {} m", n(value), n(radius))
+        }
     };
     let seat = match (c.seat, c.unseated) {
         (Some(x), Some(true)) => format!("{}: UNSEATED", mm(x)),

@@ -85,6 +85,14 @@ pub enum DampingSummary {
         /// Its value, s/m.
         value: f64,
     },
+    /// Thornton's spheres: no damping, plastic flow at this yield pressure, Pa.
+    #[serde(rename = "yield_pressure")]
+    YieldPressure {
+        /// Yield pressure, Pa.
+        value: f64,
+        /// The spheres' radius, m.
+        radius: f64,
+    },
 }
 
 impl DampingSummary {
@@ -101,6 +109,10 @@ impl DampingSummary {
             Some(DampingParameter::DampingConstant(value)) => {
                 DampingSummary::DampingConstant { value }
             }
+            Some(DampingParameter::Yield(s)) => DampingSummary::YieldPressure {
+                value: s.yield_pressure,
+                radius: s.radius,
+            },
         }
     }
 }

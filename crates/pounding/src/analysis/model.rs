@@ -88,13 +88,7 @@ impl<'a> Model<'a> {
         for (si, site) in s.sites().iter().enumerate() {
             for (li, level) in site.levels.iter().enumerate() {
                 let ends = site_ends(site, level, &offsets);
-                // Against a rigid wall the effective mass is the floor's own.
-                let mass = |e: End| e.dof().map(|i| dofs[i].mass);
-                let m_eff = match (mass(ends.0), mass(ends.1)) {
-                    (Some(ml), Some(mr)) => ml * mr / (ml + mr),
-                    (Some(m), None) | (None, Some(m)) => m,
-                    (None, None) => 0.0,
-                };
+                let m_eff = s.effective_mass(site, level);
                 let mut push = |layer, gap, contact: &crate::contact::PreparedContact| {
                     contacts.push(ContactRef {
                         element: elements.len(),

@@ -206,6 +206,26 @@ impl Scenario {
             SiteKind::Between { left, .. } => left,
         }
     }
+    /// The effective mass (kg) of the contact element at `level` of `site`: `m_L m_R / (m_L + m_R)` of its two
+    /// floors, or the floor's own mass against a rigid wall.
+    pub fn effective_mass(&self, site: &ContactSite, level: &super::Level) -> f64 {
+        let mass =
+            |b: usize, f: Option<usize>| self.buildings[b].structure.masses()[f.unwrap_or(1) - 1];
+        match site.kind {
+            SiteKind::Between { left, right } => {
+                let (ml, mr) = (mass(left, level.left), mass(right, level.right));
+                ml * mr / (ml + mr)
+            }
+            SiteKind::Wall {
+                building,
+                side: super::Side::Right,
+            } => mass(building, level.left),
+            SiteKind::Wall {
+                building,
+                side: super::Side::Left,
+            } => mass(building, level.right),
+        }
+    }
     /// The names of what device `d` joins: two buildings, or a building and a wall.
     pub fn device_between(&self, d: &Device) -> [String; 2] {
         let name = |b: usize| self.buildings[b].name.clone();

@@ -171,6 +171,7 @@ pub fn e_post(law: &ForceLaw, tension: Tension, m: f64, v_i: f64) -> Option<f64>
         ForceLaw::Bilinear { k1, k2, d_y } => {
             Some(bilinear_e_post(k1, k2, d_y, 0.5 * m * v_i * v_i))
         }
+        ForceLaw::Thornton { .. } => Some(thornton_turn(law, 0.5 * m * v_i * v_i).2),
     }
 }
 
@@ -194,7 +195,47 @@ pub fn max_penetration(law: &ForceLaw, m: f64, v_i: f64) -> Option<f64> {
         ForceLaw::Bilinear { k1, k2, d_y } => {
             Some(bilinear_max_penetration(k1, k2, d_y, 0.5 * m * v_i * v_i))
         }
+        ForceLaw::Thornton { .. } => Some(thornton_turn(law, 0.5 * m * v_i * v_i).0),
     }
+}
+
+/// The impact velocity (m/s) at which a Thornton contact of effective mass `m` (kg) just reaches first yield:
+/// the Hertz energy up to yield, `(2/5) F_y d_y`, equals `m v_y^2 / 2`. `None` for another law.
+pub fn thornton_yield_velocity(law: &ForceLaw, m: f64) -> Option<f64> {
+    match *law {
+        ForceLaw::Thornton { d_y, f_y, .. } => Some((0.8 * f_y * d_y / m).sqrt()),
+        _ => None,
+    }
+}
+
+/// A Thornton impact of kinetic energy `ke` (J): its turning point `(d_p` m, `F_p` N) and its delivered `e`,
+/// from the energy balance of the law (section 2.7 of docs/contact-models.md). Loading stores
+/// `W_y = (2/5) f_y d_y` up to yield, then `f_y D + k_p D^2 / 2` more over `D = d_p - d_y`; Hertzian unloading
+/// returns `(2/5) F_p (d_p - d_f)`, so `e^2` is that over `ke`. Below yield, the elastic Hertz impact (e = 1).
+/// `(0, 0, 1)` for another law.
+pub fn thornton_turn(law: &ForceLaw, ke: f64) -> (f64, f64, f64) {
+    let ForceLaw::Thornton {
+        k,
+        e_star,
+        p_y,
+        d_y,
+        f_y,
+        k_p,
+    } = *law
+    else {
+        return (0.0, 0.0, 1.0);
+    };
+    let w_y = 0.4 * f_y * d_y;
+    if ke <= w_y {
+        let d = (2.5 * ke / k).powf(0.4);
+        return (d, k * d.powf(1.5), 1.0);
+    }
+    // Root of k_p D^2 / 2 + f_y D - (ke - w_y) = 0, in the form without cancellation.
+    let w = ke - w_y;
+    let big_d = 2.0 * w / (f_y + (f_y * f_y + 2.0 * k_p * w).sqrt());
+    let (d_p, f_p) = (d_y + big_d, f_y + k_p * big_d);
+    let (_, d_f) = super::thornton_unloading(e_star, p_y, f_y, d_p, f_p);
+    (d_p, f_p, (0.4 * f_p * (d_p - d_f) / ke).sqrt())
 }
 
 #[cfg(test)]

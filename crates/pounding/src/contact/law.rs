@@ -72,6 +72,33 @@ pub enum ForceLaw {
         /// Yield penetration, m.
         d_y: f64,
     },
+    /// Thornton (1997) elastic–perfectly-plastic spheres: Hertz `k d^(3/2)` up to `d_y`, where the contact
+    /// pressure reaches the yield pressure `p_y`, then `f_y + k_p (d - d_y)` with `k_p = pi p_y R` (the same
+    /// slope as Hertz there); unloading Hertzian about a permanent set with the larger radius
+    /// `R_p = 4 E* a_p^3 / (3 F_p)`, `a_p^2 = (2 F_p + f_y) / (2 pi p_y)` ([`thornton_unloading`]).
+    Thornton {
+        /// Hertz stiffness `(4/3) E* sqrt(R)`, N/m^1.5.
+        k: f64,
+        /// Effective modulus `E*`, Pa.
+        e_star: f64,
+        /// Yield pressure (the largest contact pressure), Pa.
+        p_y: f64,
+        /// Penetration at first yield, m.
+        d_y: f64,
+        /// Force at first yield, N.
+        f_y: f64,
+        /// Slope of plastic loading `pi p_y R`, N/m.
+        k_p: f64,
+    },
+}
+
+/// The unloading curve of a Thornton contact from the turning point `(d_p, F_p)` (m, N) past first yield:
+/// `F = (4/3) E* sqrt(R_p) (d - d_f)^(3/2)`; returns `((4/3) E* sqrt(R_p), d_f)` (N/m^1.5, m). It passes
+/// through the turning point: `(4/3) E* sqrt(R_p) (a_p^2 / R_p)^(3/2) = (4/3) E* a_p^3 / R_p = F_p`.
+pub fn thornton_unloading(e_star: f64, p_y: f64, f_y: f64, d_p: f64, f_p: f64) -> (f64, f64) {
+    let a_p2 = (2.0 * f_p + f_y) / (2.0 * std::f64::consts::PI * p_y);
+    let r_p = 4.0 * e_star * a_p2 * a_p2.sqrt() / (3.0 * f_p);
+    (4.0 / 3.0 * e_star * r_p.sqrt(), d_p - a_p2 / r_p)
 }
 
 /// `sign(d) |d|^n`, with the common exponents computed without `powf`.
@@ -131,6 +158,23 @@ impl ForceLaw {
                 }
                 Phase::Restitution => (turn.force - k1 * (turn.d - d)).max(k2 * d),
             },
+            ForceLaw::Thornton {
+                k,
+                e_star,
+                p_y,
+                d_y,
+                f_y,
+                k_p,
+            } => match phase {
+                Phase::Approach if d <= d_y => k * spow(d, 1.5),
+                Phase::Approach => f_y + k_p * (d - d_y),
+                // An impact that never yielded unloads along its loading curve.
+                Phase::Restitution if turn.d <= d_y => k * spow(d, 1.5),
+                Phase::Restitution => {
+                    let (k_u, d_f) = thornton_unloading(e_star, p_y, f_y, turn.d, turn.force);
+                    k_u * spow(d - d_f, 1.5)
+                }
+            },
         }
     }
 
@@ -144,7 +188,7 @@ impl ForceLaw {
             | ForceLaw::HuntCrossley { k, n, .. }
             | ForceLaw::Jankowski { k, n, .. } => (k, n),
             ForceLaw::LinearViscous { k, .. } => (k, 1.0),
-            ForceLaw::Bilinear { .. } => return None,
+            ForceLaw::Bilinear { .. } | ForceLaw::Thornton { .. } => return None,
         };
         let f = k * spow(d, n);
         Some((f, f * d / (n + 1.0)))
@@ -158,10 +202,12 @@ impl ForceLaw {
                 Phase::Approach => d_y - d,
                 Phase::Restitution => (turn.force - k1 * (turn.d - d)) - k2 * d,
             }),
+            // Hertz meets the plastic line with the same slope, pi p_y R: no kink.
             ForceLaw::Elastic { .. }
             | ForceLaw::LinearViscous { .. }
             | ForceLaw::HuntCrossley { .. }
-            | ForceLaw::Jankowski { .. } => None,
+            | ForceLaw::Jankowski { .. }
+            | ForceLaw::Thornton { .. } => None,
         }
     }
 
@@ -170,7 +216,7 @@ impl ForceLaw {
     /// the current penetration and rate only.
     pub fn reload_limit(&self, turn: &Turn) -> Option<f64> {
         match *self {
-            ForceLaw::Bilinear { .. } => Some(turn.d),
+            ForceLaw::Bilinear { .. } | ForceLaw::Thornton { .. } => Some(turn.d),
             ForceLaw::Elastic { .. }
             | ForceLaw::LinearViscous { .. }
             | ForceLaw::HuntCrossley { .. }
@@ -187,7 +233,8 @@ impl ForceLaw {
             ForceLaw::Elastic { .. }
             | ForceLaw::LinearViscous { .. }
             | ForceLaw::HuntCrossley { .. }
-            | ForceLaw::Bilinear { .. } => true,
+            | ForceLaw::Bilinear { .. }
+            | ForceLaw::Thornton { .. } => true,
         }
     }
 
@@ -200,6 +247,7 @@ impl ForceLaw {
             | ForceLaw::Jankowski { k, n, .. } => (k, n),
             ForceLaw::LinearViscous { k, .. } => (k, 1.0),
             ForceLaw::Bilinear { k1, .. } => (k1, 1.0),
+            ForceLaw::Thornton { k, .. } => (k, 1.5),
         };
         (m * v * v / k).powf(1.0 / (n + 1.0))
     }

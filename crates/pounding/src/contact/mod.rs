@@ -25,7 +25,7 @@ mod model;
 mod options;
 mod restitution;
 
-pub use law::{ForceLaw, Phase, Turn};
+pub use law::{thornton_unloading, ForceLaw, Phase, Turn};
 pub use model::{Family, Formula, Model, ModelInfo, MODELS};
 pub use options::{ContactOptions, OptionError};
 pub use restitution::{material_e, Restitution, RestitutionTable};
@@ -109,6 +109,18 @@ pub enum DampingParameter {
     /// A material damping constant `c = D/K`, s/m (not dimensionless): the Hunt–Crossley law
     /// `F = k d^n (1 + c v)`, whose factor `chi = c v_i` grows with the impact velocity.
     DampingConstant(f64),
+    /// No damping but plastic flow: Thornton's spheres of this radius (m) and yield pressure (Pa).
+    Yield(Sphere),
+}
+
+/// A sphere that yields (Thornton 1997): the radius `R` (m) of the Hertz stiffness `(4/3) E* sqrt(R)`, and
+/// the yield pressure `p_y` (Pa), the largest contact pressure the material bears.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    /// Radius, m.
+    pub radius: f64,
+    /// Yield pressure, Pa.
+    pub yield_pressure: f64,
 }
 
 impl DampingParameter {
@@ -122,6 +134,7 @@ impl DampingParameter {
             DampingParameter::Xi(x) => Some(("xi", x)),
             DampingParameter::EDesign(e) => Some(("e_design", e)),
             DampingParameter::DampingConstant(c) => Some(("damping_constant", c)),
+            DampingParameter::Yield(s) => Some(("yield_pressure", s.yield_pressure)),
         }
     }
 }
@@ -139,6 +152,7 @@ pub struct ContactModel {
     tension: Tension,
     max_penetration: Option<f64>,
     yield_ratio: f64,
+    sphere: Option<Sphere>,
 }
 
 impl ContactModel {
@@ -167,13 +181,38 @@ impl ContactModel {
             tension: info.tension,
             max_penetration: d.max_penetration,
             yield_ratio: d.yield_ratio,
+            sphere: None,
         })
+    }
+
+    /// The sphere of `thornton`: radius `R` (m, > 0) and yield pressure `p_y` (Pa, > 0); the stiffness
+    /// `k` is its Hertz stiffness `(4/3) E* sqrt(R)`, from which `E*` follows.
+    pub fn with_sphere(mut self, radius: f64, yield_pressure: f64) -> Result<Self, Error> {
+        self.sphere = Some(Sphere {
+            radius: check("radius", radius, radius > 0.0, "radius > 0 (m)")?,
+            yield_pressure: check(
+                "yield_pressure",
+                yield_pressure,
+                yield_pressure > 0.0,
+                "yield_pressure > 0 (Pa)",
+            )?,
+        });
+        Ok(self)
+    }
+
+    /// The sphere of `thornton`, if given.
+    pub fn sphere(&self) -> Option<Sphere> {
+        self.sphere
     }
 
     /// Sets the exponent `n` (> 0; linear models accept only 1).
     pub fn with_exponent(mut self, n: f64) -> Result<Self, Error> {
-        if self.model.info().n_fixed {
+        let info = self.model.info();
+        if info.n_fixed && info.default_n == 1.0 {
             check("n", n, n == 1.0, "n = 1 (a linear model)")?;
+        }
+        if info.n_fixed && info.default_n == 1.5 {
+            check("n", n, n == 1.5, "n = 1.5 (Hertz spheres)")?;
         }
         self.n = check("n", n, n > 0.0, "n > 0")?;
         Ok(self)
@@ -223,8 +262,9 @@ impl ContactModel {
                     "e.table",
                     crate::words::count(t.points().len(), "row", None),
                     format!(
-                        "only with a damped model, not {} (elastic: it delivers e = 1)",
-                        info.name
+                        "only with a damped model, not {} ({})",
+                        info.name,
+                        self.model.asks_no_e().unwrap_or_default()
                     ),
                 )
             }
@@ -377,6 +417,11 @@ impl ContactModel {
                 let (chi, chi_r) = papi_factors(e, alpha, self.reading);
                 DampingParameter::Papi { alpha, chi, chi_r }
             }
+            Formula::Thornton => DampingParameter::Yield(self.sphere.ok_or(Error::Choice {
+                name: "yield_pressure",
+                value: "missing".into(),
+                allowed: "model thornton needs radius (m) and yield_pressure (Pa)".into(),
+            })?),
             Formula::Xi(_) if exact => return Ok(None),
             Formula::Xi(f) => DampingParameter::Xi(f(e)),
             Formula::Bilinear => DampingParameter::EDesign(if exact {
@@ -422,6 +467,7 @@ impl ContactModel {
                 chi_r: chi,
                 v_i,
             },
+            DampingParameter::Yield(s) => thornton_law(k, s),
             // F = k d^n (1 + c v) is the normalised law with chi = c v_i.
             DampingParameter::DampingConstant(c) => ForceLaw::HuntCrossley {
                 k,
@@ -453,6 +499,22 @@ impl ContactModel {
                 ForceLaw::Bilinear { k1, k2, d_y }
             }
         }
+    }
+}
+
+/// Thornton's law for Hertz stiffness `k` (N/m^1.5) and sphere `s`: `E* = 3 k / (4 sqrt(R))`,
+/// `d_y = R (pi p_y / (2 E*))^2`, `f_y = k d_y^(3/2)`, `k_p = pi p_y R`.
+pub fn thornton_law(k: f64, s: Sphere) -> ForceLaw {
+    let (r, p_y) = (s.radius, s.yield_pressure);
+    let e_star = 0.75 * k / r.sqrt();
+    let d_y = r * (std::f64::consts::PI * p_y / (2.0 * e_star)).powi(2);
+    ForceLaw::Thornton {
+        k,
+        e_star,
+        p_y,
+        d_y,
+        f_y: k * d_y * d_y.sqrt(),
+        k_p: std::f64::consts::PI * p_y * r,
     }
 }
 

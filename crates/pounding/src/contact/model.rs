@@ -21,6 +21,8 @@ pub enum Family {
     Jankowski,
     /// Muthukumar & DesRoches bilinear loop (OpenSees `ImpactMaterial`).
     Bilinear,
+    /// Elastic–perfectly-plastic spheres (Thornton 1997): Hertz, then plastic flow at the yield pressure.
+    ElasticPlastic,
 }
 
 /// Every contact model of the library (`docs/contact-models.md`).
@@ -43,6 +45,7 @@ pub enum Model {
     Hertzdamp,
     Jankowski,
     ImpactMaterial,
+    Thornton,
 }
 
 /// How a model derives its damping parameter from `e` by its published formula.
@@ -60,6 +63,8 @@ pub enum Formula {
     Xi(fn(f64) -> f64),
     /// The bilinear loop's dissipated energy `k d_m^(n+1) (1 - e^2) / (n + 1)`.
     Bilinear,
+    /// None: the loss follows from the yield pressure and the sphere's radius (Thornton 1997).
+    Thornton,
 }
 
 /// One row of the catalogue.
@@ -118,7 +123,7 @@ const fn hc(
 }
 
 /// The catalogue, in the order of docs/contact-models.md.
-pub const MODELS: [ModelInfo; 16] = [
+pub const MODELS: [ModelInfo; 17] = [
     ModelInfo {
         model: Model::Hooke,
         name: "hooke",
@@ -293,6 +298,21 @@ pub const MODELS: [ModelInfo; 16] = [
         parameter: Some("e_design"),
         source: "Muthukumar & DesRoches (2006); OpenSees ImpactMaterial",
     },
+    ModelInfo {
+        model: Model::Thornton,
+        name: "thornton",
+        family: Family::ElasticPlastic,
+        default_n: 1.5,
+        n_fixed: true,
+        tension: Tension::Clamp,
+        restitution_damped: false,
+        force_law: "Hertz k d^1.5 up to d_y = R (pi p_y / (2 E*))^2, then F_y + pi p_y R (d - d_y); \
+                    unloading Hertzian with radius R_p = 4 E* a_p^3 / (3 F_p), a_p^2 = (2 F_p + F_y) / (2 pi p_y)",
+        damping_formula: "none: e follows from the yield pressure, e = 1 below the yield velocity v_y",
+        formula: Formula::Thornton,
+        parameter: None,
+        source: "Thornton (1997), J. Appl. Mech. 64:383-386",
+    },
 ];
 
 impl Model {
@@ -320,6 +340,17 @@ impl Model {
     /// Whether the model dissipates energy (has a damping parameter).
     pub fn is_damped(self) -> bool {
         self.info().parameter.is_some()
+    }
+
+    /// Why the model is asked no `e`, in a few words for messages; `None` for a damped model, which is.
+    pub fn asks_no_e(self) -> Option<&'static str> {
+        match (self.is_damped(), self.info().formula) {
+            (true, _) => None,
+            (false, Formula::Thornton) => {
+                Some("its loss is plastic flow, set by its yield pressure (e = 1 below the yield velocity)")
+            }
+            (false, _) => Some("it is elastic and delivers e = 1"),
+        }
     }
 }
 

@@ -26,6 +26,10 @@ pub struct ContactOptions {
     pub max_penetration: Option<f64>,
     /// `impact-material`: yield ratio `a = d_y / d_m`, 0 < a < 1 (dimensionless).
     pub yield_ratio: f64,
+    /// `thornton` (required by it, refused by the others): the spheres' radius `R`, m.
+    pub radius: Option<f64>,
+    /// `thornton` (required by it, refused by the others): the yield pressure `p_y`, Pa.
+    pub yield_pressure: Option<f64>,
 }
 
 impl Default for ContactOptions {
@@ -45,6 +49,8 @@ impl Default for ContactOptions {
             tension: None,
             max_penetration: None,
             yield_ratio: 0.1,
+            radius: None,
+            yield_pressure: None,
         }
     }
 }
@@ -91,6 +97,30 @@ impl ContactOptions {
                 model: self.model,
             });
         }
+        let thornton = self.model == Model::Thornton;
+        for (option, given, with) in [
+            ("radius", self.radius, "yield-pressure"),
+            ("yield-pressure", self.yield_pressure, "radius"),
+        ] {
+            match (thornton, given) {
+                (false, Some(_)) => {
+                    return Err(OptionError::NotFor {
+                        option,
+                        applies_to: "thornton",
+                        model: self.model,
+                    })
+                }
+                (true, None) => {
+                    return Err(OptionError::Required {
+                        option,
+                        with,
+                        model: self.model,
+                        what: "the spheres' radius (m) and yield pressure (Pa)",
+                    })
+                }
+                _ => {}
+            }
+        }
         let mut s = ContactModel::new(self.model, k, 1.0)?.with_restitution(self.e.clone())?;
         if let Some(n) = self.exponent {
             s = s.with_exponent(n)?;
@@ -108,6 +138,9 @@ impl ContactOptions {
         if let Some(d_m) = self.max_penetration {
             s = s.with_max_penetration(d_m)?;
         }
+        if let (Some(r), Some(p_y)) = (self.radius, self.yield_pressure) {
+            s = s.with_sphere(r, p_y)?;
+        }
         Ok(s)
     }
 }
@@ -124,6 +157,17 @@ pub enum OptionError {
         applies_to: &'static str,
         /// The model it was given to.
         model: Model,
+    },
+    /// An option the model cannot do without.
+    Required {
+        /// The option.
+        option: &'static str,
+        /// The option that goes with it.
+        with: &'static str,
+        /// The model that needs it.
+        model: Model,
+        /// What it and its companions describe.
+        what: &'static str,
     },
     /// Two options that cannot be given together.
     Conflict {
@@ -150,9 +194,9 @@ impl OptionError {
     /// The option the error concerns (`max-penetration`, `e`), if it names one.
     pub fn key(&self) -> Option<&'static str> {
         match self {
-            OptionError::NotFor { option, .. } | OptionError::Conflict { option, .. } => {
-                Some(option)
-            }
+            OptionError::NotFor { option, .. }
+            | OptionError::Required { option, .. }
+            | OptionError::Conflict { option, .. } => Some(option),
             OptionError::Value(
                 Error::Parameter { name, .. }
                 | Error::Choice { name, .. }
@@ -172,6 +216,16 @@ impl OptionError {
             } => format!(
                 "{} applies to {applies_to} only, not to {model}",
                 name(option)
+            ),
+            OptionError::Required {
+                option,
+                with,
+                model,
+                what,
+            } => format!(
+                "{} is required by model {model}, with {}: {what}",
+                name(option),
+                name(with)
             ),
             OptionError::Conflict {
                 option,

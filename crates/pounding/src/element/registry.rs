@@ -16,6 +16,9 @@ macro_rules! registry {
         devices { $( $(#[$dm:meta])* $dv:ident($dt:ty) = $dn:literal, )* }
     ) => {
         /// Every element law, with its phase: a variant per law type (`element/registry.rs`).
+        // A contact carries its prepared law (hundreds of bytes) beside storeys of tens: boxing it would put a
+        // pointer chase into every force evaluation, and a run holds only tens of elements.
+        #[allow(clippy::large_enum_variant)]
         #[derive(Clone, Debug)]
         pub enum Law {
             $( $(#[$lm])* $lv($lt), )*

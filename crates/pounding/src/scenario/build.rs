@@ -382,6 +382,8 @@ fn options(c: &LawDoc, e: Restitution) -> ContactOptions {
         yield_ratio: c
             .yield_ratio
             .unwrap_or(ContactOptions::default().yield_ratio),
+        radius: c.radius,
+        yield_pressure: c.yield_pressure,
     }
 }
 

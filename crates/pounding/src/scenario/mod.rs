@@ -247,7 +247,7 @@ macro_rules! with_contact_law {
             /// Exponent of the force law (dimensionless; default the model's).
             #[serde(default, skip_serializing_if = "Option::is_none")]
             pub exponent: Option<f64>,
-            /// `formula` (default) or `exact`.
+            /// `exact` (default: each impact of two free bodies delivers `e`) or `formula` (the published one).
             #[serde(default, skip_serializing_if = "Option::is_none")]
             pub damping: Option<Damping>,
             /// `alpha` of `papi`.
@@ -265,6 +265,12 @@ macro_rules! with_contact_law {
             /// `impact-material`: yield ratio (dimensionless, default 0.1).
             #[serde(default, skip_serializing_if = "Option::is_none")]
             pub yield_ratio: Option<f64>,
+            /// `thornton`: radius of the spheres, m (`stiffness` is their Hertz stiffness).
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub radius: Option<f64>,
+            /// `thornton`: yield pressure, Pa.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub yield_pressure: Option<f64>,
         }
 
         impl LawKeys for $name {
@@ -282,6 +288,8 @@ macro_rules! with_contact_law {
                     tension: self.tension,
                     max_penetration: self.max_penetration,
                     yield_ratio: self.yield_ratio,
+                    radius: self.radius,
+                    yield_pressure: self.yield_pressure,
                 }
             }
         }
@@ -315,6 +323,10 @@ pub struct LawDoc<'a> {
     pub max_penetration: Option<f64>,
     /// `impact-material`: yield ratio.
     pub yield_ratio: Option<f64>,
+    /// `thornton`: radius, m.
+    pub radius: Option<f64>,
+    /// `thornton`: yield pressure, Pa.
+    pub yield_pressure: Option<f64>,
 }
 
 /// An entry that carries a contact law.

@@ -7,7 +7,11 @@ use pounding::impact::{simulate, ImpactOptions, ImpactSetup};
 
 /// The e delivered by one integrated impact of `spec` between free bodies of masses `m1`, `m2` at `v` (m/s).
 fn delivered(spec: &ContactModel, m1: f64, m2: f64, v: f64) -> f64 {
-    let m = m1 * m2 / (m1 + m2);
+    let m = if m2.is_finite() {
+        m1 * m2 / (m1 + m2)
+    } else {
+        m1
+    };
     let (law, _) = spec.prepare().unwrap().law(m, v).unwrap();
     let setup = ImpactSetup::relative(m, v);
     let opts = ImpactOptions {
@@ -112,4 +116,50 @@ fn what_cannot_be_asked_is_refused_naming_the_key() {
         e.starts_with("damping_constant = -0.1 is not allowed"),
         "{e}"
     );
+}
+
+/// Thornton (1997) elastic–perfectly-plastic spheres: e = 1 up to the yield velocity, then the check values
+/// of next-physics.md section 1 (Thornton's closed form, recomputed there), which the exact energy balance
+/// of the law (`exact::e_post`) and the integrated impact both reproduce.
+#[test]
+fn thornton_spheres_deliver_the_closed_form_e() {
+    use pounding::contact::exact;
+    let (r, p_y, k) = (0.1, 1.0e8, 2.0e10);
+    let spec = ContactModel::new(Model::Thornton, k, 1.0)
+        .unwrap()
+        .with_sphere(r, p_y)
+        .unwrap();
+    for m in [100.0, 3.0e4] {
+        // v_y: the impact velocity whose Hertz energy reaches first yield, (2/5) F_y d_y = m v_y^2 / 2.
+        let e_star = 0.75 * k / f64::sqrt(r);
+        let d_y = r * (std::f64::consts::PI * p_y / (2.0 * e_star)).powi(2);
+        let f_y = k * d_y.powf(1.5);
+        let v_y = (2.0 * 0.4 * f_y * d_y / m).sqrt();
+        for (ratio, e) in [
+            (0.5, 1.0),
+            (1.0, 1.0),
+            (1.5, 0.971239),
+            (2.0, 0.930626),
+            (5.0, 0.773337),
+            (10.0, 0.658558),
+            (20.0, 0.557109),
+            (50.0, 0.444606),
+            (100.0, 0.374299),
+        ] {
+            let v = ratio * v_y;
+            let (law, _) = spec.prepare().unwrap().law(m, v).unwrap();
+            let closed = exact::e_post(&law, spec.tension(), m, v).unwrap();
+            let integrated = delivered(&spec, m, f64::INFINITY, v);
+            assert!(
+                (closed - e).abs() < 1e-6,
+                "m {m}, v/v_y {ratio}: {closed} vs {e}"
+            );
+            assert!(
+                (integrated - closed).abs() < 1e-6,
+                "m {m}, v/v_y {ratio}: {integrated} vs {closed}"
+            );
+            let d_max = exact::max_penetration(&law, m, v).unwrap();
+            assert!(d_max > 0.0);
+        }
+    }
 }

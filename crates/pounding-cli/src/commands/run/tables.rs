@@ -140,6 +140,19 @@ fn isolators(s: &Scenario, r: &Results) {
     }
 }
 
+/// What a contact asks, for the e_asked column, and its one e if it has one: a table or a damping constant
+/// asks each impact its own e (impacts.csv has each impact's), Thornton's spheres none (their loss is
+/// plastic), an elastic law none.
+fn asked_label(spec: &pounding::contact::ContactModel) -> (String, Option<f64>) {
+    match (spec.asked(), spec.sphere()) {
+        (_, Some(_)) => ("plastic".into(), None),
+        (None, None) => ("elastic".into(), None),
+        (Some(Restitution::Constant(e)), None) => (fmt_num(*e), Some(*e)),
+        (Some(Restitution::Table(_)), None) => ("table".into(), None),
+        (Some(Restitution::DampingConstant(_)), None) => ("D/K".into(), None),
+    }
+}
+
 /// Every site of a run without contact: its gap and each level's largest closing against it.
 fn inactive_sites(s: &Scenario, r: &Results) {
     println!("\nwithout contact      gap_mm  max_closing_mm  would_touch  max_opening_mm (gap: to a bumper's face)");
@@ -189,7 +202,7 @@ fn sites(s: &Scenario, r: &Results) {
                 (
                     name,
                     lr,
-                    site.contact.spec().asked().cloned(),
+                    asked_label(site.contact.spec()),
                     site.seat,
                     site.bumper.is_some(),
                     r.delivered_e(i),
@@ -197,17 +210,10 @@ fn sites(s: &Scenario, r: &Results) {
             });
         let mut spread = false;
         for (name, lr, e_asked, seat, bumper, delivered) in rows {
-            // A table or a damping constant asks each impact its own e: its column says so (impacts.csv has
-            // each impact's e_asked).
-            let asked = match &e_asked {
-                None => "elastic".to_string(),
-                Some(Restitution::Constant(e)) => fmt_num(*e),
-                Some(Restitution::Table(_)) => "table".to_string(),
-                Some(Restitution::DampingConstant(_)) => "D/K".to_string(),
-            };
-            if let (Some((lo, hi)), Some(e)) = (delivered, e_asked.and_then(|r| r.constant())) {
+            if let (Some((lo, hi)), (_, Some(e))) = (delivered, &e_asked) {
                 spread |= (lo - e).abs() > 0.01 || (hi - e).abs() > 0.01;
             }
+            let asked = &e_asked.0;
             let range = match delivered {
                 Some((lo, hi)) if hi - lo < 5e-4 => format!("{lo:.3}"),
                 Some((lo, hi)) => format!("{lo:.3}-{hi:.3}"),

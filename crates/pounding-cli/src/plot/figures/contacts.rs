@@ -355,6 +355,29 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
                 ..lv.style
             },
         ));
+        // Thornton's spheres ask no e: the e their law delivers between free bodies at each v_i (it depends
+        // on the level's effective mass), as a line through the impacts' e_asked.
+        let law = match &d.summary.sites[lv.contact].bumper {
+            Some(b) => &b.law,
+            None => &d.summary.sites[lv.contact].law,
+        };
+        if let DampingSummary::YieldPressure { .. } = law.damping_parameter {
+            let mut own: Vec<(f64, f64)> = mine
+                .iter()
+                .filter_map(|i| i.e_asked.map(|e| (i.v_i, e)))
+                .collect();
+            own.sort_by(|a, b| a.0.total_cmp(&b.0));
+            r.series.push(Series::line(
+                format!("e of the spheres at v_i, free bodies ({})", lv.label),
+                own.iter().map(|p| p.0).collect(),
+                own.iter().map(|p| p.1).collect(),
+                Style {
+                    width: 1.2,
+                    dash: Dash::Dotted,
+                    ..lv.style
+                },
+            ));
+        }
     }
     let v_max = d
         .impacts
