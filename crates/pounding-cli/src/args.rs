@@ -85,6 +85,12 @@ pub enum Command {
         #[command(subcommand)]
         cmd: RecordCmd,
     },
+    /// Contact laws fitted to tests: restitution measured against impact velocity, or the force history of
+    /// one impact (see docs/contact-models.md section 2.8).
+    Fit {
+        #[command(subcommand)]
+        cmd: FitCmd,
+    },
     /// Reproductions of the tables of Papi & Toopchi-Nezhad (2022).
     Paper {
         #[command(subcommand)]
@@ -341,6 +347,100 @@ pub struct RecordArgs {
 /// `--units`: the library's one reading of a units name.
 fn units_arg(name: &str) -> Result<Units, String> {
     Units::parse(name).map_err(|e| e.to_string())
+}
+
+#[derive(Subcommand, Debug)]
+pub enum FitCmd {
+    /// From measured (v_i, e) pairs: the material damping constant D/K of the Hunt-Crossley family, Thornton's
+    /// yield velocity (and yield pressure), one e for a model whose e does not depend on v_i, or the table
+    /// e(v_i) itself, smoothed.
+    #[command(
+        after_help = "Files in --out: fit.json (what --json prints), fit-curve.csv (the fitted e against v_i); with --plots: fit-restitution.svg (the fit over the points)."
+    )]
+    Restitution(FitRestitutionArgs),
+    /// From the measured force history of one impact (mass and impact velocity known): the stiffness, the
+    /// exponent and the damping (e, a damping constant, or Thornton's yield pressure) of a model, by least
+    /// squares on the force, with the touch time.
+    #[command(
+        after_help = "Files in --out: fit.json (what --json prints), fit-curve.csv (the fitted force against time); with --plots: fit-force-history.svg (the fit over the samples, and the residual)."
+    )]
+    ForceHistory(FitHistoryArgs),
+}
+
+/// `pounding fit restitution`.
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct FitRestitutionArgs {
+    /// The measurements: two columns, impact velocity v_i (m/s) and e, separated by a comma or spaces (a
+    /// header line and # comments allowed).
+    pub data: std::path::PathBuf,
+    /// What to fit: a model of the Hunt-Crossley family (its damping_constant), thornton (its yield
+    /// velocity), another damped model (one e), or table (e(v_i) itself).
+    #[arg(long, value_parser = parse_restitution_law)]
+    pub model: pounding_study::fit::RestitutionLaw,
+    /// table: at most this many rows, groups of about equal counts by v_i [default: one per velocity].
+    #[arg(long)]
+    pub rows: Option<usize>,
+    /// table: make e non-increasing in v_i (pooling adjacent rows that rise: the least-squares fit).
+    #[arg(long)]
+    pub monotone: bool,
+    /// thornton: the spheres' radius, m (with --k and --m1: the yield pressure).
+    #[arg(long)]
+    pub radius: Option<f64>,
+    /// thornton: the spheres' Hertz stiffness (4/3) E* sqrt(R), N/m^1.5.
+    #[arg(long)]
+    pub k: Option<f64>,
+    /// thornton: mass of the moving body in the tests, kg.
+    #[arg(long)]
+    pub m1: Option<f64>,
+    /// thornton: mass of the body at rest in the tests, kg, or inf for a rigid slab.
+    #[arg(long, default_value = "inf")]
+    pub m2: f64,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+    #[command(flatten)]
+    pub out: OutArgs,
+}
+
+/// `pounding fit force-history`.
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct FitHistoryArgs {
+    /// The measured force history: two columns, time (s, any origin) and force (N), separated by a comma or
+    /// spaces (a header line and # comments allowed).
+    pub data: std::path::PathBuf,
+    /// Contact model (see `pounding models`).
+    #[arg(long, value_parser = named::<Model>())]
+    pub model: Model,
+    /// Mass of the moving body, kg.
+    #[arg(long)]
+    pub m1: f64,
+    /// Mass of the body at rest, kg, or inf for a rigid slab.
+    #[arg(long, default_value = "inf")]
+    pub m2: f64,
+    /// Impact velocity, m/s.
+    #[arg(long)]
+    pub v: f64,
+    /// Hold the exponent n at this value instead of fitting it (a linear model always holds 1).
+    #[arg(long)]
+    pub n: Option<f64>,
+    /// Hunt-Crossley family: fit a material damping constant D/K (s/m) instead of e.
+    #[arg(long)]
+    pub damping_constant: bool,
+    /// thornton: the spheres' radius, m (the yield pressure is fitted).
+    #[arg(long)]
+    pub radius: Option<f64>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+    #[command(flatten)]
+    pub out: OutArgs,
+}
+
+/// `--model` of `fit restitution`: `table` or a model's name.
+fn parse_restitution_law(s: &str) -> Result<pounding_study::fit::RestitutionLaw, String> {
+    pounding_study::fit::RestitutionLaw::parse(s)
 }
 
 #[derive(Subcommand, Debug)]

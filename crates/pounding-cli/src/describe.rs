@@ -18,14 +18,7 @@ pub fn contact(a: &ModelArgs, k: f64, radius: Option<f64>) -> Result<ContactMode
     })
 }
 
-/// The unit of a contact stiffness of exponent `n`: `N/m`, `N/m^1.5`.
-pub fn stiffness_unit(n: f64) -> String {
-    if n == 1.0 {
-        "N/m".into()
-    } else {
-        format!("N/m^{}", fmt_num(n))
-    }
-}
+pub use pounding::words::stiffness_unit;
 
 /// One line describing a contact model and its damping: `papi, k = 2e9 N/m, e = 0.65, ...`.
 pub fn contact_label(s: &ContactModel, p: Option<DampingParameter>) -> String {

@@ -72,16 +72,7 @@ pub fn num(x: f64) -> Value {
     serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
 }
 
-pub use pounding_study::format::fmt_num;
-
-/// `x` rounded to `digits` significant digits, without trailing zeros (for people, not for files).
-pub fn fmt_sig(x: f64, digits: i32) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return fmt_num(x);
-    }
-    let f = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
-    fmt_num((x * f).round() / f)
-}
+pub use pounding_study::format::{fmt_num, fmt_sig};
 
 /// `x` with about `sig` significant digits in plain ASCII notation (no exponent, fixed decimals, at most 6), for
 /// the terminal's tables; a value that rounds to zero is `0`, never `-0.000`. (The figures and the report use

@@ -12,43 +12,9 @@ pub fn read_e_table(path: &Path) -> Result<RestitutionTable, CliError> {
     let shown = path.display();
     let text = std::fs::read_to_string(path)
         .map_err(|e| CliError::Io(format!("--e-table {shown}: cannot read it: {e}")))?;
-    let mut rows = Vec::new();
-    let mut first = true;
-    for (k, line) in text.lines().enumerate() {
-        let line = line.split('#').next().unwrap_or("").trim();
-        if line.is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line
-            .split(|c: char| c == ',' || c.is_whitespace())
-            .filter(|f| !f.is_empty())
-            .collect();
-        let numbers: Vec<Option<f64>> = fields.iter().map(|f| f.parse().ok()).collect();
-        let header = first && numbers.iter().all(Option::is_none);
-        first = false;
-        if header {
-            continue;
-        }
-        match numbers[..] {
-            [Some(v), Some(e)] => rows.push((v, e)),
-            _ => {
-                return Err(input(format!(
-                    "--e-table {shown}: line {} {:?} is not allowed: two numbers, v_i (m/s) and e, separated by a comma or spaces",
-                    k + 1,
-                    cut(line)
-                )))
-            }
-        }
-    }
+    let rows = pounding_study::fit::pairs(&text)
+        .map_err(|e| input(format!("--e-table {shown}: {e} (v_i in m/s, then e)")))?;
     RestitutionTable::new(rows).map_err(|e| input(format!("--e-table {shown}: {e}")))
-}
-
-/// A line of a file, for a message: its first 60 characters.
-fn cut(line: &str) -> String {
-    match line.char_indices().nth(60) {
-        Some((i, _)) => format!("{}...", &line[..i]),
-        None => line.to_string(),
-    }
 }
 
 /// What `model` is asked to deliver from `--e`, `--e-table` and `--damping-constant`: at most one of them;

@@ -3418,3 +3418,198 @@ fn restitution_tables_and_damping_constants_run_and_refuse_what_they_cannot() {
     let err = one_line_error(&["impact", "--model", "papi", "--e", "0.6", "--radius", "0.1"]);
     assert!(err.contains("thornton only"), "{err}");
 }
+
+/// A file of data/contact-tests/ (synthetic data, made by make.py there from stated laws and seeds).
+fn contact_test(name: &str) -> String {
+    format!(
+        "{}/../../data/contact-tests/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+/// `pounding fit`: the fits of the synthetic tests give back the parameters they were made with, within
+/// their stated standard errors (2 % noise: data/contact-tests/make.py), and their lines run as a scenario.
+#[test]
+fn fits_give_back_the_laws_their_data_were_made_with_and_their_lines_run() {
+    let dir = tmp("fit");
+    let within = |v: &Value, key: &str, truth: f64| {
+        let (x, se) = (
+            v["parameters"][key].as_f64().unwrap(),
+            v["std_errors"][key].as_f64().unwrap(),
+        );
+        assert!(
+            se > 0.0 && (x - truth).abs() < 3.0 * se,
+            "{key}: {x} +- {se}, truth {truth}"
+        );
+    };
+    let rest = contact_test("restitution-synthetic.csv");
+    let v = json(&["fit", "restitution", &rest, "--model", "flores"]);
+    within(&v, "damping_constant", 0.3);
+    assert_eq!(v["units"]["damping_constant"], "s/m");
+    // The table, non-increasing, in the rows asked.
+    let v = json(&[
+        "fit",
+        "restitution",
+        &rest,
+        "--model",
+        "table",
+        "--rows",
+        "4",
+        "--monotone",
+    ]);
+    let rows = v["parameters"]["e"]["table"].as_array().unwrap();
+    assert!(rows.len() <= 4 && rows.len() >= 2, "{rows:?}");
+    let e: Vec<f64> = rows.iter().map(|r| r[1].as_f64().unwrap()).collect();
+    assert!(e.windows(2).all(|w| w[1] <= w[0]), "{e:?}");
+    // Thornton: the yield pressure follows from the yield velocity (docs/contact-models.md 2.7):
+    // d_y = (5 m v_y^2 / (4 k))^(2/5), p_y = (2 E* / pi) sqrt(d_y / R), E* = 3 k / (4 sqrt(R)).
+    let v = json(&[
+        "fit",
+        "restitution",
+        &rest,
+        "--model",
+        "thornton",
+        "--radius",
+        "0.1",
+        "--k",
+        "6.5e9",
+        "--m1",
+        "10",
+    ]);
+    let v_y = v["also"]["yield_velocity"]["value"].as_f64().unwrap();
+    let d_y = (1.25 * 10.0 * v_y * v_y / 6.5e9f64).powf(0.4);
+    let p_y = 2.0 * (0.75 * 6.5e9 / 0.1f64.sqrt()) / std::f64::consts::PI * (d_y / 0.1).sqrt();
+    assert!((v["parameters"]["yield_pressure"].as_f64().unwrap() / p_y - 1.0).abs() < 1e-12);
+
+    // The force history of the synthetic ball (k = 6.58808e9 N/m^1.5, n = 1.5, c = 0.15 s/m).
+    let hist = contact_test("force-history-synthetic.csv");
+    let out = dir.join("history");
+    let v = json(&[
+        "fit",
+        "force-history",
+        &hist,
+        "--model",
+        "hunt-crossley",
+        "--m1",
+        "10.0531",
+        "--v",
+        "3.13",
+        "--n",
+        "1.5",
+        "--damping-constant",
+        "--out",
+        out.to_str().unwrap(),
+        "--plots",
+    ]);
+    within(&v, "stiffness", 6.58808e9);
+    within(&v, "damping_constant", 0.15);
+    assert!(v["parameters"].get("exponent").is_none());
+    for file in ["fit.json", "fit-curve.csv", "fit-force-history.svg"] {
+        assert!(out.join(file).is_file(), "{file}");
+    }
+    // The lines to paste make a contact that runs.
+    let lines: Vec<String> = v["scenario"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l.as_str().unwrap().to_string())
+        .collect();
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let contact = base.split("[[contact]]").next().unwrap().to_string()
+        + "[[contact]]\nbetween = [\"left\", \"right\"]\ngap = 0.02\n"
+        + &lines.join("\n")
+        + "\n";
+    let path = dir.join("fitted.toml");
+    std::fs::write(&path, contact).unwrap();
+    let s = json(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        dir.join("run").to_str().unwrap(),
+    ]);
+    assert_eq!(s["sites"][0]["model"], "hunt-crossley");
+    assert_eq!(
+        s["sites"][0]["damping_parameter"]["name"],
+        "damping_constant"
+    );
+
+    // Bad input: one line naming what is wrong.
+    let short = dir.join("short.csv");
+    std::fs::write(&short, "0,1\n").unwrap();
+    for (args, says) in [
+        (
+            vec!["fit", "restitution", &rest, "--model", "hooke"],
+            "--model hooke",
+        ),
+        (
+            vec![
+                "fit",
+                "restitution",
+                &rest,
+                "--model",
+                "papi",
+                "--rows",
+                "3",
+            ],
+            "--rows 3",
+        ),
+        (
+            vec![
+                "fit",
+                "restitution",
+                &rest,
+                "--model",
+                "thornton",
+                "--radius",
+                "0.1",
+            ],
+            "--k is required",
+        ),
+        (
+            vec![
+                "fit",
+                "force-history",
+                short.to_str().unwrap(),
+                "--model",
+                "papi",
+                "--m1",
+                "1",
+                "--v",
+                "1",
+            ],
+            "1 sample",
+        ),
+        (
+            vec![
+                "fit",
+                "force-history",
+                &hist,
+                "--model",
+                "papi",
+                "--m1",
+                "1",
+                "--v",
+                "1",
+                "--damping-constant",
+            ],
+            "--damping-constant",
+        ),
+        (
+            vec![
+                "fit",
+                "force-history",
+                &hist,
+                "--model",
+                "thornton",
+                "--m1",
+                "1",
+                "--v",
+                "1",
+            ],
+            "--radius is required",
+        ),
+    ] {
+        let err = one_line_error(&args);
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+}

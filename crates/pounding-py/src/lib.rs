@@ -619,6 +619,103 @@ fn ida(py: Python<'_>, study: &str, out: &str, workers: usize, progress: bool) -
     }
 }
 
+/// The pairs of `points`, or of the two-column text file at `path` (`what` names the columns in messages).
+fn fit_data(
+    points: Option<Vec<(f64, f64)>>,
+    path: Option<&str>,
+    what: &str,
+) -> PyResult<Vec<(f64, f64)>> {
+    match (points, path) {
+        (Some(p), _) => Ok(p),
+        (None, Some(path)) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| PyOSError::new_err(format!("{path}: cannot read it: {e}")))?;
+            pounding_study::fit::pairs(&text)
+                .map_err(|e| input_err(format!("{path}: {e} ({what})")))
+        }
+        (None, None) => Err(input_err("data: give a path or pairs")),
+    }
+}
+
+/// A refused fit, as one line naming the option by its keyword.
+fn fit_err(e: pounding::Error) -> PyErr {
+    match e {
+        pounding::Error::Choice {
+            name,
+            value,
+            allowed,
+        } if value == "missing" => input_err(format!("{name} is required: {allowed}")),
+        other => input_err(other.to_string()),
+    }
+}
+
+/// A restitution fit (`pounding fit restitution`) of `points` or the file at `path`: the report as JSON text,
+/// and the fitted curve (v_i in m/s, e).
+#[pyfunction]
+#[pyo3(signature = (model, points=None, path=None, rows=None, monotone=false, radius=None, k=None, m1=None, m2=f64::INFINITY))]
+#[allow(clippy::too_many_arguments)]
+fn fit_restitution(
+    model: &str,
+    points: Option<Vec<(f64, f64)>>,
+    path: Option<&str>,
+    rows: Option<usize>,
+    monotone: bool,
+    radius: Option<f64>,
+    k: Option<f64>,
+    m1: Option<f64>,
+    m2: f64,
+) -> PyResult<(String, Vec<f64>, Vec<f64>)> {
+    use pounding_study::fit::{RestitutionLaw, RestitutionRequest};
+    let law = RestitutionLaw::parse(model).map_err(input_err)?;
+    let data = fit_data(points, path, "v_i in m/s, then e")?;
+    let req = RestitutionRequest {
+        law,
+        rows,
+        monotone,
+        radius,
+        k,
+        m1,
+        m2,
+    };
+    let r = pounding_study::fit::restitution(&data, &req).map_err(fit_err)?;
+    Ok((json_text(&r)?, r.curve.0, r.curve.1))
+}
+
+/// A force-history fit (`pounding fit force-history`) of `data` or the file at `path`: the report as JSON
+/// text, and the fitted curve (time in s, force in N).
+#[pyfunction]
+#[pyo3(signature = (model, m1, v, data=None, path=None, m2=f64::INFINITY, n=None, damping_constant=false, radius=None))]
+#[allow(clippy::too_many_arguments)]
+fn fit_force_history(
+    py: Python<'_>,
+    model: &str,
+    m1: f64,
+    v: f64,
+    data: Option<Vec<(f64, f64)>>,
+    path: Option<&str>,
+    m2: f64,
+    n: Option<f64>,
+    damping_constant: bool,
+    radius: Option<f64>,
+) -> PyResult<(String, Vec<f64>, Vec<f64>)> {
+    use pounding::names::Named;
+    let model = pounding::contact::Model::parse_name(model).map_err(input_err)?;
+    let data = fit_data(data, path, "time in s, then force in N")?;
+    let req = pounding_study::fit::HistoryRequest {
+        model,
+        m1,
+        m2,
+        v,
+        exponent: n,
+        damping_constant,
+        radius,
+    };
+    let r = py
+        .allow_threads(|| pounding_study::fit::force_history(&data, &req))
+        .map_err(fit_err)?;
+    Ok((json_text(&r)?, r.curve.0, r.curve.1))
+}
+
 /// The extension module.
 #[pymodule]
 fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -634,6 +731,8 @@ fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(synthetic, m)?)?;
     m.add_function(wrap_pyfunction!(max_workers, m)?)?;
     m.add_function(wrap_pyfunction!(ida, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_restitution, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_force_history, m)?)?;
     m.add_class::<PyStore>()?;
     Ok(())
 }

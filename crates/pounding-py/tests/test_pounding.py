@@ -77,11 +77,12 @@ def test_run_gives_the_numbers_of_the_command_line(tmp_path, base):
     assert contact["levels"] == [{"left": 1, "right": 1}]
     assert r.summary["buildings"][0]["heights"] == [3.0]
     # Impacts and histories against the files the command line wrote.
-    rows = (tmp_path / "out" / "impacts.csv").read_text().splitlines()[1:]
+    header, *rows = (tmp_path / "out" / "impacts.csv").read_text().splitlines()
     assert len(r.impacts["time_s"]) == len(rows) == contact["impacts"] > 0
-    first = rows[0].split(",")
-    assert r.impacts["time_s"][0] == float(first[0])
-    assert r.impacts["peak_force_N"][0] == float(first[7])
+    # Columns by name: the file's columns are its header's, not positions to remember.
+    first = dict(zip(header.split(","), rows[0].split(",")))
+    for column in ("time_s", "v_i_m_per_s", "e_asked", "e_post", "peak_force_N"):
+        assert r.impacts[column][0] == float(first[column]), column
     resp = np.loadtxt(tmp_path / "out" / "response.csv", delimiter=",", skiprows=1)
     h = r.histories
     assert h.time.shape == (resp.shape[0],)
@@ -717,3 +718,36 @@ def test_arguments_of_every_type_raise_input_error_or_work(base, tmp_path):
             assert "\n" not in str(e) and len(str(e)) < 300, f"case {case} {name}: {e}"
         except Exception as e:  # noqa: BLE001 - the point of the test
             raise AssertionError(f"case {case}: {name}({slot} = {value!r}) raised {type(e).__name__}: {e}")
+
+
+def test_fits_give_the_numbers_of_the_command_line():
+    rest = ROOT / "data" / "contact-tests" / "restitution-synthetic.csv"
+    o = cli("fit", "restitution", str(rest), "--model", "hunt-crossley", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = json.loads(o.stdout)
+    # From the file, and from the same pairs as an array: the command line's report, and its curve.
+    r = pounding.fit.restitution(rest, "hunt-crossley")
+    pts = np.loadtxt(rest, delimiter=",", comments="#", skiprows=3)
+    a = pounding.fit.restitution(pts, "hunt-crossley")
+    for got in (r, a):
+        curve = got.pop("curve")
+        assert got == expected
+    c = expected["parameters"]["damping_constant"]
+    # The curve: e = 1 at rest, falling with v_i, and at each v_i the root of the defining relation
+    # chi - ln(1 + chi) = -chi e - ln(1 - chi e), chi = c v_i (next-physics.md section 1).
+    assert curve["e"][0] == 1.0 and np.all(np.diff(curve["e"]) < 0)
+    chi = c * curve["v_i"][1:]
+    y = chi * curve["e"][1:]
+    assert np.allclose(chi - np.log1p(chi), -y - np.log1p(-y), rtol=1e-9, atol=1e-14)
+    assert c == pytest.approx(0.3, abs=3 * expected["std_errors"]["damping_constant"])
+    hist = ROOT / "data" / "contact-tests" / "force-history-synthetic.csv"
+    args = ("--m1", "10.0531", "--v", "3.13", "--n", "1.5", "--damping-constant")
+    o = cli("fit", "force-history", str(hist), "--model", "hunt-crossley", *args, "--json")
+    assert o.returncode == 0, o.stderr
+    h = pounding.fit.force_history(hist, "hunt-crossley", m1=10.0531, v=3.13, n=1.5, damping_constant=True)
+    h.pop("curve")
+    assert h == json.loads(o.stdout)
+    with pytest.raises(pounding.InputError, match="at least 5 samples"):
+        pounding.fit.force_history([(0.0, 1.0)], "papi", m1=1.0, v=1.0)
+    with pytest.raises(pounding.InputError, match="shape"):
+        pounding.fit.restitution([1.0, 2.0, 3.0], "papi")

@@ -67,6 +67,15 @@ const POW10: [f64; 16] = [
 /// The decades of the fast path of [`push_time`]: 10^-3 to 10^6 as f64.
 const DECADES: [f64; 10] = [1e-3, 1e-2, 1e-1, 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6];
 
+/// `x` rounded to `digits` significant digits, without trailing zeros (for people, not for files).
+pub fn fmt_sig(x: f64, digits: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return fmt_num(x);
+    }
+    let f = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
+    fmt_num((x * f).round() / f)
+}
+
 /// Appends `fmt_num(t)` to `out`, fast for the output times of a history (about 30 ns where `fmt_num` takes
 /// 170): between 1e-3 and 1e6 in magnitude the 12 significant digits are the integer nearest `|t| 10^d`, which
 /// f64 arithmetic finds unless that product lies within 1e-3 of a half (its rounding error is below 1e-4,

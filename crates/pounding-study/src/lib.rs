@@ -4,6 +4,7 @@
 //!
 //! The library (`pounding`) reads no files; this crate does, and never does physics.
 
+pub mod fit;
 pub mod format;
 pub mod headline;
 pub mod ida;

@@ -91,6 +91,7 @@ pub mod calibration;
 pub mod contact;
 pub mod element;
 pub mod engine;
+pub mod fit;
 pub mod fragility;
 pub mod ground_motion;
 pub mod impact;

@@ -73,6 +73,15 @@ pub fn number(x: f64) -> String {
     }
 }
 
+/// The unit of a contact stiffness of exponent `n`: `N/m` for 1, else `N/m^n` (`N/m^1.5`).
+pub fn stiffness_unit(n: f64) -> String {
+    if n == 1.0 {
+        "N/m".to_string()
+    } else {
+        format!("N/m^{}", number(n))
+    }
+}
+
 /// Longest quoted text a message echoes whole, characters.
 const QUOTE_MAX: usize = 64;
 /// Longest bracketed list a message echoes whole, characters.

@@ -1,6 +1,7 @@
 //! The commands, one module each: validated inputs in, library calls, outputs out.
 
 mod compare;
+mod fit;
 mod ida;
 mod impact;
 mod models;
@@ -28,6 +29,7 @@ pub fn run(cmd: Command) -> Result<(), CliError> {
         Command::Separation(a) => separation::run(&a),
         Command::Report(a) => report::run(&a),
         Command::Record { cmd } => record::run(cmd),
+        Command::Fit { cmd } => fit::run(cmd),
         Command::Paper { table } => paper::run(table),
     }
 }

@@ -293,3 +293,131 @@ pub fn ida(
     });
     out
 }
+
+/// A restitution fit: the measured points and the fitted `e(v_i)` (a table: its rows joined, held beyond).
+pub fn fit_restitution(
+    points: &[(f64, f64)],
+    r: &pounding_study::fit::FitReport,
+    what: &str,
+) -> Figure {
+    let mut p = Panel::new(
+        "",
+        Quantity::new("impact velocity v_i", "m/s"),
+        Quantity::new("coefficient of restitution e", ""),
+    );
+    p.x_zero = true;
+    p.series.push(Series::points(
+        "measured",
+        points.iter().map(|q| q.0).collect(),
+        points.iter().map(|q| q.1).collect(),
+        Style {
+            width: 2.2,
+            ..Style::nth(0)
+        },
+    ));
+    let label = match r.parameters.iter().next() {
+        Some((key, v)) if v.is_number() => format!(
+            "fit: {key} = {} {}",
+            crate::output::fmt_sig(v.as_f64().unwrap_or(0.0), 4),
+            r.units.get(key).and_then(|u| u.as_str()).unwrap_or("")
+        )
+        .trim_end()
+        .to_string(),
+        _ => format!("fit: {}", r.model),
+    };
+    p.series.push(Series::line(
+        label,
+        r.curve.0.clone(),
+        r.curve.1.clone(),
+        Style::nth(1),
+    ));
+    Figure {
+        id: "fit-restitution".into(),
+        title: format!("Restitution against impact velocity, fitted ({})", r.model),
+        subtitle: what.into(),
+        panels: vec![p],
+        notes: vec![residual_note(r)],
+        ..Figure::default()
+    }
+}
+
+/// A force-history fit: the measured samples and the fitted force against time, and the residual.
+pub fn fit_force_history(
+    data: &[(f64, f64)],
+    r: &pounding_study::fit::FitReport,
+    what: &str,
+) -> Figure {
+    let force = || Quantity::new("contact force", "N");
+    let mut p = Panel::new("", time(), force());
+    p.x_tight = true;
+    p.series.push(Series::points(
+        "measured",
+        data.iter().map(|q| q.0).collect(),
+        data.iter().map(|q| q.1).collect(),
+        Style {
+            width: 2.0,
+            ..Style::nth(0)
+        },
+    ));
+    p.series.push(Series::line(
+        format!("fit: {}", r.model),
+        r.curve.0.clone(),
+        r.curve.1.clone(),
+        Style::nth(1),
+    ));
+    // The residual at each sample: the fitted force there (the curve's grid holds the samples' span) less
+    // the measurement, read on the fine curve by linear interpolation.
+    let at = |t: f64| {
+        let (x, y) = &r.curve;
+        let k = x.partition_point(|&v| v < t).clamp(1, x.len().max(2) - 1);
+        let (x0, x1, y0, y1) = (x[k - 1], x[k], y[k - 1], y[k]);
+        if x1 > x0 {
+            y0 + (y1 - y0) * (t - x0) / (x1 - x0)
+        } else {
+            y0
+        }
+    };
+    let mut q = Panel::new("residual (fit - measured)", time(), force());
+    q.x_tight = true;
+    q.legend = Legend::None;
+    q.series.push(Series::points(
+        "",
+        data.iter().map(|d| d.0).collect(),
+        data.iter().map(|d| at(d.0) - d.1).collect(),
+        Style {
+            width: 1.6,
+            shape: Shape::Square,
+            ..Style::nth(2)
+        },
+    ));
+    q.series.push(Series {
+        label: String::new(),
+        mark: super::Mark::HLine(0.0),
+        style: Style::reference(),
+    });
+    Figure {
+        id: "fit-force-history".into(),
+        title: format!("Force history of an impact, fitted ({})", r.model),
+        subtitle: what.into(),
+        panels: vec![p, q],
+        columns: 1,
+        share_x: true,
+        notes: vec![residual_note(r)],
+        ..Figure::default()
+    }
+}
+
+/// The residual of a fit, in words.
+fn residual_note(r: &pounding_study::fit::FitReport) -> String {
+    let unit = if r.residual_unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {}", r.residual_unit)
+    };
+    format!(
+        "{} points; residual rms {}{unit}, normalised {} % (the square root of the sum of squared residuals over the sum of squared data).",
+        r.points,
+        crate::output::fmt_sig(r.rms_residual, 3),
+        crate::output::fmt_sig(100.0 * r.normalised_residual, 3)
+    )
+}

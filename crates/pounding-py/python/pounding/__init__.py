@@ -7,7 +7,8 @@ dicts and pandas tables. SI units throughout (m, s, kg, N; a contact stiffness o
 - :func:`run` runs one scenario (a dict or a path) and returns a :class:`Result`;
 - :func:`sweep` runs many scenarios in parallel (Rust threads, the GIL released), optionally into a
   resumable SQLite store; :func:`pounding.dask.sweep` does the same on a Dask cluster;
-- :func:`headline` turns summaries into a table of headline results (as ``runs.csv`` of ``pounding sweep``).
+- :func:`headline` turns summaries into a table of headline results (as ``runs.csv`` of ``pounding sweep``);
+- :mod:`pounding.fit` fits contact laws to tests (restitution against impact velocity, force histories).
 
 Bad input raises :class:`InputError` (a ``ValueError``) with the command line's one-line message.
 See docs/python.md.
@@ -25,9 +26,10 @@ import numpy as np
 
 from . import _pounding
 from ._pounding import InputError
+from . import fit
 
 __version__ = _pounding.__version__
-__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation", "synthetic", "ida"]
+__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation", "synthetic", "ida", "fit"]
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 

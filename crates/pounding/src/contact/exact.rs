@@ -208,6 +208,19 @@ pub fn thornton_yield_velocity(law: &ForceLaw, m: f64) -> Option<f64> {
     }
 }
 
+/// Thornton's (1997) closed form of the restitution of elastic–perfectly-plastic spheres at impact velocity
+/// `v_i = speed * v_y` (`speed` = `v_i / v_y`, dimensionless): 1 up to yield, then with `r = 1 / speed`
+/// `e = (6 sqrt(3) / 5)^(1/2) [1 - r^2 / 6]^(1/2) { r / (r + 2 sqrt(6/5 - r^2/5)) }^(1/4)`
+/// (docs/contact-models.md section 2.7; the law's own energy balance, [`thornton_turn`], gives the same).
+pub fn thornton_e(speed: f64) -> f64 {
+    if speed <= 1.0 {
+        return 1.0;
+    }
+    let r = 1.0 / speed;
+    let c = (6.0 * 3f64.sqrt() / 5.0).sqrt();
+    c * (1.0 - r * r / 6.0).sqrt() * (r / (r + 2.0 * (1.2 - r * r / 5.0).sqrt())).powf(0.25)
+}
+
 /// A Thornton impact of kinetic energy `ke` (J): its turning point `(d_p` m, `F_p` N) and its delivered `e`,
 /// from the energy balance of the law (section 2.7 of docs/contact-models.md). Loading stores
 /// `W_y = (2/5) f_y d_y` up to yield, then `f_y D + k_p D^2 / 2` more over `D = d_p - d_y`; Hertzian unloading
@@ -263,6 +276,29 @@ mod tests {
                     "{chi} {chi_r}: {lhs} vs {big_e}"
                 );
             }
+        }
+    }
+
+    /// The law's energy balance and Thornton's printed closed form are one function of `v_i / v_y`.
+    #[test]
+    fn thornton_energy_balance_is_the_closed_form() {
+        let law = crate::contact::thornton_law(
+            2.0e10,
+            crate::contact::Sphere {
+                radius: 0.1,
+                yield_pressure: 1.0e8,
+            },
+        );
+        let m = 50.0;
+        let v_y = thornton_yield_velocity(&law, m).unwrap();
+        for speed in [0.5, 1.0, 1.0001, 1.3, 2.0, 7.0, 40.0, 1e3, 1e5] {
+            let v = speed * v_y;
+            let balance = thornton_turn(&law, 0.5 * m * v * v).2;
+            let closed = thornton_e(speed);
+            assert!(
+                (balance - closed).abs() < 1e-12,
+                "{speed}: {balance} vs {closed}"
+            );
         }
     }
 

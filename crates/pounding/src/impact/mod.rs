@@ -11,7 +11,7 @@ mod simulate;
 /// The exact single-impact relations, which live with the force laws ([`crate::contact::exact`]).
 pub use crate::contact::exact;
 
-pub use simulate::simulate;
+pub use simulate::{force_at, simulate};
 
 use crate::error::check;
 use crate::Error;

@@ -8,14 +8,17 @@ use crate::engine::{self, Dof, Ending, EventInfo, Ground, Observer, Segment, Sys
 use crate::integrate::PeakTracker;
 use crate::Error;
 
-/// Records the history (if asked), the largest force and the largest penetration of the impact.
-struct Recorder {
+/// Records the history (if asked), the force at given times (if asked), the largest force and the largest
+/// penetration of the impact.
+struct Recorder<'t> {
     history: Option<History>,
+    /// Times since touch (s, increasing) at which to read the force on the interpolant, and the forces read.
+    samples: (&'t [f64], Vec<f64>),
     peak: PeakTracker<ContactPiece>,
     max_penetration: f64,
 }
 
-impl Recorder {
+impl Recorder<'_> {
     fn record(&mut self, t: f64, d: f64, v: f64, f: f64) {
         if let Some(h) = self.history.as_mut() {
             h.t.push(t);
@@ -26,12 +29,18 @@ impl Recorder {
     }
 }
 
-impl Observer for Recorder {
+impl Observer for Recorder<'_> {
     fn segment(&mut self, seg: &Segment<'_, '_>) {
         let sys = seg.system;
         let Some(c) = sys.elements()[0].law.as_contact() else {
             return;
         };
+        // The law's phase holds over the segment (events end segments): its force on the interpolant.
+        let (times, forces) = &mut self.samples;
+        while let Some(&t) = times.get(forces.len()).filter(|&&t| t <= seg.t1) {
+            let (d, rate) = sys.deformation_at(0, seg.dense, t.max(seg.t0));
+            forces.push(c.force(d, rate, &[]));
+        }
         let (x, v) = sys.deformation_interpolants(0, seg.dense);
         if let Some(piece) = c.piece((seg.t0, seg.t1), x, v) {
             let (d, rate) = sys.deformation(0, seg.y1);
@@ -70,6 +79,39 @@ pub fn simulate(
     setup: &ImpactSetup,
     opts: &ImpactOptions,
 ) -> Result<ImpactResult, Error> {
+    integrate(law, tension, setup, opts, &[]).map(|r| r.0)
+}
+
+/// The contact force (N) of one impact (as [`simulate`]) at each of `times` (s since first touch, any
+/// order): read on the integrator's interpolant, so as accurate as the motion; 0 before touch and after the
+/// contact ends. For comparing the law with a measured force history.
+pub fn force_at(
+    law: &ForceLaw,
+    tension: Tension,
+    setup: &ImpactSetup,
+    opts: &ImpactOptions,
+    times: &[f64],
+) -> Result<Vec<f64>, Error> {
+    let mut order: Vec<usize> = (0..times.len()).collect();
+    order.sort_by(|&a, &b| times[a].total_cmp(&times[b]));
+    let first = order.partition_point(|&k| times[k] < 0.0);
+    let sorted: Vec<f64> = order[first..].iter().map(|&k| times[k]).collect();
+    let (_, read) = integrate(law, tension, setup, opts, &sorted)?;
+    let mut out = vec![0.0; times.len()];
+    for (&k, f) in order[first..].iter().zip(read) {
+        out[k] = f;
+    }
+    Ok(out)
+}
+
+/// [`simulate`], and the force at `times` (s since touch, increasing, none negative) while in contact.
+fn integrate(
+    law: &ForceLaw,
+    tension: Tension,
+    setup: &ImpactSetup,
+    opts: &ImpactOptions,
+    times: &[f64],
+) -> Result<(ImpactResult, Vec<f64>), Error> {
     let (m, v_i) = (setup.mass, setup.v_i);
     let len = law.length_scale(m, v_i);
     let tau = len / v_i;
@@ -112,6 +154,7 @@ pub fn simulate(
     let f0 = sys.elements()[0].force(0.0, v_i, &[0.0, 0.0]);
     let mut rec = Recorder {
         history: opts.history.then(History::default),
+        samples: (times, Vec::with_capacity(times.len())),
         peak: PeakTracker::new(0.0, f0),
         max_penetration: 0.0,
     };
@@ -141,7 +184,10 @@ pub fn simulate(
         }
     }
     let v_out = out.y[layout.v(0)];
-    Ok(ImpactResult {
+    let mut read = rec.samples.1;
+    // Times after the contact ended read no force.
+    read.resize(times.len(), 0.0);
+    let result = ImpactResult {
         e_post: -v_out / v_i,
         peak_force,
         time_of_peak_force,
@@ -156,5 +202,6 @@ pub fn simulate(
         v_out,
         steps: out.steps,
         history,
-    })
+    };
+    Ok((result, read))
 }

@@ -9,7 +9,7 @@
 //!
 //! Units follow the system being integrated; the stepper is unit-agnostic.
 
-mod lu;
+pub(crate) mod lu;
 mod peaks;
 mod roots;
 mod rosenbrock;

@@ -332,15 +332,6 @@ fn stiffness_exponent(unit: &str) -> Option<f64> {
     }
 }
 
-/// The unit of a stiffness with exponent `n`: `N/m` or `N/m^n`.
-fn unit_for(n: f64) -> String {
-    if n == 1.0 {
-        "N/m".to_string()
-    } else {
-        format!("N/m^{n}")
-    }
-}
-
 /// What the entry at `at` asks its contact to deliver: `e` (a number or a table) or `damping_constant`, one of
 /// them; the default `e` without either.
 fn restitution(at: &str, pair: &str, c: &LawDoc) -> Result<Restitution, SchemaError> {
@@ -400,7 +391,7 @@ fn contact_law(at: &str, pair: &str, c: &LawDoc) -> Result<ContactModel, SchemaE
                 key("stiffness"),
                 format!(
                     "{pair}: stiffness_unit is required with stiffness: \"{}\" for {} (exponent {n}), so that the stiffness keeps its meaning if the model changes",
-                    unit_for(n),
+                    crate::words::stiffness_unit(n),
                     opts.model.name(),
                 ),
             ))
@@ -418,7 +409,7 @@ fn contact_law(at: &str, pair: &str, c: &LawDoc) -> Result<ContactModel, SchemaE
                     format!(
                         "{pair}: stiffness_unit = {u:?} does not match the exponent {n} of {}: its stiffness is in {} (convert it, or set exponent = {given})",
                         opts.model.name(),
-                        unit_for(n),
+                        crate::words::stiffness_unit(n),
                     ),
                 ));
             }

@@ -7,6 +7,7 @@ mod buildings;
 mod calibration;
 mod engine;
 mod exact_relations;
+mod fit;
 mod fluid_viscous;
 mod ground_motion;
 mod inelastic;
