@@ -243,7 +243,7 @@ pub struct SynthArgs {
     /// Seed of the random numbers: the same seed gives the same record, bit for bit.
     #[arg(long)]
     pub seed: u64,
-    /// File to write (time s, acceleration m/s^2; read it with units = "m/s2").
+    /// File to write (time s, acceleration m/s^2; read it with units = "m/s2"), its folder made if missing.
     #[arg(long, value_name = "FILE")]
     pub out: std::path::PathBuf,
     /// Filters of the white noise.

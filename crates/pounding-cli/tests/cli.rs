@@ -1607,8 +1607,9 @@ fn a_free_body_impact_delivers_the_asked_e_for_every_model_by_default() {
 #[test]
 fn the_suite_recipe_gives_the_same_required_gap_from_files_as_from_the_built_ins() {
     // docs/separation.md: `record synth --seed s` into a folder, then `--records folder`. The files state
-    // their units (m/s^2); read as g they gave a required gap 9.8 times too large (issue 23).
-    let dir = tmp("suite-recipe");
+    // their units (m/s^2); read as g they gave a required gap 9.8 times too large (issue 23). The recipe's
+    // folder does not exist before its first record: record synth makes it.
+    let dir = tmp("suite-recipe").join("suite");
     for s in 1..=3 {
         let out = dir.join(format!("s{s}.csv"));
         let o = pounding(&[

@@ -52,6 +52,11 @@ fn record_synth(a: &SynthArgs) -> Result<(), CliError> {
             limit >> 20
         )));
     }
+    // A suite goes into a folder of its own (docs/separation.md): made if missing, as --out folders are.
+    if let Some(dir) = a.out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| CliError::Io(format!("cannot create {}: {e}", dir.display())))?;
+    }
     write_atomic(&a.out, text.as_bytes())
         .map_err(|e| CliError::Io(format!("cannot write {}: {e}", a.out.display())))?;
     println!(
