@@ -2406,6 +2406,27 @@ fn an_ida_of_the_isolated_moat_counts_its_wall_impacts() {
     let impacts: u64 = walls.iter().map(|w| w["impacts"].as_u64().unwrap()).sum();
     let force = walls.iter().map(|w| f(w, "peak_force")).fold(0.0, f64::max);
     assert!(impacts > 0 && force > 1e6, "{impacts} {force}");
+    // One count and one peak per wall: impacts.csv's rows of a wall, less its consumed rows (the hard law
+    // behind a consumed bumper, within the bumper's impact), are its impacts, and their largest force is its
+    // peak (a bumper row's force is the whole face's).
+    let (header, rows) = csv_cells(&dir.join("run").join("impacts.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    for w in &walls {
+        let name = w["name"].as_str().unwrap();
+        let mine: Vec<&Vec<String>> = rows.iter().filter(|r| r[col("contact")] == name).collect();
+        let own = mine
+            .iter()
+            .filter(|r| r[col("layer")] != "consumed")
+            .count() as u64;
+        let consumed = mine.len() as u64 - own;
+        assert_eq!(own, w["impacts"].as_u64().unwrap(), "{name}");
+        assert_eq!(consumed, w["consumed"].as_u64().unwrap_or(0), "{name}");
+        let largest = mine
+            .iter()
+            .map(|r| r[col("peak_force_N")].parse::<f64>().unwrap())
+            .fold(0.0, f64::max);
+        assert_eq!(largest, f(w, "peak_force"), "{name}");
+    }
     // The same run as one stripe of an IDA: the level is the example's scaled PGA.
     let pga = f(&run["record"], "pga");
     let study = dir.join("ida.toml");

@@ -75,7 +75,9 @@ pub struct ImpactRow {
     pub e_asked: Option<f64>,
     /// Delivered coefficient of restitution `-v_out / v_i` (blank if the impact had not ended, or rested).
     pub e_post: Option<f64>,
-    /// Largest contact force, N.
+    /// Largest contact force, N: on a bumper's layer the whole force on the face (the bumper and, once it is
+    /// consumed, the hard law behind it), so that the largest over a site's rows is its peak; on a consumed
+    /// row the hard law's own.
     #[serde(rename = "peak_force_N")]
     pub peak_force_n: f64,
     /// Time of the largest force, s.

@@ -3,7 +3,7 @@
 //! locate its peak, and its path kept if asked.
 
 use super::model::{ContactRef, Model};
-use super::{Impact, ImpactLoop, MAX_LOOP_POINTS};
+use super::{Impact, ImpactLoop, Layer, MAX_LOOP_POINTS};
 use crate::element::{ContactPiece, ElementLaw, Engagement, Notice};
 use crate::engine::{EventInfo, Observer, Segment, System};
 use crate::integrate::{Hermite, PeakTracker};
@@ -21,6 +21,10 @@ struct Tracker {
     recorded: Option<usize>,
     /// Its force–penetration path, if the run keeps them.
     path: Option<Path>,
+    /// The largest total force on the site's face during the impact, at the integration nodes `(t, N)`:
+    /// a bumper's impact pushes on the wall with the bumper and, once it is consumed, the hard contact
+    /// behind it.
+    face: (f64, f64),
 }
 
 /// The points of an impact's path so far. The last point is always the latest step; it stays only if it
@@ -166,7 +170,8 @@ impl Impacts {
     fn record(&mut self, k: usize, t: f64, v_out: Option<f64>, work: f64) {
         let c = &self.contacts[k];
         let tr = self.trackers[k].as_mut().expect("an impact under way");
-        let i = Self::impact(c, tr, t, v_out, work);
+        let mut i = Self::impact(c, tr, t, v_out, work);
+        // The path is the layer's own force against its own penetration, with its own located peak.
         if let Some(path) = &tr.path {
             let d = tr
                 .peak
@@ -174,6 +179,10 @@ impl Impacts {
                 .map_or(path.points.penetration[0], |p| p.at(i.time_of_peak_force).0);
             self.loops
                 .push(path.with_peak((i.time_of_peak_force, d, i.peak_force)));
+        }
+        // A bumper's impact: the whole force on the face, the site's force (one peak per site).
+        if c.layer == Layer::Bumper && tr.face.1 > i.peak_force {
+            (i.time_of_peak_force, i.peak_force) = tr.face;
         }
         self.impacts.push(i);
     }
@@ -265,6 +274,14 @@ impl Observer for Impacts {
         for (peak, f) in self.pair_peak.iter_mut().zip(&self.pair_sum) {
             *peak = peak.max(*f);
         }
+        for (k, tr) in self.trackers.iter_mut().enumerate() {
+            if let Some(tr) = tr.as_mut() {
+                let f = self.pair_sum[self.pair[k]];
+                if f > tr.face.1 {
+                    tr.face = (seg.t1, f);
+                }
+            }
+        }
         for (c, tr) in self.contacts.iter().zip(self.trackers.iter_mut()) {
             let (Some(tr), Some(ct)) = (tr.as_mut(), sys.elements()[c.element].law.as_contact())
             else {
@@ -305,6 +322,7 @@ impl Observer for Impacts {
             resting,
             recorded: None,
             path: keep.then(|| Path::new(ev.t, x - ct.gap(), ct.force(x, v, &[]))),
+            face: (ev.t, 0.0),
         };
         match notice {
             Notice::ImpactStarted { resting } => self.trackers[k] = Some(start(resting)),

@@ -27,7 +27,9 @@ pub struct Impact {
     /// velocity used to build a law ([`crate::analysis::Scenario::with_min_impact_velocity`]); its law was built with that
     /// velocity, and it has no meaningful `e_post`.
     pub resting: bool,
-    /// Largest contact force, N.
+    /// Largest contact force, N, located between steps; for an impact on a bumper's layer, the larger of
+    /// that and the whole force on the face at the integration nodes (the bumper and the hard law behind it
+    /// once consumed: the site's force).
     pub peak_force: f64,
     /// Time of the largest force, s.
     pub time_of_peak_force: f64,
