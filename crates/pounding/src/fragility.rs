@@ -31,6 +31,105 @@ impl Fragility {
     }
 }
 
+/// A seismic hazard curve: the mean annual rate (1/yr) at which the intensity measure exceeds each level
+/// (in its units), read log-log between points (a power law on each segment).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HazardCurve {
+    points: Vec<(f64, f64)>,
+}
+
+impl HazardCurve {
+    /// The curve of `points` `(IM, annual rate)`: at least two, IM increasing and > 0, rates > 0 and
+    /// decreasing. The error names the first row that is not.
+    pub fn new(points: Vec<(f64, f64)>) -> Result<Self, Error> {
+        let bad = |k: usize, allowed: &str| {
+            let (x, r) = points[k];
+            Err(Error::Choice {
+                name: "hazard",
+                value: format!(
+                    "row {} [{}, {}]",
+                    k + 1,
+                    crate::words::number(x),
+                    crate::words::number(r)
+                ),
+                allowed: allowed.to_string(),
+            })
+        };
+        if points.len() < 2 {
+            return Err(Error::Choice {
+                name: "hazard",
+                value: crate::words::count(points.len(), "row", None),
+                allowed: "at least 2 rows of intensity and annual exceedance rate (1/yr)".into(),
+            });
+        }
+        for (k, &(x, r)) in points.iter().enumerate() {
+            if !(x.is_finite() && x > 0.0 && r.is_finite() && r > 0.0) {
+                return bad(
+                    k,
+                    "an intensity > 0 and an annual rate > 0 (1/yr) in each row",
+                );
+            }
+            if k > 0 && x <= points[k - 1].0 {
+                return bad(k, "intensities increasing, row after row");
+            }
+            if k > 0 && r >= points[k - 1].1 {
+                return bad(
+                    k,
+                    "annual rates decreasing as the intensity grows (a hazard curve)",
+                );
+            }
+        }
+        Ok(Self { points })
+    }
+
+    /// The rows, `(IM, 1/yr)`.
+    pub fn points(&self) -> &[(f64, f64)] {
+        &self.points
+    }
+
+    /// The mean annual frequency (1/yr) of exceeding a limit state with fragility `f`:
+    /// `lambda = int P(im) |d lambda_IM(im)|` over the tabulated intensities, each segment a power law
+    /// integrated by 16-point Gauss–Legendre quadrature in `ln im`, plus the rate beyond the last row,
+    /// `lambda_IM(im_max) P(im_max)`, counted as exceeding with the probability at the last row (the curve
+    /// says nothing beyond it). Intensities below the first row count only through it.
+    pub fn mean_annual_frequency(&self, f: &Fragility) -> f64 {
+        self.integrate(&|x| f.probability(x))
+    }
+
+    /// `int p(im) |d lambda_IM(im)|` for any exceedance probability `p`, as [`Self::mean_annual_frequency`].
+    pub fn integrate(&self, p: &dyn Fn(f64) -> f64) -> f64 {
+        let mut total = 0.0;
+        for w in self.points.windows(2) {
+            let ((x0, r0), (x1, r1)) = (w[0], w[1]);
+            // lambda(im) = r0 (im / x0)^-k on the segment; |d lambda| = k lambda d(ln im).
+            let k = (r0 / r1).ln() / (x1 / x0).ln();
+            let (a, b) = (x0.ln(), x1.ln());
+            for (t, wt) in GAUSS_16 {
+                for sign in [-1.0, 1.0] {
+                    let u = 0.5 * (a + b) + sign * 0.5 * (b - a) * t;
+                    let x = u.exp();
+                    let lam = r0 * (x / x0).powf(-k);
+                    total += 0.5 * (b - a) * wt * k * lam * p(x);
+                }
+            }
+        }
+        let (xl, rl) = self.points[self.points.len() - 1];
+        total + rl * p(xl)
+    }
+}
+
+/// Gauss–Legendre nodes (positive half) and weights, 16 points (Abramowitz & Stegun table 25.4).
+const GAUSS_16: [(f64, f64); 8] = [
+    (0.095_012_509_837_637_44, 0.189_450_610_455_068_5),
+    (0.281_603_550_779_258_9, 0.182_603_415_044_923_6),
+    (0.458_016_777_657_227_4, 0.169_156_519_395_002_5),
+    (0.617_876_244_402_643_8, 0.149_595_988_816_576_7),
+    (0.755_404_408_355_003, 0.124_628_971_255_533_9),
+    (0.865_631_202_387_831_7, 0.095_158_511_682_492_78),
+    (0.944_575_023_073_232_6, 0.062_253_523_938_647_89),
+    (0.989_400_934_991_649_9, 0.027_152_459_411_754_09),
+];
+
 /// `erf(x)`: the Maclaurin series for `|x| < 2.5`, the continued fraction of `erfc` beyond (both to about
 /// 1e-15 relative; Abramowitz & Stegun 7.1.5 and 7.1.14).
 pub fn erf(x: f64) -> f64 {
@@ -90,6 +189,59 @@ pub fn normal_cdf(z: f64) -> f64 {
     } else {
         0.5 * (1.0 + erf(x))
     }
+}
+
+/// The standard normal quantile `Phi^-1(p)`, 0 < p < 1: Acklam's rational approximation (relative error
+/// 1.15e-9) polished by one Halley step on [`normal_cdf`], to about 1e-15.
+pub fn normal_quantile(p: f64) -> f64 {
+    const A: [f64; 6] = [
+        -3.969683028665376e1,
+        2.209460984245205e2,
+        -2.759285104469687e2,
+        1.383_577_518_672_69e2,
+        -3.066479806614716e1,
+        2.506628277459239,
+    ];
+    const B: [f64; 5] = [
+        -5.447609879822406e1,
+        1.615858368580409e2,
+        -1.556989798598866e2,
+        6.680131188771972e1,
+        -1.328068155288572e1,
+    ];
+    const C: [f64; 6] = [
+        -7.784894002430293e-3,
+        -3.223964580411365e-1,
+        -2.400758277161838,
+        -2.549732539343734,
+        4.374664141464968,
+        2.938163982698783,
+    ];
+    const D: [f64; 4] = [
+        7.784695709041462e-3,
+        3.224671290700398e-1,
+        2.445134137142996,
+        3.754408661907416,
+    ];
+    let tail = |q: f64| {
+        let t = (-2.0 * q.ln()).sqrt();
+        (((((C[0] * t + C[1]) * t + C[2]) * t + C[3]) * t + C[4]) * t + C[5])
+            / ((((D[0] * t + D[1]) * t + D[2]) * t + D[3]) * t + 1.0)
+    };
+    let x = if p < 0.02425 {
+        tail(p)
+    } else if p > 1.0 - 0.02425 {
+        -tail(1.0 - p)
+    } else {
+        let q = p - 0.5;
+        let r = q * q;
+        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
+            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
+    };
+    // Halley's step on Phi(x) - p.
+    let e = normal_cdf(x) - p;
+    let u = e * (2.0 * std::f64::consts::PI).sqrt() * (0.5 * x * x).exp();
+    x - u / (1.0 + 0.5 * x * u)
 }
 
 /// Minimises `f` over two variables by Nelder–Mead from `x0` with initial steps `step`, to a relative
@@ -265,6 +417,62 @@ pub fn fit_ida(first: &[Option<f64>], censor: f64) -> Result<Fragility, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A power-law hazard `k0 IM^-k` with a lognormal fragility has the closed form
+    /// `k0 theta^-k exp(k^2 beta^2 / 2)` (Cornell et al. 2002); a finely tabulated curve gives it.
+    #[test]
+    fn a_power_law_hazard_gives_the_closed_form_frequency() {
+        let (k0, k, theta, beta) = (4.0e-4, 2.5, 3.0, 0.45);
+        let points: Vec<(f64, f64)> = (0..=400)
+            .map(|j| {
+                let x = theta * 10f64.powf(-3.0 + 6.0 * f64::from(j) / 400.0);
+                (x, k0 * x.powf(-k))
+            })
+            .collect();
+        let h = HazardCurve::new(points).unwrap();
+        let got = h.mean_annual_frequency(&Fragility {
+            median: theta,
+            beta,
+        });
+        let want = k0 * theta.powf(-k) * (k * k * beta * beta / 2.0).exp();
+        assert!((got / want - 1.0).abs() < 1e-4, "{got} vs {want}");
+    }
+
+    #[test]
+    fn bad_hazard_curves_name_their_row() {
+        for (rows, says) in [
+            (vec![(1.0, 1e-2)], "at least 2 rows"),
+            (vec![(1.0, 1e-2), (2.0, 2e-2)], "row 2 [2, 0.02]"),
+            (vec![(1.0, 1e-2), (0.5, 1e-3)], "increasing"),
+            (vec![(1.0, 1e-2), (2.0, 0.0)], "row 2"),
+        ] {
+            let msg = HazardCurve::new(rows).unwrap_err().to_string();
+            assert!(msg.starts_with("hazard = ") && msg.contains(says), "{msg}");
+        }
+    }
+
+    /// Quantiles of the standard normal (Abramowitz & Stegun table 26.5 / scipy.stats.norm.ppf values), and
+    /// the round trip through `normal_cdf`.
+    #[test]
+    fn normal_quantiles_are_tabulated_values() {
+        for (p, z) in [
+            (0.5, 0.0),
+            (0.975, 1.959963984540054),
+            (0.9, 1.2815515655446004),
+            (0.01, -2.3263478740408408),
+            (1e-6, -4.753424308822899),
+        ] {
+            assert!(
+                (normal_quantile(p) - z).abs() < 1e-12,
+                "{p}: {}",
+                normal_quantile(p)
+            );
+        }
+        for k in 1..1000 {
+            let p = f64::from(k) / 1000.0;
+            assert!((normal_cdf(normal_quantile(p)) - p).abs() < 4e-15, "{p}");
+        }
+    }
 
     #[test]
     fn erf_and_phi_match_tabulated_values() {

@@ -13,6 +13,11 @@
 //! Eurocode 8 (EN 1998-1, 4.4.2.7) allows a factor of 0.7 where the floors are at the same height; with
 //! `aligned_factor`, each rule's estimate at such a level is multiplied by it.
 
+pub mod codes;
+pub mod linear;
+pub mod random;
+pub mod suite;
+
 use crate::analysis::{RunOptions, Scenario, SiteKind};
 use crate::Error;
 use std::ops::ControlFlow;
