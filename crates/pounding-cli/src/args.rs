@@ -7,6 +7,8 @@ use pounding::ground_motion::synthetic::{FilterKind, SyntheticParams};
 use pounding::ground_motion::Units;
 use pounding::names::Named;
 use pounding::scenario::FormatName;
+use pounding::separation::codes::{CodeName, GbSystem, GroundType};
+use pounding::separation::random::Clumping;
 use std::marker::PhantomData;
 
 /// The value parser of a named choice ([`Named`]): its names are the possible values `--help` lists, and a
@@ -74,7 +76,7 @@ pub enum Command {
     Sweep(SweepArgs),
     /// Required separation of each pair of neighbours at each contact level (from a run without contact),
     /// against the ABS, SRSS and DDC rules; over a suite of records with --records.
-    Separation(SeparationArgs),
+    Separation(Box<SeparationArgs>),
     /// Incremental dynamic analysis: records x intensity levels (Sa(T1) or PGA) as a resumable sweep, the
     /// demands of each run, and lognormal fragility curves per limit state (see docs/ida.md).
     Ida(IdaArgs),
@@ -99,6 +101,7 @@ pub enum Command {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 #[command(
     after_help = "Files in --out: separation.json (what --json prints); with --plots: separation.svg (each rule's estimate against the required gap)."
 )]
@@ -112,11 +115,138 @@ pub struct SeparationArgs {
     /// Factor on the rules at levels whose floors are at the same height (Eurocode 8: 0.7), 0 < f <= 1.
     #[arg(long)]
     pub aligned_factor: Option<f64>,
+    /// Probability of pounding to find the gap for, 0 < P < 1: within --duration of a random motion, per
+    /// record of a suite, or with --hazard over --design-life.
+    #[arg(long)]
+    pub target_probability: Option<f64>,
+    #[command(flatten)]
+    pub noise: NoiseArgs,
+    #[command(flatten)]
+    pub risk: RiskArgs,
+    #[command(flatten)]
+    pub code: CodeArgs,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
     #[command(flatten)]
     pub out: OutArgs,
+}
+
+/// A stationary random ground motion (docs/separation.md, "Probability of pounding").
+#[derive(Args, Debug)]
+#[command(next_help_heading = "Random vibration")]
+pub struct NoiseArgs {
+    /// Two-sided spectral density S0 of a white-noise ground acceleration, m^2/s^3 (E[a(t) a(t+tau)] =
+    /// 2 pi S0 delta(tau)): the probability of pounding by random vibration, instead of records.
+    #[arg(long, value_name = "S0")]
+    pub white_noise: Option<f64>,
+    /// Duration of the stationary motion, s (with --white-noise).
+    #[arg(long, requires = "white_noise")]
+    pub duration: Option<f64>,
+    /// Filter the white noise into the ground acceleration (record synth's filters) [default: none].
+    #[arg(long, value_parser = named::<FilterKind>(), requires = "white_noise")]
+    pub filter: Option<FilterKind>,
+    /// Soil filter's circular frequency, rad/s.
+    #[arg(long, default_value_t = SyntheticParams::default().wg, requires = "filter")]
+    pub wg: f64,
+    /// Soil filter's damping ratio.
+    #[arg(long, default_value_t = SyntheticParams::default().zg, requires = "filter")]
+    pub zg: f64,
+    /// Clough-Penzien high-pass filter's circular frequency, rad/s.
+    #[arg(long, default_value_t = SyntheticParams::default().wf, requires = "filter")]
+    pub wf: f64,
+    /// Its damping ratio.
+    #[arg(long, default_value_t = SyntheticParams::default().zf, requires = "filter")]
+    pub zf: f64,
+    /// How up-crossings of the gap are counted: poisson, or vanmarcke (clumped crossings of a narrow-band
+    /// closing, fewer: a lower probability).
+    #[arg(long, value_parser = named::<Clumping>(), default_value = "poisson", requires = "white_noise")]
+    pub clumping: Clumping,
+}
+
+/// Risk-targeted gaps: records scaled to intensity levels and a hazard curve.
+#[derive(Args, Debug)]
+#[command(next_help_heading = "Mean annual frequency")]
+pub struct RiskArgs {
+    /// Hazard curve: two columns, intensity (m/s^2, the --measure) and its annual exceedance rate (1/yr),
+    /// intensities increasing; with --records and --levels: the mean annual frequency of pounding.
+    #[arg(long, value_name = "FILE", requires = "levels")]
+    pub hazard: Option<std::path::PathBuf>,
+    /// Intensity levels the records are scaled to, m/s^2, comma-separated (with --hazard).
+    #[arg(long, value_delimiter = ',', requires = "hazard")]
+    pub levels: Vec<f64>,
+    /// Intensity measure of the levels and the hazard: sa (at the first period of --building) or pga.
+    #[arg(long, default_value = "sa", value_parser = ["sa", "pga"], requires = "hazard")]
+    pub measure: String,
+    /// The building whose first period sa is taken at [default: the first].
+    #[arg(long, requires = "hazard")]
+    pub building: Option<String>,
+    /// Damping ratio of sa.
+    #[arg(long, default_value_t = 0.05, requires = "hazard")]
+    pub im_damping: f64,
+    /// Target mean annual frequency of pounding, 1/yr (1/2475 = 4.04e-4): the gap for it.
+    #[arg(long, requires = "hazard")]
+    pub target_rate: Option<f64>,
+    /// Design life, yr: the probability of pounding over it; with --target-probability, the gap for that.
+    #[arg(long, requires = "hazard")]
+    pub design_life: Option<f64>,
+}
+
+/// A design code's separation.
+#[derive(Args, Debug)]
+#[command(next_help_heading = "Design codes")]
+pub struct CodeArgs {
+    /// The code's rule beside the analyses: asce7-22 (--cd, --ie), en1998-1 (--q, --qd), is1893-2016 (--r),
+    /// gb50011-2010 (--intensity, --system); the first three need a design spectrum.
+    #[arg(long, value_parser = named::<CodeName>())]
+    pub code: Option<CodeName>,
+    /// ASCE 7: deflection amplification factor C_d.
+    #[arg(long)]
+    pub cd: Option<f64>,
+    /// ASCE 7: importance factor I_e.
+    #[arg(long, default_value_t = 1.0)]
+    pub ie: f64,
+    /// EN 1998-1: behaviour factor q (also reduces the en1998-1 spectrum).
+    #[arg(long)]
+    pub q: Option<f64>,
+    /// EN 1998-1: displacement behaviour factor q_d [default: q].
+    #[arg(long)]
+    pub qd: Option<f64>,
+    /// IS 1893: response reduction factor R; ASCE 7: R, to reduce the asce7-22 spectrum by I_e / R.
+    #[arg(long)]
+    pub r: Option<f64>,
+    /// GB 50011: seismic intensity, 6 to 9.
+    #[arg(long)]
+    pub intensity: Option<u8>,
+    /// GB 50011: structural system.
+    #[arg(long, value_parser = named::<GbSystem>(), default_value = "frame")]
+    pub system: GbSystem,
+    /// The design spectrum of the code's elastic analysis: two columns, period (s) and Sa (m/s^2), 5 %
+    /// damping (for ASCE 7 and IS 1893 the spectrum already divided by R / I; for EN 1998-1 S_d).
+    #[arg(long, value_name = "FILE", conflicts_with = "spectrum")]
+    pub design_spectrum: Option<std::path::PathBuf>,
+    /// The code's own spectrum shape instead: asce7-22 (--sds, --sd1, --tl, with --r and --ie) or en1998-1
+    /// (--ag, --ground-type, --spectrum-type, with --q).
+    #[arg(long, value_parser = ["asce7-22", "en1998-1"])]
+    pub spectrum: Option<String>,
+    /// ASCE 7: S_DS, g.
+    #[arg(long)]
+    pub sds: Option<f64>,
+    /// ASCE 7: S_D1, g.
+    #[arg(long)]
+    pub sd1: Option<f64>,
+    /// ASCE 7: long-period transition T_L, s.
+    #[arg(long)]
+    pub tl: Option<f64>,
+    /// EN 1998-1: design ground acceleration on type A ground a_g, m/s^2.
+    #[arg(long)]
+    pub ag: Option<f64>,
+    /// EN 1998-1: ground type, A to E.
+    #[arg(long, value_parser = named::<GroundType>(), default_value = "B")]
+    pub ground_type: GroundType,
+    /// EN 1998-1: spectrum type, 1 or 2.
+    #[arg(long, default_value_t = 1)]
+    pub spectrum_type: u8,
 }
 
 #[derive(Args, Debug)]

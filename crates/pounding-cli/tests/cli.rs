@@ -3635,3 +3635,215 @@ fn fits_give_back_the_laws_their_data_were_made_with_and_their_lines_run() {
         assert!(err.contains(says), "{args:?}: {err}");
     }
 }
+
+/// `pounding separation` beyond one record: white noise (the issue's two-SDOF check values), a suite's
+/// lognormal fit (the closed-form MLE of its records' required gaps), the codes under a flat spectrum, the
+/// mean annual frequency with a hazard curve, and one line for what cannot be asked.
+#[test]
+fn separation_gives_probabilities_codes_and_annual_frequencies() {
+    let dir = tmp("separation-decision");
+    let two = example("two-sdof.toml");
+    let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+    // Exactly 0.5 and 1.0 s (the example's stiffnesses are rounded): 4 pi^2 m / T^2.
+    let text = std::fs::read_to_string(&two)
+        .unwrap()
+        .replace(
+            "7.8957e7",
+            &format!("{:e}", 4.0 * std::f64::consts::PI.powi(2) * 5e5 / 0.25),
+        )
+        .replace(
+            "1.9739e7",
+            &format!("{:e}", 4.0 * std::f64::consts::PI.powi(2) * 5e5),
+        );
+    for (gap, p) in [(0.06, 0.998361), (0.08, 0.906840), (0.10, 0.483727)] {
+        let path = dir.join(format!("sdofs-{gap}.toml"));
+        std::fs::write(&path, text.replace("gap = 0.02", &format!("gap = {gap}"))).unwrap();
+        let v = json(&[
+            "separation",
+            path.to_str().unwrap(),
+            "--white-noise",
+            "0.01",
+            "--duration",
+            "20",
+            "--target-probability",
+            "0.1",
+        ]);
+        let l = &v["pairs"][0]["levels"][0];
+        assert!(rel(f(l, "sigma"), 3.752697e-2) < 1e-6, "{l}");
+        assert!(rel(f(l, "nu0"), 1.151302) < 1e-6, "{l}");
+        assert!(rel(f(l, "probability"), p) < 1e-5, "{l}");
+        assert!(rel(f(l, "gap_for_target"), 0.123178) < 1e-5, "{l}");
+    }
+    // A suite: the fit is the closed-form lognormal MLE of the per-record required gaps.
+    let v = json(&[
+        "separation",
+        &two,
+        "--records",
+        "synthetic-1..8",
+        "--target-probability",
+        "0.2",
+    ]);
+    let gaps: Vec<f64> = v["records"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| f(&r["pairs"][0]["levels"][0], "required_gap"))
+        .collect();
+    let logs: Vec<f64> = gaps.iter().map(|g| g.ln()).collect();
+    let m = logs.iter().sum::<f64>() / 8.0;
+    let beta = (logs.iter().map(|x| (x - m).powi(2)).sum::<f64>() / 8.0).sqrt();
+    let s = &v["statistics"]["pairs"][0]["levels"][0];
+    assert!(rel(f(&s["fit"], "median"), m.exp()) < 1e-9, "{s}");
+    assert!(rel(f(&s["fit"], "dispersion"), beta) < 1e-9, "{s}");
+    // Gap for P = 0.2 from the fit: theta exp(beta z_0.8), z_0.8 = 0.8416212335729143.
+    let want = m.exp() * (beta * 0.8416212335729143).exp();
+    assert!(rel(f(s, "gap_for_target"), want) < 1e-9, "{s}");
+    // Empirically: at most 1.6 of 8 records above, so 1: the 7th smallest gap.
+    let mut sorted = gaps.clone();
+    sorted.sort_by(f64::total_cmp);
+    assert_eq!(f(s, "gap_for_target_empirical"), sorted[6]);
+    // The codes under a flat design spectrum (the issue's check values), floors at one height.
+    let flat = dir.join("flat.csv");
+    std::fs::write(&flat, "period_s,sa_m_per_s2\n0,2\n10,2\n").unwrap();
+    let sdofs = dir.join("sdofs-0.06.toml");
+    for (args, want) in [
+        (vec!["--code", "asce7-22", "--cd", "5.5"], 0.287209),
+        (vec!["--code", "en1998-1", "--q", "3.9"], 0.142560),
+        (vec!["--code", "is1893-2016", "--r", "5"], 0.158314),
+    ] {
+        let mut a = vec![
+            "separation",
+            sdofs.to_str().unwrap(),
+            "--design-spectrum",
+            flat.to_str().unwrap(),
+        ];
+        a.extend(args.iter());
+        let v = json(&a);
+        let g = f(&v["pairs"][0]["levels"][0], "code_required_gap");
+        assert!(rel(g, want) < 1e-5, "{args:?}: {g} vs {want}");
+    }
+    // The mean annual frequency falls with the gap and the gap for the target lies where it crosses it.
+    let hazard = dir.join("hazard.csv");
+    let rows: String = (0..40)
+        .map(|j| {
+            let x = 0.1 * 10f64.powf(2.0 * f64::from(j) / 39.0);
+            format!("{x},{}\n", 1e-3 * x.powf(-2.5))
+        })
+        .collect();
+    std::fs::write(&hazard, rows).unwrap();
+    let v = json(&[
+        "separation",
+        &two,
+        "--records",
+        "synthetic-1..6",
+        "--hazard",
+        hazard.to_str().unwrap(),
+        "--levels",
+        "1,2,4,6",
+        "--target-rate",
+        "1e-3",
+    ]);
+    let l = &v["pairs"][0]["levels"][0];
+    let curve: Vec<f64> = l["curve"]["annual_frequency"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert!(
+        curve.windows(2).all(|w| w[1] <= w[0] * (1.0 + 1e-9)),
+        "{curve:?}"
+    );
+    assert!(f(l, "gap_for_target") > 0.0);
+    // Linear buildings: each record's required gap grows in proportion to its scale, so the intensity at
+    // which it first needs more than g is g IM_i / G_i (G_i its gap at scale 1, IM_i its intensity), and
+    // with a power-law hazard k0 IM^-k the frequency is k0 theta^-k exp(k^2 beta^2 / 2) (Cornell et al.
+    // 2002) for the lognormal (theta, beta) of those intensities. A finely tabulated hazard, to 1e-4.
+    let fine = dir.join("hazard-fine.csv");
+    let rows: String = (0..=600)
+        .map(|j| {
+            let x = 1e-3 * 10f64.powf(6.0 * f64::from(j) / 600.0);
+            format!("{x},{}\n", 1e-3 * x.powf(-2.5))
+        })
+        .collect();
+    std::fs::write(&fine, rows).unwrap();
+    let v = json(&[
+        "separation",
+        &two,
+        "--records",
+        "synthetic-1..6",
+        "--hazard",
+        fine.to_str().unwrap(),
+        "--levels",
+        "1,2,4",
+        "--measure",
+        "pga",
+    ]);
+    let ims: Vec<f64> = v["risk"]["record_intensities"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let scale_one = json(&["separation", &two, "--records", "synthetic-1..6"]);
+    let g0: Vec<f64> = scale_one["records"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| f(&r["pairs"][0]["levels"][0], "required_gap"))
+        .collect();
+    let gap = 0.02;
+    let logs: Vec<f64> = g0
+        .iter()
+        .zip(&ims)
+        .map(|(g, im)| (gap * im / g).ln())
+        .collect();
+    let m = logs.iter().sum::<f64>() / logs.len() as f64;
+    let b = (logs.iter().map(|x| (x - m).powi(2)).sum::<f64>() / logs.len() as f64).sqrt();
+    let want = 1e-3 * (m.exp()).powf(-2.5) * (2.5f64 * 2.5 * b * b / 2.0).exp();
+    let got = f(&v["pairs"][0]["levels"][0], "annual_frequency");
+    assert!(rel(got, want) < 1e-4, "{got} vs {want}");
+    // One line for what cannot be asked.
+    for (args, says) in [
+        (
+            vec!["--white-noise", "-1", "--duration", "20"],
+            "--white-noise -1 is not allowed",
+        ),
+        (vec!["--white-noise", "0.01"], "--duration is required"),
+        (
+            vec![
+                "--white-noise",
+                "0.01",
+                "--duration",
+                "20",
+                "--target-probability",
+                "1.5",
+            ],
+            "--target-probability 1.5 is not allowed",
+        ),
+        (vec!["--code", "asce7-22", "--cd", "5"], "design spectrum"),
+        (vec!["--code", "asce7-22"], "--cd is required"),
+        (
+            vec!["--code", "gb50011-2010", "--intensity", "10"],
+            "--intensity 10 is not allowed",
+        ),
+    ] {
+        let mut a = vec!["separation", two.as_str()];
+        a.extend(args.iter());
+        let err = one_line_error(&a);
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+    let bad = dir.join("bad-hazard.csv");
+    std::fs::write(&bad, "1,1e-3\n2,2e-3\n").unwrap();
+    let err = one_line_error(&[
+        "separation",
+        &two,
+        "--records",
+        "synthetic-1",
+        "--hazard",
+        bad.to_str().unwrap(),
+        "--levels",
+        "1",
+    ]);
+    assert!(err.contains("decreasing"), "{err}");
+}

@@ -522,13 +522,14 @@ fn spectrum(
 /// The separation report (JSON text) of a scenario (JSON text, or the file at `path`) under its record or
 /// each of `records`; `aligned_factor` multiplies the rules at aligned floors.
 #[pyfunction]
-#[pyo3(signature = (scenario=None, path=None, records=Vec::new(), aligned_factor=None))]
+#[pyo3(signature = (scenario=None, path=None, records=Vec::new(), aligned_factor=None, options=None))]
 fn separation(
     py: Python<'_>,
     scenario: Option<&str>,
     path: Option<&str>,
     records: Vec<String>,
     aligned_factor: Option<f64>,
+    options: Option<&str>,
 ) -> PyResult<String> {
     let (value, label) = match (scenario, path) {
         (_, Some(p)) => {
@@ -543,20 +544,26 @@ fn separation(
         ),
         (None, None) => return Err(input_err("scenario: give a dict or a path")),
     };
+    let doc: Value = match options {
+        Some(text) => serde_json::from_str(text)
+            .map_err(|e| input_err(format!("options: not a JSON object: {e}")))?,
+        None => Value::Object(serde_json::Map::new()),
+    };
+    let options = pounding_study::separation::options_from_json(&doc, records, aligned_factor)
+        .map_err(|r| input_err(pounding_study::separation::message(r)))?;
     let mut interrupted = None;
     let v = py.allow_threads(|| {
         pounding_study::separation::report_with(
             &value,
             &label,
-            &records,
-            aligned_factor,
+            &options,
             &mut ctrl_c(&mut interrupted),
         )
     });
     if let Some(e) = interrupted {
         return Err(e);
     }
-    let v = v.map_err(|(k, m)| input_err(dict_message(k, m)))?;
+    let v = v.map_err(|r| input_err(pounding_study::separation::message(r)))?;
     json_text(&v)
 }
 

@@ -751,3 +751,36 @@ def test_fits_give_the_numbers_of_the_command_line():
         pounding.fit.force_history([(0.0, 1.0)], "papi", m1=1.0, v=1.0)
     with pytest.raises(pounding.InputError, match="shape"):
         pounding.fit.restitution([1.0, 2.0, 3.0], "papi")
+
+
+def test_separation_probability_codes_and_risk_match_the_command_line(tmp_path):
+    base = pounding.load_scenario(EXAMPLE)
+    # Random vibration: the command line's numbers, key for key.
+    o = cli("separation", str(EXAMPLE), "--white-noise", "0.01", "--duration", "20", "--target-probability", "0.1", "--json")
+    assert o.returncode == 0, o.stderr
+    r = pounding.separation(base, white_noise=0.01, duration=20.0, target_probability=0.1)
+    expected = json.loads(o.stdout)
+    assert r["pairs"] == expected["pairs"]
+    assert r["pairs"][0]["levels"][0]["nu0"] == pytest.approx(1.1513, rel=1e-3)
+    # A code under a flat spectrum: 5.5 x sqrt(d1^2 + d2^2) with d = Sa / w^2.
+    code = {"name": "asce7-22", "cd": 5.5, "design_spectrum": [[0.0, 2.0], [10.0, 2.0]]}
+    c = pounding.separation(base, code=code)
+    level = c["pairs"][0]["levels"][0]
+    periods = [b["periods"][0] for b in pounding.run(base, histories=False).summary["buildings"]]
+    d = [2.0 / (2 * np.pi / t) ** 2 for t in periods]
+    assert level["code_required_gap"] == pytest.approx(5.5 * np.hypot(*d), rel=1e-9)
+    # A suite's fit is the lognormal MLE of its records' gaps.
+    s = pounding.separation(base, records=["synthetic-1", "synthetic-2", "synthetic-3"], target_probability=0.2)
+    gaps = np.array([rec["pairs"][0]["levels"][0]["required_gap"] for rec in s["records"]])
+    fit = s["statistics"]["pairs"][0]["levels"][0]["fit"]
+    assert fit["median"] == pytest.approx(np.exp(np.mean(np.log(gaps))), rel=1e-12)
+    assert fit["dispersion"] == pytest.approx(np.std(np.log(gaps)), rel=1e-12)
+    # The hazard as a dict: a frequency that falls with the gap.
+    curve = [[x, 1e-3 * x ** -2.5] for x in np.geomspace(0.1, 10.0, 30)]
+    h = pounding.separation(base, records=["synthetic-1", "synthetic-2"], hazard={"curve": curve, "levels": [1.0, 2.0], "target_rate": 1e-3})
+    f = h["pairs"][0]["levels"][0]["curve"]["annual_frequency"]
+    assert all(b <= a * (1 + 1e-9) for a, b in zip(f, f[1:]))
+    with pytest.raises(pounding.InputError, match="duration is required"):
+        pounding.separation(base, white_noise=0.01)
+    with pytest.raises(pounding.InputError, match="cd is required"):
+        pounding.separation(base, code={"name": "asce7-22"})

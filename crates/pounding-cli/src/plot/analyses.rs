@@ -1,9 +1,10 @@
 //! Figures of the analyses beyond one run: a record and its response spectra, the required separation against
 //! the code rules, and an IDA's curves and fragility functions.
 
-use super::{Figure, Legend, Panel, Quantity, Series, Shape, Style, PLOT};
+use super::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Shape, Style, PLOT};
 use pounding::ground_motion::spectrum::Spectrum;
 use pounding::ground_motion::Record;
+use pounding::separation::random::Clumping;
 use pounding::separation::Level;
 use pounding_study::ida::{FitJson, FragilityJson};
 use pounding_study::separation::SeparationReport;
@@ -111,7 +112,7 @@ pub fn separation(report: &SeparationReport, subtitle: &str) -> Figure {
     for (i, (rule, estimate)) in rules.iter().enumerate() {
         let (mut x, mut y) = (Vec::new(), Vec::new());
         for pairs in &runs {
-            for l in pairs.iter().flat_map(|p| &p.levels) {
+            for l in pairs.iter().flat_map(|p| &p.levels).map(|l| &l.level) {
                 let (g, e) = (l.required_gap, estimate(l));
                 x.push(g);
                 y.push(e);
@@ -146,6 +147,238 @@ pub fn separation(report: &SeparationReport, subtitle: &str) -> Figure {
         panels: vec![p],
         columns: 1,
         plot: (PLOT.0, 320.0),
+        ..Figure::default()
+    }
+}
+
+/// The probability of pounding against the gap, one curve per contact level (a colour each): under a
+/// random motion the Rice–Poisson curve; over a suite the fitted lognormal (line) and the records'
+/// fraction (steps); the contact's gap (dotted), the target probability (dashed) and a code's gap marked.
+pub fn separation_probability(report: &SeparationReport, subtitle: &str) -> Figure {
+    let mut p = Panel::new(
+        "",
+        Quantity::new("gap", "m"),
+        Quantity::new("probability of pounding", ""),
+    );
+    p.x_zero = true;
+    p.y_range = Some((0.0, 1.0));
+    p.legend = Legend::Right;
+    let mut k = 0;
+    let mut codes = Vec::new();
+    let mut target = None;
+    match report {
+        SeparationReport::WhiteNoise(n) => {
+            target = n.target_probability;
+            let duration = n.white_noise["duration"].as_f64().unwrap_or(1.0);
+            let clumping = match n.white_noise["clumping"].as_str() {
+                Some("vanmarcke") => Clumping::Vanmarcke,
+                _ => Clumping::Poisson,
+            };
+            for pair in &n.pairs {
+                for l in &pair.levels {
+                    let top = 5.0 * l.crossing.sigma;
+                    let g: Vec<f64> = (0..=120).map(|j| top * f64::from(j) / 120.0).collect();
+                    let pr = g
+                        .iter()
+                        .map(|&x| l.crossing.probability(x, duration, clumping))
+                        .collect();
+                    let name = format!("{} {}-{}", pair.between.join("|"), l.floors.0, l.floors.1);
+                    p.series.push(Series::line(name, g, pr, Style::level(k)));
+                    codes.extend(
+                        l.code_required_gap
+                            .zip(l.probability_at_code_gap)
+                            .map(|(c, pc)| (c, pc, k, format!("{}-{}", l.floors.0, l.floors.1))),
+                    );
+                    k += 1;
+                }
+            }
+        }
+        SeparationReport::Suite {
+            records,
+            statistics,
+            target_probability,
+            ..
+        } => {
+            target = *target_probability;
+            for (pi, pair) in statistics.pairs.iter().enumerate() {
+                for (li, l) in pair.levels.iter().enumerate() {
+                    let mut gaps: Vec<f64> = records
+                        .iter()
+                        .map(|r| r.pairs[pi].levels[li].level.required_gap)
+                        .collect();
+                    gaps.sort_by(f64::total_cmp);
+                    let top = 1.3 * gaps.last().copied().unwrap_or(0.0);
+                    let name = format!("{} {}-{}", pair.between.join("|"), l.floors.0, l.floors.1);
+                    // The records' fraction above each gap: a step down at each record's gap.
+                    let n = gaps.len() as f64;
+                    let (mut x, mut y) = (
+                        vec![0.0],
+                        vec![gaps.iter().filter(|g| **g > 0.0).count() as f64 / n],
+                    );
+                    for (i, g) in gaps.iter().enumerate().filter(|(_, g)| **g > 0.0) {
+                        x.extend([*g, *g]);
+                        y.extend([*y.last().unwrap_or(&0.0), (n - i as f64 - 1.0) / n]);
+                    }
+                    x.push(top);
+                    y.push(0.0);
+                    let step = Style {
+                        width: 1.0,
+                        dash: Dash::Dotted,
+                        ..Style::level(k)
+                    };
+                    p.series
+                        .push(Series::line(format!("{name}, records"), x, y, step));
+                    if let Some(f) = l.fit {
+                        let g: Vec<f64> = (0..=120).map(|j| top * f64::from(j) / 120.0).collect();
+                        let pr = g.iter().map(|&x| f.probability(x)).collect();
+                        p.series.push(Series::line(
+                            format!("{name}, lognormal fit"),
+                            g,
+                            pr,
+                            Style::level(k),
+                        ));
+                    }
+                    codes.extend(
+                        l.code_required_gap
+                            .zip(l.probability_at_code_gap)
+                            .map(|(c, pc)| (c, pc, k, format!("{}-{}", l.floors.0, l.floors.1))),
+                    );
+                    k += 1;
+                }
+            }
+        }
+        SeparationReport::One { .. } | SeparationReport::Risk(_) => {}
+    }
+    if let Some(t) = target {
+        p.series.push(Series {
+            label: format!("target P = {t}"),
+            mark: Mark::HLine(t),
+            style: Style::reference(),
+        });
+    }
+    for (c, pc, k, floors) in codes {
+        p.series.push(Series::points(
+            format!(
+                "code's gap, {floors}: P = {}",
+                crate::output::fmt_sig(pc, 3)
+            ),
+            vec![c],
+            vec![pc],
+            Style {
+                width: 4.0,
+                shape: Shape::Triangle,
+                ..Style::level(k)
+            },
+        ));
+    }
+    Figure {
+        id: "separation-probability".into(),
+        title: "Probability of pounding against the gap, by contact level".into(),
+        subtitle: subtitle.into(),
+        panels: vec![p],
+        columns: 1,
+        plot: (PLOT.0, 320.0),
+        ..Figure::default()
+    }
+}
+
+/// The mean annual frequency of pounding against the gap, per contact level (log axis), with the target.
+pub fn separation_risk(report: &SeparationReport, subtitle: &str) -> Figure {
+    let mut p = Panel::new(
+        "",
+        Quantity::new("gap", "m"),
+        Quantity::new("mean annual frequency of pounding", "1/yr"),
+    );
+    p.x_zero = true;
+    p.y_log = true;
+    p.legend = Legend::Right;
+    let mut lo = f64::INFINITY;
+    let mut hi = 0.0f64;
+    let mut notes = Vec::new();
+    if let SeparationReport::Risk(r) = report {
+        let mut k = 0;
+        for pair in &r.pairs {
+            for l in &pair.levels {
+                let (g, f): (Vec<f64>, Vec<f64>) = l
+                    .curve
+                    .gaps
+                    .iter()
+                    .zip(&l.curve.annual_frequency)
+                    .filter(|(_, f)| **f > 0.0)
+                    .map(|(g, f)| (*g, *f))
+                    .unzip();
+                for &x in &f {
+                    lo = lo.min(x);
+                    hi = hi.max(x);
+                }
+                let name = format!("{} {}-{}", pair.between.join("|"), l.floors.0, l.floors.1);
+                p.series.push(Series::line(name, g, f, Style::level(k)));
+                k += 1;
+            }
+        }
+        if let Some(t) = r.risk["target_rate"].as_f64() {
+            lo = lo.min(t);
+            hi = hi.max(t);
+            p.series.push(Series {
+                label: format!("target {} /yr", crate::output::fmt_sig(t, 3)),
+                mark: Mark::HLine(t),
+                style: Style::reference(),
+            });
+        }
+        notes.push(format!(
+            "For each gap, the intensity ({}) at which each record first needs more (runs without contact at each level, read between levels and in proportion beyond) makes a lognormal fragility, integrated over the hazard curve.",
+            r.risk["measure"].as_str().unwrap_or("")
+        ));
+    }
+    if hi > 0.0 {
+        p.y_range = Some((lo / 2.0, hi * 2.0));
+    }
+    let mut panels = vec![p];
+    if let SeparationReport::Risk(r) = report {
+        if let Some(life) = r.risk["design_life"].as_f64() {
+            let mut q = Panel::new(
+                format!(
+                    "over a design life of {} years",
+                    crate::output::fmt_sig(life, 4)
+                ),
+                Quantity::new("gap", "m"),
+                Quantity::new("probability of pounding", ""),
+            );
+            q.x_zero = true;
+            q.y_range = Some((0.0, 1.0));
+            q.legend = Legend::None;
+            let mut k = 0;
+            for pair in &r.pairs {
+                for l in &pair.levels {
+                    let pr = l
+                        .curve
+                        .annual_frequency
+                        .iter()
+                        .map(|f| -(-f * life).exp_m1())
+                        .collect();
+                    q.series
+                        .push(Series::line("", l.curve.gaps.clone(), pr, Style::level(k)));
+                    k += 1;
+                }
+            }
+            if let Some(p) = r.risk["target_probability"].as_f64() {
+                q.series.push(Series {
+                    label: String::new(),
+                    mark: Mark::HLine(p),
+                    style: Style::reference(),
+                });
+            }
+            panels.push(q);
+        }
+    }
+    Figure {
+        id: "separation-risk".into(),
+        title: "Mean annual frequency of pounding against the gap".into(),
+        subtitle: subtitle.into(),
+        panels,
+        columns: 1,
+        plot: (PLOT.0, 320.0),
+        notes,
         ..Figure::default()
     }
 }

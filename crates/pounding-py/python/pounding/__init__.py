@@ -327,22 +327,64 @@ def separation(
     scenario: Scenario,
     records: Optional[Iterable[Union[str, "os.PathLike[str]"]]] = None,
     aligned_factor: Optional[float] = None,
+    target_probability: Optional[float] = None,
+    white_noise: Optional[float] = None,
+    duration: Optional[float] = None,
+    filter: Optional[Dict[str, Any]] = None,
+    clumping: str = "poisson",
+    code: Optional[Dict[str, Any]] = None,
+    hazard: Optional[Dict[str, Any]] = None,
 ) -> Dict[str, Any]:
     """The required separation of each pair of neighbours at each contact level, from a run without contact,
     against the ABS, SRSS and DDC rules (docs/separation.md): the JSON of ``pounding separation --json`` as a
     dict. ``scenario`` is a dict or a path; ``records`` (built-in names or files) replace its record, one run
-    each, and add the mean, median and 84th percentile over them; ``aligned_factor`` (Eurocode 8: 0.7)
-    multiplies the rules where the floors are at the same height."""
+    each, and add the mean, median and 84th percentile over them, and the probability that a record pounds
+    (a lognormal fit and the records' fraction); ``aligned_factor`` (Eurocode 8: 0.7) multiplies the rules
+    where the floors are at the same height; ``target_probability`` asks the gap for a probability.
+
+    ``white_noise`` (S0, m^2/s^3, two-sided) with ``duration`` (s): the probability of pounding under a
+    stationary random ground acceleration instead of records, through ``filter`` (a dict: ``kind``
+    ``"kanai-tajimi"`` or ``"clough-penzien"``, ``wg``, ``zg``, ``wf``, ``zf``) if given, crossings counted by
+    ``clumping`` (``"poisson"`` or ``"vanmarcke"``).
+
+    ``code``: a dict with ``name`` (``"asce7-22"``, ``"en1998-1"``, ``"is1893-2016"``, ``"gb50011-2010"``), its
+    parameters (``cd``, ``ie``; ``q``, ``qd``; ``r``; ``intensity``, ``system``) and ``design_spectrum`` (rows
+    ``[T s, Sa m/s^2]``) or ``spectrum`` (``{"shape": "asce7-22", "sds", "sd1", "tl"}`` with ``r``, or
+    ``{"shape": "en1998-1", "ag", "ground_type", "spectrum_type"}`` with ``q``).
+
+    ``hazard``: a dict with ``curve`` (rows ``[IM m/s^2, annual rate 1/yr]``), ``levels`` (m/s^2; the records
+    scaled to each), ``measure`` (``"sa"`` or ``"pga"``), ``building``, ``damping``, ``target_rate`` (1/yr) or
+    ``design_life`` (yr, with ``target_probability``): the mean annual frequency of pounding against the gap."""
     if isinstance(records, (str, bytes, os.PathLike)):
         raise InputError(f"records = {_short(records)} is not allowed: a list of records (write [{_short(records)}])")
     recs = [] if records is None else [_fspath("records", r) for r in _items("records", records, "records")]
     if aligned_factor is not None:
         aligned_factor = _number("aligned_factor", aligned_factor)
+    options: Dict[str, Any] = {}
+    if target_probability is not None:
+        options["target_probability"] = _number("target_probability", target_probability)
+    if white_noise is not None:
+        if duration is None:
+            raise InputError("duration is required with white_noise: how long the stationary motion lasts, s")
+        wn: Dict[str, Any] = {"s0": _number("white_noise", white_noise), "duration": _number("duration", duration), "clumping": clumping}
+        if filter is not None:
+            if not isinstance(filter, dict):
+                raise InputError(f"filter = {_short(filter)} is not allowed: a dict with kind, wg, zg (wf, zf)")
+            wn["filter"] = filter
+        options["white_noise"] = wn
+    elif duration is not None or filter is not None:
+        raise InputError("duration and filter are not allowed without white_noise")
+    for key, value in (("code", code), ("hazard", hazard)):
+        if value is not None:
+            if not isinstance(value, dict):
+                raise InputError(f"{key} = {_short(value)} is not allowed: a dict (see help(pounding.separation))")
+            options[key] = value
+    text = _json(options, "options")
     if isinstance(scenario, (str, os.PathLike)):
-        text = _pounding.separation(path=os.fspath(scenario), records=recs, aligned_factor=aligned_factor)
+        out = _pounding.separation(path=os.fspath(scenario), records=recs, aligned_factor=aligned_factor, options=text)
     else:
-        text = _pounding.separation(scenario=_json(scenario), records=recs, aligned_factor=aligned_factor)
-    return json.loads(text)
+        out = _pounding.separation(scenario=_json(scenario), records=recs, aligned_factor=aligned_factor, options=text)
+    return json.loads(out)
 
 
 def synthetic(seed: int, **params: Any) -> Dict[str, Any]:

@@ -47,6 +47,8 @@ pub fn cqc_correlation(w_l: f64, z_l: f64, w_r: f64, z_r: f64) -> f64 {
 pub struct Level {
     /// Floors (of the left building, of the right), from 1.
     pub floors: (usize, usize),
+    /// The contact's gap at rest, m (what the scenario gives the site).
+    pub gap: f64,
     /// Peak displacement of the left building's floor, m.
     pub peak_left: f64,
     /// Peak displacement of the right building's floor, m.
@@ -137,6 +139,7 @@ pub fn separation_with(
                 };
                 Level {
                     floors: (i, j),
+                    gap: site.gap,
                     peak_left: pl,
                     peak_right: pr,
                     // max(u_l - u_r) <= max|u_l| + max|u_r| exactly; the two sides are located peaks
