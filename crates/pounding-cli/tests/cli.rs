@@ -1446,7 +1446,7 @@ fn bad_studies_get_one_line_exit_2_and_leave_the_store_untouched() {
         ),
         (
             "scale = [1.0, nan]",
-            "axes.scale.1 = NaN is not allowed: a finite number",
+            "axes.scale.1 = nan is not allowed: a finite number",
         ),
     ];
     for (i, (axes, needle)) in cases.iter().enumerate() {
@@ -1835,6 +1835,11 @@ fn ida_fits_fragility_curves_resumes_and_refuses_bad_studies() {
         (
             "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nmeasure = 5\nbuilding = \"right\"\nlevels = [1.0]\n",
             "measure = 5 is not allowed: one of \"sa\", \"pga\"",
+        ),
+        // JSON, which the study becomes, has no NaN: named by key, not read as a null.
+        (
+            "records = [\"synthetic-1..3\"]\nlimit_states = [\"pounding\"]\n[intensity]\nbuilding = \"right\"\nlevels = [1.0, nan]\n",
+            "intensity.levels.1 = nan is not allowed: a finite number",
         ),
         // The run limit of a sweep holds for an IDA, checked before any record is read.
         (
@@ -3050,6 +3055,63 @@ fn the_common_unit_slips_are_warned_on_stderr_and_in_the_summary() {
         dir.join("plain").to_str().unwrap(),
     ]);
     assert_eq!(plain["warnings"], serde_json::json!([]));
+}
+
+#[test]
+fn non_finite_numbers_of_a_scenario_name_their_key_line_and_value() {
+    // TOML has nan and inf; JSON, which a scenario becomes, has not: they were read as null, and the
+    // message was `invalid type: null, expected f64`.
+    let dir = tmp("non-finite");
+    let base = std::fs::read_to_string(example("two-sdof.toml")).unwrap();
+    let cases = [
+        (
+            "scale = 1.0",
+            "scale = nan",
+            "10: ground_motion.scale = nan",
+        ),
+        (
+            "scale = 1.0",
+            "scale = inf",
+            "10: ground_motion.scale = inf",
+        ),
+        (
+            "scale = 1.0",
+            "scale = -inf",
+            "10: ground_motion.scale = -inf",
+        ),
+        (
+            "stiffness = 2.0e9",
+            "stiffness = nan",
+            "34: contact.0.stiffness = nan",
+        ),
+        (
+            "masses = [5.0e5]            # kg",
+            "masses = [+inf]",
+            "17: building.0.masses.0 = inf",
+        ),
+    ];
+    for (from, to, says) in cases {
+        let text = base.replacen(from, to, 1);
+        assert_ne!(text, base, "{to}");
+        let file = dir.join("s.toml");
+        std::fs::write(&file, text).unwrap();
+        let out = dir.join("out");
+        let err = one_line_error(&[
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            err.trim_end(),
+            format!(
+                "error: {}:{says} is not allowed: a finite number",
+                file.display()
+            ),
+            "{to}"
+        );
+        assert!(!out.exists());
+    }
 }
 
 #[test]

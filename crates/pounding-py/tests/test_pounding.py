@@ -287,7 +287,11 @@ def test_bad_input_raises_the_command_lines_message(tmp_path, base):
         pounding.run(d)
     d = copy.deepcopy(base)
     d["building"][0]["masses"] = [float("nan")]
-    with pytest.raises(pounding.InputError, match="^scenario: Out of range float values"):
+    with pytest.raises(pounding.InputError, match=r"^building\.0\.masses\.0 = nan is not allowed: a finite number$"):
+        pounding.run(d)
+    d = copy.deepcopy(base)
+    d["ground_motion"]["scale"] = float("-inf")
+    with pytest.raises(pounding.InputError, match=r"^ground_motion\.scale = -inf is not allowed: a finite number$"):
         pounding.run(d)
 
 
@@ -556,7 +560,7 @@ def test_synthetic_reads_its_parameters_as_the_library_does(tmp_path):
         (dict(pgaa=2.0), r"^pgaa: unknown field `pgaa` \(did you mean `pga`\?\), expected one of"),
         (dict(filter="clough-penzein"), r'^filter = "clough-penzein" is not allowed \(did you mean "clough-penzien"\?\): one of kanai-tajimi, clough-penzien$'),
         (dict(wg="fast"), r'^wg: invalid type: string "fast", expected f64$'),
-        (dict(dt=float("nan")), r"^synthetic: Out of range float values"),
+        (dict(dt=float("nan")), r"^dt = nan is not allowed: a finite number$"),
     ]
     for kw, message in bad:
         with pytest.raises(pounding.InputError, match=message):

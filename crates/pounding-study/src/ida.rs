@@ -211,9 +211,7 @@ impl Ida {
     pub fn read(path: &Path) -> Result<Ida, InputError> {
         let text =
             read_text_file(path, "study file", SCENARIO_FILE_LIMIT).map_err(InputError::new)?;
-        let table: toml::Table =
-            toml::from_str(&text).map_err(|e| err(path, e.message().trim().replace('\n', " ")))?;
-        let top = serde_json::to_value(table).map_err(|e| err(path, e))?;
+        let top = crate::input::study_json(path, &text)?;
         for k in top.as_object().into_iter().flat_map(|o| o.keys()) {
             if !["scenario", "records", "limit_states", "intensity"].contains(&k.as_str()) {
                 return Err(err(

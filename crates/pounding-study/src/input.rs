@@ -196,6 +196,15 @@ impl ScenarioFile {
                 None => InputError::new(format!("{}: {msg}", path.display())),
             }
         })?;
+        // JSON, which a scenario becomes, has no NaN or infinity (they would be nulls): said here, by key.
+        if let Some((key, x)) = non_finite(&table) {
+            return Err(InputError::new(format!(
+                "{}:{}: {key} = {} is not allowed: a finite number",
+                path.display(),
+                key_line(&text, &key).max(1),
+                toml_float(x)
+            )));
+        }
         let mut value = serde_json::to_value(table)
             .map_err(|e| InputError::new(format!("{}: {e}", path.display())))?;
         resolve_record_file(&mut value, path.parent().unwrap_or(Path::new(".")));
@@ -290,6 +299,49 @@ pub(crate) fn dotted_child(key: &str, k: &str) -> String {
         k.to_string()
     } else {
         format!("{key}.{k}")
+    }
+}
+
+/// The first number of `table` that is NaN or infinite, with its dotted key. TOML has them (`nan`, `inf`),
+/// JSON, which scenarios and studies become, does not: converted, they would be nulls.
+pub fn non_finite(table: &toml::Table) -> Option<(String, f64)> {
+    fn find(key: &str, v: &toml::Value) -> Option<(String, f64)> {
+        let child = |k: &str| dotted_child(key, k);
+        match v {
+            toml::Value::Float(x) if !x.is_finite() => Some((key.to_string(), *x)),
+            toml::Value::Table(t) => t.iter().find_map(|(k, v)| find(&child(k), v)),
+            toml::Value::Array(a) => a
+                .iter()
+                .enumerate()
+                .find_map(|(i, v)| find(&child(&i.to_string()), v)),
+            _ => None,
+        }
+    }
+    table.iter().find_map(|(k, v)| find(k, v))
+}
+
+/// A study file's `text` (read from `path`) as JSON: a TOML error, or a number that is NaN or infinite (JSON
+/// has neither), is one line naming the file (and the key).
+pub fn study_json(path: &Path, text: &str) -> Result<Value, InputError> {
+    let err = |msg: String| InputError::new(format!("{}: {msg}", path.display()));
+    let table: toml::Table =
+        toml::from_str(text).map_err(|e| err(e.message().trim().replace('\n', " ")))?;
+    if let Some((key, x)) = non_finite(&table) {
+        return Err(err(format!(
+            "{key} = {} is not allowed: a finite number",
+            toml_float(x)
+        )));
+    }
+    serde_json::to_value(table).map_err(|e| err(e.to_string()))
+}
+
+/// A number that is not finite as TOML writes it: `nan` (`-nan`), `inf`, `-inf`.
+pub fn toml_float(x: f64) -> &'static str {
+    match (x.is_nan(), x.is_sign_negative()) {
+        (true, false) => "nan",
+        (true, true) => "-nan",
+        (false, false) => "inf",
+        (false, true) => "-inf",
     }
 }
 

@@ -292,20 +292,6 @@ fn apply(scenario: &mut Value, name: &str, v: &Value) -> Result<(), String> {
     }
 }
 
-/// The first number of `v` that is NaN or infinite, with its dotted key.
-fn non_finite(key: &str, v: &toml::Value) -> Option<(String, f64)> {
-    let child = |k: &str| crate::input::dotted_child(key, k);
-    match v {
-        toml::Value::Float(x) if !x.is_finite() => Some((key.to_string(), *x)),
-        toml::Value::Table(t) => t.iter().find_map(|(k, v)| non_finite(&child(k), v)),
-        toml::Value::Array(a) => a
-            .iter()
-            .enumerate()
-            .find_map(|(i, v)| non_finite(&child(&i.to_string()), v)),
-        _ => None,
-    }
-}
-
 /// The scenario keys (dotted paths) that the setting `name` writes.
 fn targets(name: &str) -> Vec<&str> {
     match name {
@@ -348,16 +334,7 @@ impl Study {
     pub fn read(path: &Path) -> Result<Study, InputError> {
         let text =
             read_text_file(path, "study file", SCENARIO_FILE_LIMIT).map_err(InputError::new)?;
-        let table: toml::Table =
-            toml::from_str(&text).map_err(|e| err(path, e.message().trim().replace('\n', " ")))?;
-        // JSON, which scenarios become, has no NaN or infinity: said here, by key, not as a null later.
-        if let Some((key, x)) = non_finite("", &toml::Value::Table(table.clone())) {
-            return Err(err(
-                path,
-                format!("{key} = {x} is not allowed: a finite number"),
-            ));
-        }
-        let top = serde_json::to_value(table).map_err(|e| err(path, e))?;
+        let top = crate::input::study_json(path, &text)?;
         let Value::Object(top) = top else {
             return Err(err(path, "not a table"));
         };

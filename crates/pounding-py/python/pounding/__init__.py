@@ -17,6 +17,7 @@ See docs/python.md.
 from __future__ import annotations
 
 import json
+import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -48,12 +49,40 @@ def _json(scenario: Dict[str, Any], what: str = "scenario") -> str:
     schema would refuse them."""
     if not isinstance(scenario, dict):
         raise InputError(f"{what}: a dict or a path, not {type(scenario).__name__}")
+    bad = _non_finite(scenario)
+    if bad is not None:
+        key, x = bad
+        word = "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf")
+        raise InputError(f"{key or what} = {word} is not allowed: a finite number")
     try:
         return json.dumps(scenario, allow_nan=False, default=_plain)
     except (TypeError, ValueError) as e:
         raise InputError(f"{what}: {e}") from None
     except RecursionError:
         raise InputError(f"{what}: lists or dicts nested too deeply; allowed: the tables of docs/scenarios.md") from None
+
+
+def _non_finite(v: Any, key: str = "", depth: int = 0) -> Optional[Tuple[str, float]]:
+    """The first number of ``v`` that is NaN or infinite (JSON has neither), with its dotted key as scenario
+    messages name keys (``building.0.masses.0``)."""
+    if depth > 200:
+        return None  # json.dumps says it is nested too deeply
+    child = (lambda k: f"{key}.{k}" if key else str(k))
+    if isinstance(v, (float, np.floating)):
+        return None if math.isfinite(v) else (key, float(v))
+    if isinstance(v, dict):
+        items: Any = v.items()
+    elif isinstance(v, (list, tuple)):
+        items = enumerate(v)
+    elif isinstance(v, np.ndarray) and v.dtype.kind == "f":
+        items = enumerate(v.ravel().tolist())
+    else:
+        return None
+    for k, x in items:
+        found = _non_finite(x, child(k), depth + 1)
+        if found is not None:
+            return found
+    return None
 
 
 def _fspath(key: str, v: Any) -> str:
