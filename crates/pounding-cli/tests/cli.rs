@@ -3156,6 +3156,29 @@ fn every_error_fits_its_line_whatever_it_echoes() {
             base.replace("[analysis]", "[analysis]\ntolerance = 1e300"),
             "tolerance = 1e300 is not allowed: 1e-12 <= tolerance <= 1e-3",
         ),
+        // A key of 5000 characters was echoed whole twice, in the key's path and in serde's backticks.
+        (
+            "key",
+            base.replace("scale = 1.0", &format!("{} = 1.0", "k".repeat(5000))),
+            ":10: ground_motion: unknown field `kkkkkkkk",
+        ),
+        (
+            "key-list",
+            base.replacen("\ne = 0.65", &format!("\n{} = 0.65", "k".repeat(5000)), 1),
+            "...` (5000 characters), expected one of `between`, `gap`, ",
+        ),
+        // A misspelt key's list of allowed keys was cut mid-list, without a count.
+        (
+            "misspelt",
+            base.replacen("\ne = 0.65", "\nyeld_ratio = 0.65", 1),
+            "contact.0.yeld_ratio: unknown field `yeld_ratio` (did you mean `yield_ratio`?), expected one of `between`, ",
+        ),
+        // A model name was cut at 64 characters without its length.
+        (
+            "model",
+            base.replacen("model = \"papi\"", &format!("model = \"{}\"", "m".repeat(500)), 1),
+            "...\" (500 characters) is not allowed: one of hooke, hertz, ",
+        ),
     ];
     for (what, text, says) in cases {
         assert_ne!(text, base, "{what}");
@@ -3176,6 +3199,14 @@ fn every_error_fits_its_line_whatever_it_echoes() {
             err.contains(says) && !err.trim_end().ends_with(" ..."),
             "{what}: {err}"
         );
+        // A list of allowed names ends the line whole: its first names, then how many there are.
+        if ["key-list", "misspelt", "model"].contains(&what) {
+            let tail = err.trim_end().rsplit_once(", ... (").map(|t| t.1);
+            assert!(
+                tail.is_some_and(|t| t.ends_with(" in all)")),
+                "{what}: {err}"
+            );
+        }
         assert!(!out.exists());
     }
     let o = pounding(&[

@@ -286,6 +286,10 @@ def test_bad_input_raises_the_command_lines_message(tmp_path, base):
     with pytest.raises(pounding.InputError, match=r"^contact\.0\.gapp: unknown field `gapp`"):
         pounding.run(d)
     d = copy.deepcopy(base)
+    d["contact"][0]["k" * 5000] = 1
+    with pytest.raises(pounding.InputError, match=r"^contact\.0: unknown field `k{56}\.\.\.` \(5000 characters\), expected one of `between`, .*, \.\.\. \(\d+ in all\)$"):
+        pounding.run(d)
+    d = copy.deepcopy(base)
     d["building"][0]["masses"] = [float("nan")]
     with pytest.raises(pounding.InputError, match=r"^building\.0\.masses\.0 = nan is not allowed: a finite number$"):
         pounding.run(d)

@@ -199,9 +199,10 @@ impl ScenarioFile {
         // JSON, which a scenario becomes, has no NaN or infinity (they would be nulls): said here, by key.
         if let Some((key, x)) = non_finite(&table) {
             return Err(InputError::new(format!(
-                "{}:{}: {key} = {} is not allowed: a finite number",
+                "{}:{}: {} = {} is not allowed: a finite number",
                 path.display(),
                 key_line(&text, &key).max(1),
+                shown_key(&key),
                 toml_float(x)
             )));
         }
@@ -280,14 +281,14 @@ pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)>
         let msg = if key.is_empty() {
             "the scenario is a list; allowed: a table of named keys (docs/scenarios.md)".to_string()
         } else {
-            format!("{key} is a list; allowed here: a table of named keys or a single value (docs/scenarios.md)")
+            format!("{} is a list; allowed here: a table of named keys or a single value (docs/scenarios.md)", shown_key(&key))
         };
         return Err((Some(key), msg));
     }
     if let Some((key, x)) = tiny_number("", value) {
         return Err((
             Some(key.clone()),
-            format!("{key} = {x:e} is not allowed: 0, or at least 1e-30 in magnitude (limits::MIN_MAGNITUDE: smaller numbers are zero for any structure and slow the analysis)"),
+            format!("{} = {x:e} is not allowed: 0, or at least 1e-30 in magnitude (limits::MIN_MAGNITUDE: smaller numbers are zero for any structure and slow the analysis)", shown_key(&key)),
         ));
     }
     parse_value(value)
@@ -328,7 +329,8 @@ pub fn study_json(path: &Path, text: &str) -> Result<Value, InputError> {
         toml::from_str(text).map_err(|e| err(e.message().trim().replace('\n', " ")))?;
     if let Some((key, x)) = non_finite(&table) {
         return Err(err(format!(
-            "{key} = {} is not allowed: a finite number",
+            "{} = {} is not allowed: a finite number",
+            shown_key(&key),
             toml_float(x)
         )));
     }
@@ -370,14 +372,69 @@ pub fn parse_value<T: serde::de::DeserializeOwned>(
 ) -> Result<T, (Option<String>, String)> {
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
-        let inner = suggest_field(&e.into_inner().to_string());
+        let inner = cut_expected(&suggest_field(&e.into_inner().to_string()));
         if path == "." || path.is_empty() {
-            (Some(String::new()), inner)
-        } else {
-            let path = dotted(&path);
-            (Some(path.clone()), format!("{path}: {inner}"))
+            return (Some(String::new()), inner);
         }
+        let path = dotted(&path);
+        // An unknown key over 64 characters is named once, cut, by the message itself (`unknown field
+        // `kkk...` (5000 characters)`): the message is put at its table, not under the key again.
+        let shown = match path.rsplit_once('.') {
+            Some((table, last)) if inner.starts_with("unknown field `") && too_long(last) => {
+                shown_key(table)
+            }
+            None if inner.starts_with("unknown field `") && too_long(&path) => {
+                return (Some(path), inner);
+            }
+            _ => shown_key(&path),
+        };
+        (Some(path), format!("{shown}: {inner}"))
     })
+}
+
+/// Longest part of a dotted key that messages show whole, characters (as quoted names).
+const KEY_PART_MAX: usize = 64;
+
+fn too_long(part: &str) -> bool {
+    part.chars().count() > KEY_PART_MAX
+}
+
+/// The dotted `key` as messages show it: a part over 64 characters (a misspelt key pasted whole) cut as
+/// quoted names are, `kkkkkkkkkkkkkkkk... (5000 characters)`.
+pub fn shown_key(key: &str) -> String {
+    key.split('.')
+        .map(|part| {
+            if too_long(part) {
+                let head: String = part.chars().take(16).collect();
+                format!("{head}... ({} characters)", part.chars().count())
+            } else {
+                part.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(".")
+}
+
+/// Most characters of serde's list of expected names (`expected one of `a`, `b`, ...`) a message shows:
+/// the rest is counted, so that the line ends with what is allowed, whole.
+const EXPECTED_MAX: usize = 100;
+
+/// serde's `..., expected one of `a`, `b`, ...` with a long list cut after its first names, with its count
+/// (`..., ... (33 in all)`).
+fn cut_expected(msg: &str) -> String {
+    const ONE_OF: &str = ", expected one of ";
+    let Some(at) = msg.find(ONE_OF) else {
+        return msg.to_string();
+    };
+    let (head, list) = msg.split_at(at + ONE_OF.len());
+    let names: Vec<&str> = list.split(", ").collect();
+    let all_names = names
+        .iter()
+        .all(|n| n.len() >= 2 && n.starts_with('`') && n.ends_with('`'));
+    if !all_names || list.len() <= EXPECTED_MAX {
+        return msg.to_string();
+    }
+    format!("{head}{}", pounding::words::list(&names, EXPECTED_MAX))
 }
 
 /// serde's `unknown field `scael`, expected one of `record`, ..., `scale`` with `; did you mean "scale"?`
@@ -401,18 +458,35 @@ fn dotted(path: &str) -> String {
     path.replace('[', ".").replace(']', "")
 }
 
-/// A dict's message: `key: message` (the key is the dotted path; none for the whole scenario).
+/// A dict's message: `key: message` (the key is the dotted path, as [`shown_key`] shows it; none for the
+/// whole scenario), unless the message already starts with the key or one of the tables it is in
+/// (`key: ...`, `[key] ...`, `key = ...`, `key is ...`).
 pub fn dict_message(key: Option<String>, msg: String) -> String {
-    match key {
-        Some(k)
-            if !k.is_empty()
-                && !msg.starts_with(&format!("{k}:"))
-                && !msg.starts_with(&format!("[{k}]")) =>
-        {
-            format!("{k}: {msg}")
+    let Some(k) = key.filter(|k| !k.is_empty()) else {
+        return msg;
+    };
+    let named = |p: &str| {
+        let p = shown_key(p);
+        [
+            format!("{p}:"),
+            format!("[{p}]"),
+            format!("{p} = "),
+            format!("{p} is "),
+        ]
+        .iter()
+        .any(|start| msg.starts_with(start))
+    };
+    let mut at = k.as_str();
+    loop {
+        if named(at) {
+            return msg;
         }
-        _ => msg,
+        match at.rsplit_once('.') {
+            Some((table, _)) => at = table,
+            None => break,
+        }
     }
+    format!("{}: {msg}", shown_key(&k))
 }
 
 /// 1-based line of byte `offset` of `text`.

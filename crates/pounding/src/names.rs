@@ -33,25 +33,15 @@ pub trait Named: Sized + Copy + 'static {
 }
 
 /// The message for a `given` name that is none of `T`'s: the closest name first, then the names allowed
-/// (a long list cut after about 120 characters, so that the message stays one short line).
+/// (a long list cut after about 80 characters, with its count, so that the message stays one short line).
 pub fn unknown<T: Named>(given: &str) -> String {
     let names = T::names();
-    let mut list = String::new();
-    for (k, n) in names.iter().enumerate() {
-        if k > 0 && list.len() + n.len() > 120 {
-            list.push_str(&format!(", ... ({} in all)", names.len()));
-            break;
-        }
-        if k > 0 {
-            list.push_str(", ");
-        }
-        list.push_str(n);
-    }
     format!(
-        "{} = {} is not allowed{}: one of {list}",
+        "{} = {} is not allowed{}: one of {}",
         T::WHAT,
         words::quoted(given, 64),
         words::did_you_mean(given, names.iter().copied()),
+        words::list(&names, 80),
     )
 }
 

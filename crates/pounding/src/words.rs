@@ -52,13 +52,43 @@ pub fn did_you_mean<'a>(given: &str, allowed: impl IntoIterator<Item = &'a str>)
     closest(given, allowed).map_or(String::new(), |n| format!(" (did you mean {n:?}?)"))
 }
 
-/// `s` quoted as Rust writes strings, cut after `max` characters with an ellipsis: a name echoed in a
-/// message stays short whatever was given.
+/// `s` quoted as Rust writes strings; over `max` characters (as written, escapes included) cut as
+/// [`compact`] cuts a quoted name, with an ellipsis inside the quotes and its length:
+/// `"LLLL..." (5000 characters)`. A name echoed in a message stays short whatever was given.
 pub fn quoted(s: &str, max: usize) -> String {
-    match s.char_indices().nth(max) {
-        Some((i, _)) => format!("{:?}...", &s[..i]),
-        None => format!("{s:?}"),
+    let whole = format!("{s:?}");
+    if whole.chars().count() <= max + 2 {
+        return whole;
     }
+    let mut head = String::new();
+    let mut len = 0;
+    for c in s.chars() {
+        let e: String = c.escape_debug().collect();
+        len += e.chars().count();
+        if len > max.saturating_sub(8) {
+            break;
+        }
+        head.push_str(&e);
+    }
+    format!("\"{head}...\" ({} characters)", s.chars().count())
+}
+
+/// `names` joined with `, `, cut after the names that fit in about `max` characters with `, ... (N in all)`:
+/// a list of what is allowed that ends its line whole, however many names it has.
+pub fn list<S: AsRef<str>>(names: &[S], max: usize) -> String {
+    let mut out = String::new();
+    for (k, n) in names.iter().enumerate() {
+        let n = n.as_ref();
+        if k > 0 && out.len() + 2 + n.len() > max {
+            out.push_str(&format!(", ... ({} in all)", names.len()));
+            break;
+        }
+        if k > 0 {
+            out.push_str(", ");
+        }
+        out.push_str(n);
+    }
+    out
 }
 
 /// `x` as a message shows it: the shortest text that reads back to the same value, in plain digits from
@@ -90,9 +120,10 @@ const LIST_MAX: usize = 120;
 const DIGITS_MAX: usize = 24;
 
 /// `msg` with what it echoes kept short, so that any message fits its line: a number written out in full
-/// (`1000...0`, 301 digits) in its shortest form (`1e300`), a quoted name over 64 characters cut with an
-/// ellipsis and its length, a bracketed list over 120 characters cut after its first entries with an
-/// ellipsis and its count. The rest of the message, and what it says is allowed, is kept whole.
+/// (`1000...0`, 301 digits) in its shortest form (`1e300`), a name quoted (`"..."`) or in backticks (serde's
+/// `` `...` ``) over 64 characters cut with an ellipsis and its length, a bracketed list over 120 characters
+/// cut after its first entries with an ellipsis and its count. The rest of the message, and what it says is
+/// allowed, is kept whole.
 pub fn compact(msg: &str) -> String {
     let c: Vec<char> = msg.chars().collect();
     let mut out = String::with_capacity(msg.len().min(1024));
@@ -102,6 +133,10 @@ pub fn compact(msg: &str) -> String {
         let end = match c[i] {
             '"' => closing_quote(&c, i),
             '[' => closing_bracket(&c, i),
+            '`' => c[i + 1..]
+                .iter()
+                .position(|&b| b == '`')
+                .map_or(c.len(), |k| i + 1 + k),
             _ => 0,
         };
         if end >= c.len() {
@@ -110,11 +145,11 @@ pub fn compact(msg: &str) -> String {
             continue;
         }
         match c[i] {
-            '"' => {
+            q @ ('"' | '`') => {
                 let inner = &c[i + 1..end.min(c.len())];
                 if inner.len() > QUOTE_MAX {
                     let head: String = inner[..QUOTE_MAX - 8].iter().collect();
-                    out.push_str(&format!("\"{head}...\" ({} characters)", inner.len()));
+                    out.push_str(&format!("{q}{head}...{q} ({} characters)", inner.len()));
                 } else {
                     out.extend(&c[i..(end + 1).min(c.len())]);
                 }
@@ -131,7 +166,7 @@ pub fn compact(msg: &str) -> String {
             }
             _ => {
                 let start = i;
-                while i < c.len() && c[i] != '"' && c[i] != '[' {
+                while i < c.len() && !matches!(c[i], '"' | '[' | '`') {
                     i += 1;
                 }
                 let plain: String = c[start..i].iter().collect();
@@ -276,12 +311,42 @@ mod tests {
             "{msg}"
         );
         assert!(msg.starts_with("between = [\"n0\", \"n1\", "), "{msg}");
+        // Names in backticks (serde's unknown fields) are cut the same way.
+        let key = "k".repeat(5000);
+        assert_eq!(
+            compact(&format!("unknown field `{key}`, expected `a` or `b`")),
+            format!(
+                "unknown field `{}...` (5000 characters), expected `a` or `b`",
+                "k".repeat(56)
+            )
+        );
         // An unmatched quote or bracket is text: nothing after it is lost.
         let open = format!("expected `\"` or `[` at {}", "x".repeat(200));
         assert_eq!(compact(&open), open);
         // Short names, lists and numbers pass unchanged.
         let plain = "contact.0.gap = -0.01 is not allowed: gap >= 0 (m); [\"A\", \"B\"] \"x\"";
         assert_eq!(compact(plain), plain);
+    }
+
+    #[test]
+    fn long_names_are_quoted_as_compact_cuts_them_and_lists_end_with_their_count() {
+        assert_eq!(quoted("papi", 64), "\"papi\"");
+        let q = quoted(&"m".repeat(500), 64);
+        assert_eq!(q, format!("\"{}...\" (500 characters)", "m".repeat(56)));
+        // compact leaves it as it is: one cut, one length.
+        assert_eq!(compact(&q), q);
+        // Escapes count as written, and are never split.
+        let q = quoted(&"\u{1b}".repeat(100), 64);
+        assert!(
+            q.starts_with("\"\\u{1b}") && q.ends_with("...\" (100 characters)"),
+            "{q}"
+        );
+        assert_eq!(compact(&q), q);
+        let names: Vec<String> = (0..40).map(|i| format!("`name{i}`")).collect();
+        let l = list(&names, 100);
+        assert!(l.len() < 120 && l.ends_with(", ... (40 in all)"), "{l}");
+        assert!(l.starts_with("`name0`, `name1`, "), "{l}");
+        assert_eq!(list(&["a", "b"], 100), "a, b");
     }
 
     const MODELS: [&str; 5] = [

@@ -1,3 +1,4 @@
 //! Integration tests of `pounding-study`: one test binary, one module per subject.
 
+mod messages;
 mod schemas;
