@@ -46,3 +46,42 @@ pub fn input(msg: impl Into<String>) -> CliError {
 pub fn flag(key: &str) -> String {
     format!("--{key}")
 }
+
+/// A map of errors for one impact set up by `options` (flag and value): scales outside
+/// [`pounding::impact::SCALE_RANGE`] are said in the words of those options (`--m1 1e300, --m2 inf, --v 1 and
+/// --k 1e9 are not allowed together: ...`), `with` saying how they make the mass `m` and the velocity `v`;
+/// any other error as usual.
+pub fn impact_scales<'a>(
+    options: &'a [(&'a str, f64)],
+    with: &'a str,
+) -> impl Fn(pounding::Error) -> CliError + 'a {
+    move |e| match e {
+        pounding::Error::ScaleOutOfRange { .. } => {
+            let shown: Vec<String> = options
+                .iter()
+                .map(|(name, v)| format!("--{name} {}", as_typed(*v)))
+                .collect();
+            let given = match shown.split_last() {
+                Some((last, [])) => last.clone(),
+                Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+                None => "the options".into(),
+            };
+            input(format!(
+                "{given} are not allowed together: {with}, {}",
+                pounding::impact::scales_allowed("m", "v")
+            ))
+        }
+        other => other.into(),
+    }
+}
+
+/// `x` as one would type it: its shortest text, in scientific notation from 1e6 on and under 1e-3 (`1e9`,
+/// `3e10`, `2400`, `0.5`, `inf`).
+fn as_typed(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-3..1e6).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}

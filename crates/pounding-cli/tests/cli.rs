@@ -222,7 +222,7 @@ fn bad_input_gets_one_line_exit_2_and_no_file() {
             &[
                 "impact", "--model", "papi", "--e", "0.5", "--m1", "1e300", "--v", "1e-300",
             ],
-            "floating-point",
+            "--m1 1e300, --m2 inf, --v 1e-300 and --k 1e9 are not allowed together",
         ),
     ];
     for (args, names) in cases {
@@ -2049,6 +2049,83 @@ fn one_line_error(args: &[&str]) -> String {
     assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
     assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
     err
+}
+
+#[test]
+fn an_impact_out_of_the_range_of_floating_point_numbers_names_the_options_that_set_it() {
+    // It said "an impact with effective mass 1e300 kg ... outside the range of floating-point numbers",
+    // naming neither an option nor what is allowed.
+    let allowed = "are not allowed together: with m = m1 m2 / (m1 + m2), m v, m v^2, d = (m v^2 / k)^(1/(n+1)) and d / v must each be from 2.3e-294 to 1.7e294 (SI units)";
+    for (args, given) in [
+        (
+            vec!["impact", "--model", "papi", "--e", "0.65", "--m1", "1e300"],
+            "--m1 1e300, --m2 inf, --v 1 and --k 1e9",
+        ),
+        (
+            vec!["impact", "--model", "papi", "--e", "0.65", "--v", "1e300"],
+            "--m1 100000, --m2 inf, --v 1e300 and --k 1e9",
+        ),
+        (
+            vec![
+                "impact",
+                "--model",
+                "jankowski",
+                "--e",
+                "0.5",
+                "--m1",
+                "1e300",
+            ],
+            "--m1 1e300, --m2 inf, --v 1 and --k 1e9",
+        ),
+        (
+            vec![
+                "impact", "--model", "hertz", "--m1", "1e-200", "--k", "1e300",
+            ],
+            "--m1 1e-200, --m2 inf, --v 1 and --k 1e300",
+        ),
+        (
+            vec![
+                "compare",
+                "--models",
+                "papi,hertz",
+                "--e",
+                "0.5",
+                "--m2",
+                "1e300",
+                "--m1",
+                "1e300",
+            ],
+            "--m1 1e300, --m2 1e300, --v 1 and --k 1e10",
+        ),
+    ] {
+        let err = one_line_error(&args);
+        assert_eq!(
+            err.trim_end(),
+            format!("error: {given} {allowed}"),
+            "{args:?}"
+        );
+    }
+    let err = one_line_error(&[
+        "drop",
+        "--model",
+        "hertzdamp",
+        "--e",
+        "0.65",
+        "--radius",
+        "0.1",
+        "--youngs-modulus",
+        "30e9",
+        "--poisson",
+        "0.2",
+        "--height",
+        "1e300",
+    ]);
+    assert!(
+        err.starts_with("error: --radius 0.1, --density 2400, --height 1e300 and --youngs-modulus 3e10 are not allowed together: with m the ball's mass, v = sqrt(2 g height) and k its Hertz stiffness, ")
+            && err.trim_end().ends_with(" must each be from 2.3e-294 to 1.7e294 (SI units)")
+            && err.trim_end().chars().count() < 300,
+        "{err}"
+    );
 }
 
 #[test]

@@ -49,13 +49,25 @@ pub enum Error {
         /// Time reached, s.
         t: f64,
     },
-    /// The impact's scales of length, time, momentum or energy leave the range of `f64`.
-    #[error("an impact with effective mass {} kg, v_i = {} m/s and this stiffness has length, time or energy scales outside the range of floating-point numbers", crate::words::number(*mass), crate::words::number(*v_i))]
+    /// The impact's scales of length, time, momentum or energy leave the range of `f64` (more precisely,
+    /// [`SCALE_RANGE`]): the impact's `mass`, `v_i` and its law's `k` and `n` set them.
+    #[error(
+        "mass = {} kg, v_i = {} m/s and k = {} {} are not allowed together: {}",
+        crate::words::number(*mass),
+        crate::words::number(*v_i),
+        crate::words::number(*k),
+        crate::words::stiffness_unit(*n),
+        scales_allowed("mass", "v_i")
+    )]
     ScaleOutOfRange {
         /// Effective mass, kg.
         mass: f64,
         /// Impact velocity, m/s.
         v_i: f64,
+        /// Stiffness of the law (its loading stiffness), N/m^n.
+        k: f64,
+        /// Exponent of the law.
+        n: f64,
     },
     /// The analysis would take (or took) more integration steps than its budget.
     #[error("the analysis needs more than {allowed:e} integration steps ({reason}); allowed: at most {allowed:e} (the work budget, limits::MAX_WORK by default, over the number of states + 8)")]
@@ -118,4 +130,19 @@ pub(crate) fn check(
             allowed,
         })
     }
+}
+
+/// The range every scale of an impact must lie in, SI units: its momentum `m v_i`, its energy `m v_i^2`,
+/// its penetration `d = (m v_i^2 / k)^(1/(n+1))` and its duration `d / v_i`. [`crate::impact::simulate`]
+/// controls its error at a relative tolerance down to 1e-14 of each, which must stay a normal finite number.
+pub const SCALE_RANGE: (f64, f64) = (2.3e-294, 1.7e294);
+
+/// What [`SCALE_RANGE`] allows, in words, with the mass and the velocity called `m` and `v`:
+/// `m v, m v^2, d = (m v^2 / k)^(1/(n+1)) and d / v must each be from 2.3e-294 to 1.7e294 (SI units)`.
+pub fn scales_allowed(m: &str, v: &str) -> String {
+    format!(
+        "{m} {v}, {m} {v}^2, d = ({m} {v}^2 / k)^(1/(n+1)) and d / {v} must each be from {} to {} (SI units)",
+        crate::words::number(SCALE_RANGE.0),
+        crate::words::number(SCALE_RANGE.1)
+    )
 }

@@ -2,7 +2,7 @@
 
 use crate::args::CompareArgs;
 use crate::describe::bodies_text;
-use crate::error::{flag, input, CliError};
+use crate::error::{flag, impact_scales, input, CliError};
 use crate::files::{check_out, save_out};
 use crate::output::{fmt_num, fmt_sig, num};
 use crate::plot::figures::{self, ForceHistory};
@@ -35,10 +35,23 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
             "--radius and --yield-pressure are not allowed without thornton in --models: they are its spheres'",
         ));
     }
+    let b = a.bodies;
+    let given = [("m1", b.m1), ("m2", b.m2), ("v", b.v), ("k", a.k)];
+    let scales = impact_scales(&given, super::impact::TWO_BODIES);
     let mut runs = Vec::new();
     for &model in &a.models {
         let n = model.info().default_n;
         let k = pounding::impact::equivalent_stiffness(a.k, setup.mass, setup.v_i, n);
+        // The stiffness of the model's exponent that matches --k at this impact: beyond f64, so are the
+        // impact's scales (it is not --k that is wrong).
+        if !(k.is_finite() && k > 0.0) {
+            return Err(scales(pounding::Error::ScaleOutOfRange {
+                mass: setup.mass,
+                v_i: setup.v_i,
+                k,
+                n,
+            }));
+        }
         // Thornton's spheres take the radius and yield pressure; the other models are asked e.
         let thornton = model == Model::Thornton;
         let options = ContactOptions {
@@ -51,8 +64,8 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
             OptionError::Value(v) => CliError::from(v),
             other => input(other.message(flag)),
         })?;
-        let (law, _) = s.prepare()?.law(setup.mass, setup.v_i)?;
-        let r = simulate(&law, s.tension(), &setup, &opts)?;
+        let (law, _) = s.prepare()?.law(setup.mass, setup.v_i).map_err(&scales)?;
+        let r = simulate(&law, s.tension(), &setup, &opts).map_err(&scales)?;
         runs.push((s, r));
     }
     let damping = a.damping.name();

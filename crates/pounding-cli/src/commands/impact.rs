@@ -3,7 +3,7 @@
 
 use crate::args::{CalibrateArgs, DropArgs, ImpactArgs};
 use crate::describe::{bodies_text, contact, contact_label, describe, parameter, results};
-use crate::error::{input, CliError};
+use crate::error::{impact_scales, input, CliError};
 use crate::files::{check_out, history_csv, save_out};
 use crate::output::{fmt_num, fmt_sig, num, Report};
 use crate::plot::figures::{self, ForceHistory};
@@ -11,6 +11,9 @@ use pounding::contact::{ContactModel, Damping, Model};
 use pounding::impact::{
     delivered_e, exact, simulate, BallDrop, ImpactOptions, ImpactResult, ImpactSetup, TwoBodies,
 };
+
+/// How the options of two bodies make an impact's mass and velocity (for messages).
+pub const TWO_BODIES: &str = "with m = m1 m2 / (m1 + m2)";
 
 /// The figures of one integrated impact, if `--plots` asks for them.
 fn impact_figures(
@@ -56,17 +59,19 @@ pub fn impact(a: &ImpactArgs) -> Result<(), CliError> {
     let bodies = TwoBodies::new(a.bodies.m1, a.bodies.m2, a.bodies.v)?;
     let s = contact(&a.model, a.k, a.radius)?;
     let setup = bodies.setup();
-    let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
+    let b = a.bodies;
+    let options = [("m1", b.m1), ("m2", b.m2), ("v", b.v), ("k", a.k)];
+    let scales = impact_scales(&options, TWO_BODIES);
+    let (law, p) = s.prepare()?.law(setup.mass, setup.v_i).map_err(&scales)?;
     let opts = ImpactOptions {
         history: a.out.out.is_some(),
         ..ImpactOptions::default()
     };
-    let r = simulate(&law, s.tension(), &setup, &opts)?;
+    let r = simulate(&law, s.tension(), &setup, &opts).map_err(&scales)?;
     let exact_e = exact::e_post(&law, s.tension(), setup.mass, setup.v_i);
     let (v1, v2) = bodies.velocities_after(r.impulse);
     let mut rep = Report::default();
     describe(&mut rep, &s, p);
-    let b = a.bodies;
     rep.add("m1", num(b.m1), "kg")
         .add_shown(
             "m2",
@@ -148,12 +153,22 @@ pub fn drop(a: &DropArgs) -> Result<(), CliError> {
         Some(a.radius).filter(|_| a.model.model == pounding::contact::Model::Thornton),
     )?;
     let setup = drop.setup();
-    let (law, p) = s.prepare()?.law(setup.mass, setup.v_i)?;
+    let options = [
+        ("radius", a.radius),
+        ("density", a.density),
+        ("height", a.height),
+        ("youngs-modulus", a.youngs_modulus),
+    ];
+    let scales = impact_scales(
+        &options,
+        "with m the ball's mass, v = sqrt(2 g height) and k its Hertz stiffness",
+    );
+    let (law, p) = s.prepare()?.law(setup.mass, setup.v_i).map_err(&scales)?;
     let opts = ImpactOptions {
         history: a.out.out.is_some(),
         ..ImpactOptions::default()
     };
-    let r = simulate(&law, s.tension(), &setup, &opts)?;
+    let r = simulate(&law, s.tension(), &setup, &opts).map_err(&scales)?;
     let mut rep = Report::default();
     describe(&mut rep, &s, p);
     rep.add("radius", num(a.radius), "m")

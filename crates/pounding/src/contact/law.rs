@@ -241,15 +241,21 @@ impl ForceLaw {
     /// Scale of penetration for this law, m: the penetration at which the elastic part of the force has
     /// stored the kinetic energy `m v^2` (up to a factor of order one). Used to set tolerances.
     pub fn length_scale(&self, m: f64, v: f64) -> f64 {
-        let (k, n) = match *self {
+        let (k, n) = self.scale_stiffness();
+        (m * v * v / k).powf(1.0 / (n + 1.0))
+    }
+
+    /// The stiffness and exponent `(k, n)` that set [`Self::length_scale`]: the law's loading stiffness
+    /// (`k1` of the bilinear law, the Hertz stiffness of Thornton's).
+    pub fn scale_stiffness(&self) -> (f64, f64) {
+        match *self {
             ForceLaw::Elastic { k, n }
             | ForceLaw::HuntCrossley { k, n, .. }
             | ForceLaw::Jankowski { k, n, .. } => (k, n),
             ForceLaw::LinearViscous { k, .. } => (k, 1.0),
             ForceLaw::Bilinear { k1, .. } => (k1, 1.0),
             ForceLaw::Thornton { k, .. } => (k, 1.5),
-        };
-        (m * v * v / k).powf(1.0 / (n + 1.0))
+        }
     }
 }
 

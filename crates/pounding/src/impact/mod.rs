@@ -13,6 +13,9 @@ pub use crate::contact::exact;
 
 pub use simulate::{force_at, simulate};
 
+/// The range of an impact's scales, and what it allows in words.
+pub use crate::error::{scales_allowed, SCALE_RANGE};
+
 use crate::error::check;
 use crate::Error;
 

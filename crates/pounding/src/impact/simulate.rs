@@ -115,12 +115,15 @@ fn integrate(
     let (m, v_i) = (setup.mass, setup.v_i);
     let len = law.length_scale(m, v_i);
     let tau = len / v_i;
-    let rtol_floor = 1e-14; // the tightest relative tolerance used below
+    // The tightest relative tolerance used below is 1e-14: each scale, times or over it, must stay a normal
+    // finite number.
+    let (lo, hi) = super::SCALE_RANGE;
     if [len, tau, m * v_i, m * v_i * v_i]
         .iter()
-        .any(|s| !(s * rtol_floor).is_normal() || !(s / rtol_floor).is_finite())
+        .any(|s| !(lo..=hi).contains(s))
     {
-        return Err(Error::ScaleOutOfRange { mass: m, v_i });
+        let (k, n) = law.scale_stiffness();
+        return Err(Error::ScaleOutOfRange { mass: m, v_i, k, n });
     }
     // A law that is not smooth at touch starts with a step so small that the singular start contributes
     // below 1e-14 of the velocity, and is integrated 100 times tighter: its error estimate is pessimistic

@@ -554,3 +554,47 @@ mod fuzz_findings {
         }
     }
 }
+
+#[test]
+fn an_impact_whose_scales_leave_f64_names_its_parameters_and_the_range_allowed() {
+    use pounding::contact::{ForceLaw, Tension};
+    use pounding::impact::{simulate, ImpactOptions, ImpactSetup, SCALE_RANGE};
+    let law = ForceLaw::Elastic { k: 1.0e9, n: 1.5 };
+    let opts = ImpactOptions::default();
+    for (mass, v_i) in [(1e300, 1.0), (1e5, 1e300), (1e-300, 1.0)] {
+        let e = simulate(
+            &law,
+            Tension::Clamp,
+            &ImpactSetup::relative(mass, v_i),
+            &opts,
+        )
+        .unwrap_err();
+        assert!(
+            matches!(e, Error::ScaleOutOfRange { k, n, .. } if k == 1.0e9 && n == 1.5),
+            "{e:?}"
+        );
+        let msg = e.to_string();
+        assert!(
+            msg.starts_with(&format!(
+                "mass = {} kg, v_i = {} m/s and k = 1000000000 N/m^1.5 are not allowed together: ",
+                pounding::words::number(mass),
+                pounding::words::number(v_i)
+            )) && msg.ends_with(
+                "mass v_i, mass v_i^2, d = (mass v_i^2 / k)^(1/(n+1)) and d / v_i must each be from 2.3e-294 to 1.7e294 (SI units)"
+            ),
+            "{msg}"
+        );
+    }
+    // The range said is the range checked: an impact whose momentum is at either end runs.
+    let (lo, hi) = SCALE_RANGE;
+    let law = ForceLaw::Elastic { k: 1.0, n: 1.0 };
+    for (mass, v_i) in [(lo, 1.0), (hi, 1.0)] {
+        let r = simulate(
+            &law,
+            Tension::Clamp,
+            &ImpactSetup::relative(mass, v_i),
+            &opts,
+        );
+        assert!(r.is_ok_and(|r| (r.e_post - 1.0).abs() < 1e-6), "{mass}");
+    }
+}
