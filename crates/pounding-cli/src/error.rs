@@ -85,3 +85,18 @@ fn as_typed(x: f64) -> String {
         format!("{x:e}")
     }
 }
+
+/// Text given to an option as one would type it: as it is when short and plain (`--records kobe`), quoted
+/// (and cut, over 64 characters) when it holds spaces, quotes or control characters or is long.
+pub fn as_typed_text(s: &str) -> String {
+    let plain = !s.is_empty()
+        && s.chars().count() <= 64
+        && !s
+            .chars()
+            .any(|c| c.is_whitespace() || c.is_control() || c == '"' || c == '\'');
+    if plain {
+        s.to_string()
+    } else {
+        pounding::words::quoted(s, 64)
+    }
+}

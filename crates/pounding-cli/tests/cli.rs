@@ -1434,7 +1434,10 @@ fn bad_studies_get_one_line_exit_2_and_leave_the_store_untouched() {
         ("contact.3.gap = [0.01]", "has 1 entries there"),
         ("contact.0.gap = []", "axes.contact.0.gap = [] is empty"),
         ("record = [\"no-such-dir/*.AT2\"]", "matches no file"),
-        ("record = [\"kobe\"]", "is neither a built-in record"),
+        (
+            "record = [\"kobe\"]",
+            "axes.record = \"kobe\" is not allowed: neither a built-in record",
+        ),
         // One scenario key on two axes: runs.csv would show values that were never run.
         (
             "contact.0.gap = [0.01]\n\"contact.0.gap\" = [0.02]",
@@ -1705,7 +1708,19 @@ fn separation_reports_each_level_and_refuses_bad_options() {
             vec!["--aligned-factor", "2"],
             "--aligned-factor 2 is not allowed",
         ),
-        (vec!["--records", "no-such/*.AT2"], "matches no file"),
+        (
+            vec!["--records", "no-such/*.AT2"],
+            "error: --records no-such/*.AT2 is not allowed: it matches no file; allowed: a glob that matches a file, ",
+        ),
+        // It said `--record = "nope"`: an option that does not exist, in the form of a scenario key.
+        (
+            vec!["--records", "nope"],
+            "error: --records nope is not allowed: neither a built-in record (el-centro-1940, synthetic-SEED (SEED 0, 1, 2, ...)), a file, a folder nor a glob that matches a file",
+        ),
+        (
+            vec!["--records", "el-centro-1940", "--records", "a b"],
+            "error: --records \"a b\" is not allowed: neither a built-in record",
+        ),
         (
             vec!["--records", "synthetic-1..10001"],
             "10001 records is not allowed: at most 10000",
@@ -2716,7 +2731,10 @@ fn a_record_file_whose_name_is_not_utf8_is_named_not_lost() {
         assert_eq!(o.status.code(), Some(2), "{err}");
         assert_eq!(err.trim_end().lines().count(), 1, "{err}");
         assert!(
-            err.contains("b\\xFF.csv\" is not allowed: a file name that is not UTF-8"),
+            err.contains(&format!("record = {record:?} is not allowed: it names \""))
+                && err.contains(
+                    "b\\xFF.csv\", a file name that is not UTF-8; allowed: UTF-8 file names"
+                ),
             "{err}"
         );
         let o = pounding(&[

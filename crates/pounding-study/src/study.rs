@@ -153,21 +153,59 @@ fn set_path(value: &mut Value, path: &str, new: Value) -> Result<(), String> {
     Ok(())
 }
 
-/// A record file's path as text, or one line naming it when its name is not UTF-8 (a scenario, JSON, holds
-/// only UTF-8 text).
-fn utf8_name(f: PathBuf) -> Result<String, String> {
+/// Why a `record` value names no record: the value as given, and why, worded to follow the value's name
+/// (`record = "kobe" is not allowed: ...` in a study, `--records kobe is not allowed: ...` on the command
+/// line).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SourceError {
+    /// The value as given.
+    pub given: Value,
+    /// What is wrong with it and what is allowed: `is not allowed: ...`.
+    pub why: String,
+}
+
+impl SourceError {
+    fn new(given: &str, why: impl Into<String>) -> Self {
+        Self {
+            given: Value::String(given.to_string()),
+            why: why.into(),
+        }
+    }
+
+    /// The message with the value named `shown` (`--records kobe`).
+    pub fn named(&self, shown: &str) -> String {
+        format!("{shown} {}", self.why)
+    }
+}
+
+impl std::fmt::Display for SourceError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.given {
+            Value::String(s) => write!(f, "record = {s:?} {}", self.why),
+            v => write!(f, "record = {v} {}", self.why),
+        }
+    }
+}
+
+/// A record file's path as text; a name that is not UTF-8 (a scenario, JSON, holds only UTF-8 text) is an
+/// error about `given`, the value that named it.
+fn utf8_name(given: &str, f: PathBuf) -> Result<String, SourceError> {
     f.into_os_string().into_string().map_err(|os| {
-        format!("record = {os:?} is not allowed: a file name that is not UTF-8; allowed: UTF-8 file names (rename the file)")
+        SourceError::new(
+            given,
+            format!("is not allowed: it names {os:?}, a file name that is not UTF-8; allowed: UTF-8 file names (rename the file)"),
+        )
     })
 }
 
 /// The record sources a `record` axis value names, relative to `dir`: a built-in, a file, every file of a
 /// folder, or the files a glob matches (sorted).
-pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
+pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, SourceError> {
     let Value::String(s) = v else {
-        return Err(format!(
-            "record = {v} is not allowed: a built-in name, a file, a folder or a glob"
-        ));
+        return Err(SourceError {
+            given: v.clone(),
+            why: "is not allowed: a built-in name, a file, a folder or a glob".into(),
+        });
     };
     if pounding::ground_motion::Builtin::from_name(s).is_some() {
         return Ok(vec![s.clone()]);
@@ -180,8 +218,9 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
         let (a, b): (u64, u64) = match (a.parse(), b.parse()) {
             (Ok(a), Ok(b)) if a <= b && b - a < 100_000 => (a, b),
             _ => {
-                return Err(format!(
-                    "record = {s:?} is not allowed: synthetic-FIRST..LAST with 0 <= FIRST <= LAST, at most 100000 records"
+                return Err(SourceError::new(
+                    s,
+                    "is not allowed: synthetic-FIRST..LAST with 0 <= FIRST <= LAST, at most 100000 records",
                 ))
             }
         };
@@ -198,28 +237,38 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
         {
             if let Ok(entries) = std::fs::read_dir(parent) {
                 for e in entries.flatten() {
-                    utf8_name(e.path())?;
+                    utf8_name(s, e.path())?;
                 }
             }
         }
         let mut found: Vec<String> = Vec::new();
         for f in glob::glob(&pattern)
-            .map_err(|e| format!("record = {s:?} is not a valid glob: {e}"))?
+            .map_err(|e| {
+                SourceError::new(
+                    s,
+                    format!("is not allowed: not a valid glob ({e}); allowed: a glob, a built-in record, a file or a folder"),
+                )
+            })?
             .filter_map(Result::ok)
             .filter(|f| f.is_file())
         {
-            found.push(utf8_name(f)?);
+            found.push(utf8_name(s, f)?);
         }
         found.sort();
         if found.is_empty() {
-            return Err(format!("record = {s:?} matches no file"));
+            return Err(SourceError::new(
+                s,
+                "is not allowed: it matches no file; allowed: a glob that matches a file, a built-in record, a file or a folder",
+            ));
         }
         return Ok(found);
     }
     if p.is_dir() {
         let mut found: Vec<String> = Vec::new();
         for f in std::fs::read_dir(&p)
-            .map_err(|e| format!("record = {s:?}: cannot read the folder: {e}"))?
+            .map_err(|e| {
+                SourceError::new(s, format!("is not allowed: the folder cannot be read: {e}"))
+            })?
             .filter_map(Result::ok)
             .map(|e| e.path())
             .filter(|f| {
@@ -229,19 +278,26 @@ pub fn record_sources(dir: &Path, v: &Value) -> Result<Vec<String>, String> {
                         .is_some_and(|n| n.to_string_lossy().starts_with('.'))
             })
         {
-            found.push(utf8_name(f)?);
+            found.push(utf8_name(s, f)?);
         }
         found.sort();
         if found.is_empty() {
-            return Err(format!("record = {s:?} is a folder with no files"));
+            return Err(SourceError::new(
+                s,
+                "is not allowed: a folder with no files; allowed: a folder of record files, a file, a glob or a built-in record",
+            ));
         }
         return Ok(found);
     }
     if p.is_file() {
         return Ok(vec![p.to_string_lossy().into_owned()]);
     }
-    Err(format!(
-        "record = {s:?} is neither a built-in record ({}), a file, a folder nor a glob that matches a file", pounding::ground_motion::Record::BUILTINS
+    Err(SourceError::new(
+        s,
+        format!(
+            "is not allowed: neither a built-in record ({}), a file, a folder nor a glob that matches a file",
+            pounding::ground_motion::Record::BUILTINS
+        ),
     ))
 }
 

@@ -25,7 +25,9 @@ pub fn run(a: &SeparationArgs) -> Result<(), CliError> {
                 Path::new("."),
                 &serde_json::Value::String(r.clone()),
             )
-            .map_err(|m| input(format!("--{}", m.replacen("record = ", "records ", 1))))?,
+            .map_err(|e| {
+                input(e.named(&format!("--records {}", crate::error::as_typed_text(r))))
+            })?,
         );
     }
     let options = options::of(a, records)?;
