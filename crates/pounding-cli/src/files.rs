@@ -68,14 +68,62 @@ pub fn history_csv(h: &pounding::impact::History) -> String {
     s
 }
 
-/// Fails early (before any work or output) if `--out` names a file or `--png` cannot be honoured.
+/// Fails early (before any work or output) if the folder `--out` cannot be made (see [`check_out_dir`]) or
+/// `--png` cannot be honoured.
 pub fn check_out(o: &OutArgs) -> Result<(), CliError> {
-    match &o.out {
-        Some(dir) if dir.is_file() => Err(input(format!(
-            "--out {} is a file; give a folder (it is created if missing)",
-            dir.display()
-        ))),
-        _ => check_figures(&o.figures),
+    if let Some(dir) = &o.out {
+        check_out_dir(dir, false)?;
+    }
+    check_figures(&o.figures)
+}
+
+/// Fails early, before any work, if `dir`, the folder given as `--out`, could not be made or written: a
+/// file there is bad input (exit 2); a file where a folder of its path should be, or a folder that cannot
+/// be written, is an I/O failure naming `dir` with the OS's reason (exit 1). Nothing is left behind: the
+/// nearest folder of the path that exists is tried with a folder made and removed at once. `beside`: the
+/// output is made beside `dir` and renamed into place (a run's), so `dir`'s parent must be writable even
+/// when `dir` exists.
+pub fn check_out_dir(dir: &Path, beside: bool) -> Result<(), CliError> {
+    use std::io::ErrorKind;
+    let cannot =
+        |e: std::io::Error| CliError::Io(format!("cannot create --out {}: {e}", dir.display()));
+    let parent = |p: &Path| match p.parent() {
+        Some(q) if !q.as_os_str().is_empty() => q.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    // The folder in which the first new folder (or file) is made.
+    let mut at = match std::fs::metadata(dir) {
+        Ok(m) if !m.is_dir() => {
+            return Err(input(format!(
+                "--out {} is a file; give a folder (it is created if missing)",
+                dir.display()
+            )))
+        }
+        Ok(_) if !beside => dir.to_path_buf(),
+        Ok(_) => parent(dir),
+        Err(e) if e.kind() == ErrorKind::NotFound => parent(dir),
+        // A file where a folder of the path should be (`/dev/null/x`: not a directory), no permission, ...
+        Err(e) => return Err(cannot(e)),
+    };
+    loop {
+        match std::fs::metadata(&at) {
+            Ok(m) if m.is_dir() => break,
+            Ok(_) => return Err(cannot(ErrorKind::NotADirectory.into())),
+            Err(e) if e.kind() == ErrorKind::NotFound && parent(&at) != at => at = parent(&at),
+            Err(e) => return Err(cannot(e)),
+        }
+    }
+    let nonce = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.subsec_nanos());
+    let probe = at.join(format!(".pounding-probe-{}-{nonce}", std::process::id()));
+    match std::fs::create_dir(&probe) {
+        Ok(()) => {
+            let _ = std::fs::remove_dir(&probe);
+            Ok(())
+        }
+        Err(e) if e.kind() == ErrorKind::AlreadyExists => Ok(()),
+        Err(e) => Err(cannot(e)),
     }
 }
 

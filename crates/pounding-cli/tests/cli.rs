@@ -3153,6 +3153,48 @@ fn the_common_unit_slips_are_warned_on_stderr_and_in_the_summary() {
 }
 
 #[test]
+fn an_out_folder_that_cannot_be_made_is_said_before_any_work_naming_the_path_given() {
+    // `--out /dev/null/x` said `cannot create /dev/null: File exists`, `--out afile/sub` said `cannot create
+    // afile`, both after the whole analysis.
+    let dir = tmp("out-cannot");
+    let afile = dir.join("afile");
+    std::fs::write(&afile, "x").unwrap();
+    let sub = afile.join("sub");
+    let study = example("studies/gap-sweep.toml");
+    let ida = example("studies/ida.toml");
+    let scenario = example("two-sdof.toml");
+    for out in ["/dev/null/x", sub.to_str().unwrap()] {
+        for args in [
+            vec!["run", &scenario, "--out", out],
+            vec!["sweep", &study, "--out", out],
+            vec!["ida", &ida, "--out", out],
+            vec!["impact", "--model", "papi", "--e", "0.5", "--out", out],
+            vec!["separation", &scenario, "--out", out],
+        ] {
+            let o = pounding(&args);
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
+            assert_eq!(
+                err.trim_end(),
+                format!("error: cannot create --out {out}: Not a directory (os error 20)"),
+                "{args:?}"
+            );
+            // Nothing was printed: no work was done.
+            assert!(o.stdout.is_empty(), "{args:?}");
+        }
+    }
+    // A folder that can be made is made by the run, and the check leaves nothing beside it.
+    let out = dir.join("new").join("run");
+    let o = pounding(&["run", &scenario, "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let names: Vec<String> = std::fs::read_dir(dir.join("new"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names, ["run"]);
+}
+
+#[test]
 fn non_finite_numbers_of_a_scenario_name_their_key_line_and_value() {
     // TOML has nan and inf; JSON, which a scenario becomes, has not: they were read as null, and the
     // message was `invalid type: null, expected f64`.

@@ -12,6 +12,7 @@ pub fn run(args: &IdaArgs) -> Result<(), CliError> {
     let a = args;
     check_figures(&args.figures)?;
     let workers = workers(a.runs.workers)?;
+    crate::files::check_out_dir(&a.out, false)?;
     let mut study = Ida::read(&a.study).map_err(|e| input(e.0))?;
     if a.runs.no_contact {
         study.base["contacts"] = "off".into();

@@ -148,6 +148,7 @@ fn write_runs_csv(
 /// `pounding sweep`.
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     let workers = workers(a.runs.workers)?;
+    crate::files::check_out_dir(&a.out, false)?;
     let mut study = Study::read(&a.study).map_err(|e| input(e.0))?;
     if a.runs.no_contact {
         study.without_contact().map_err(|e| input(e.0))?;

@@ -34,6 +34,7 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     }
     // The output folder must be new, empty or an earlier run's, checked before any work.
     OutputSet::check(&a.out)?;
+    crate::files::check_out_dir(&a.out, true)?;
     check_figures(&a.figures)?;
     if !a.json {
         setup::print(&loaded, &a.scenario);
