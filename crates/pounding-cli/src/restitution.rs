@@ -10,8 +10,13 @@ use std::path::Path;
 /// and lines from `#` are skipped, and so is a first line that is not numbers (a header).
 pub fn read_e_table(path: &Path) -> Result<RestitutionTable, CliError> {
     let shown = path.display();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Io(format!("--e-table {shown}: cannot read it: {e}")))?;
+    // An input file that cannot be read is bad input, as a scenario or record file is (exit 2).
+    let text = pounding_study::input::read_text_file(
+        path,
+        "--e-table",
+        pounding_study::input::DATA_FILE_LIMIT,
+    )
+    .map_err(input)?;
     let rows = pounding_study::fit::pairs(&text)
         .map_err(|e| input(format!("--e-table {shown}: {e} (v_i in m/s, then e)")))?;
     RestitutionTable::new(rows).map_err(|e| input(format!("--e-table {shown}: {e}")))

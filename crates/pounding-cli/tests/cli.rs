@@ -3195,6 +3195,66 @@ fn an_out_folder_that_cannot_be_made_is_said_before_any_work_naming_the_path_giv
 }
 
 #[test]
+fn every_input_file_that_cannot_be_read_is_bad_input_exit_2() {
+    // A missing scenario or record file exited 2 (docs/reliability.md: bad input), a missing --e-table or
+    // `fit` data file 1; `fit restitution /dev/zero` read until memory ran out.
+    let dir = tmp("unreadable-inputs");
+    let absent = dir.join("absent.csv");
+    let absent = absent.to_str().unwrap();
+    let out = dir.join("out");
+    let out = out.to_str().unwrap();
+    for (args, says) in [
+        (
+            vec!["run", absent, "--out", out],
+            "cannot read scenario file",
+        ),
+        (vec!["record", "info", absent], "cannot read record file"),
+        (
+            vec!["impact", "--model", "hertzdamp", "--e-table", absent],
+            "cannot read --e-table",
+        ),
+        (
+            vec!["compare", "--models", "papi", "--e-table", absent],
+            "cannot read --e-table",
+        ),
+        (
+            vec!["fit", "restitution", absent, "--model", "hunt-crossley"],
+            "cannot read data file",
+        ),
+        (
+            vec![
+                "fit",
+                "force-history",
+                absent,
+                "--model",
+                "hunt-crossley",
+                "--m1",
+                "10",
+                "--v",
+                "3",
+            ],
+            "cannot read data file",
+        ),
+    ] {
+        let err = one_line_error(&args);
+        assert!(
+            err.starts_with(&format!(
+                "error: {says} {absent}: No such file or directory (os error 2)"
+            )),
+            "{args:?}: {err}"
+        );
+    }
+    for not_a_file in ["/dev/zero", dir.to_str().unwrap()] {
+        let err = one_line_error(&["fit", "restitution", not_a_file, "--model", "hunt-crossley"]);
+        assert!(
+            err.ends_with(": not a regular file (a folder, device or pipe)\n"),
+            "{not_a_file}: {err}"
+        );
+    }
+    assert!(!std::path::Path::new(out).exists());
+}
+
+#[test]
 fn non_finite_numbers_of_a_scenario_name_their_key_line_and_value() {
     // TOML has nan and inf; JSON, which a scenario becomes, has not: they were read as null, and the
     // message was `invalid type: null, expected f64`.
@@ -3590,14 +3650,22 @@ fn restitution_tables_and_damping_constants_run_and_refuse_what_they_cannot() {
         csv.to_str().unwrap(),
     ]);
     assert!(err.contains("line 2"), "{err}");
-    let o = pounding(&[
+    // An input file that cannot be read is bad input (exit 2), as a scenario or record file is.
+    let absent = dir.join("absent.csv");
+    let err = one_line_error(&[
         "impact",
         "--model",
         "hertzdamp",
         "--e-table",
-        dir.join("absent.csv").to_str().unwrap(),
+        absent.to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(
+        err.trim_end(),
+        format!(
+            "error: cannot read --e-table {}: No such file or directory (os error 2)",
+            absent.display()
+        )
+    );
     let err = one_line_error(&[
         "impact",
         "--model",

@@ -635,8 +635,13 @@ fn fit_data(
     match (points, path) {
         (Some(p), _) => Ok(p),
         (None, Some(path)) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| PyOSError::new_err(format!("{path}: cannot read it: {e}")))?;
+            // As a scenario file that cannot be read: InputError (the command line's exit 2).
+            let text = pounding_study::input::read_text_file(
+                Path::new(path),
+                "data file",
+                pounding_study::input::DATA_FILE_LIMIT,
+            )
+            .map_err(input_err)?;
             pounding_study::fit::pairs(&text)
                 .map_err(|e| input_err(format!("{path}: {e} ({what})")))
         }

@@ -759,6 +759,11 @@ def test_fits_give_the_numbers_of_the_command_line():
         pounding.fit.force_history([(0.0, 1.0)], "papi", m1=1.0, v=1.0)
     with pytest.raises(pounding.InputError, match="shape"):
         pounding.fit.restitution([1.0, 2.0, 3.0], "papi")
+    # A data file that cannot be read is InputError, as a scenario file that cannot be read is (exit 2).
+    with pytest.raises(pounding.InputError, match=r"^cannot read data file .*absent\.csv: No such file"):
+        pounding.fit.restitution("absent.csv", "hunt-crossley")
+    with pytest.raises(pounding.InputError, match=r"^cannot read data file /dev/zero: not a regular file"):
+        pounding.fit.restitution("/dev/zero", "hunt-crossley")
 
 
 def test_separation_probability_codes_and_risk_match_the_command_line(tmp_path):

@@ -15,6 +15,9 @@ pub const RECORD_FILE_LIMIT: u64 = 256 << 20;
 /// Largest scenario (or study) file read, bytes.
 pub const SCENARIO_FILE_LIMIT: u64 = 16 << 20;
 
+/// Largest table of test data read (`--e-table`, `pounding fit`'s data), bytes: as a record file.
+pub const DATA_FILE_LIMIT: u64 = RECORD_FILE_LIMIT;
+
 /// The text of a regular file of at most `limit` bytes; anything else (a FIFO or a device, which could block or
 /// never end; a file too large; text that is not UTF-8) is a one-line message naming `what`.
 pub fn read_text_file(path: &Path, what: &str, limit: u64) -> Result<String, String> {

@@ -20,8 +20,13 @@ pub fn run(cmd: FitCmd) -> Result<(), CliError> {
 /// The pairs of the data file `path`; `what` says what its columns are, for messages.
 fn read(path: &Path, what: &str) -> Result<Vec<(f64, f64)>, CliError> {
     let shown = path.display();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Io(format!("{shown}: cannot read it: {e}")))?;
+    // An input file that cannot be read is bad input, as a scenario or record file is (exit 2).
+    let text = pounding_study::input::read_text_file(
+        path,
+        "data file",
+        pounding_study::input::DATA_FILE_LIMIT,
+    )
+    .map_err(input)?;
     pounding_study::fit::pairs(&text).map_err(|e| input(format!("{shown}: {e} ({what})")))
 }
 
