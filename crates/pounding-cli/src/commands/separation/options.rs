@@ -98,8 +98,13 @@ fn noise(a: &SeparationArgs) -> Result<Option<NoiseOptions>, CliError> {
 /// The rows of a two-column file given as `flag`, for `what`.
 fn pairs(path: &Path, flag: &str, what: &str) -> Result<Vec<(f64, f64)>, CliError> {
     let shown = path.display();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| input(format!("--{flag} {shown}: cannot read it: {e}")))?;
+    // An input file that cannot be read is bad input (exit 2), read with the limits of every data file.
+    let text = pounding_study::input::read_text_file(
+        path,
+        &format!("--{flag} file"),
+        pounding_study::input::DATA_FILE_LIMIT,
+    )
+    .map_err(input)?;
     pounding_study::fit::pairs(&text).map_err(|e| input(format!("--{flag} {shown}: {e} ({what})")))
 }
 
