@@ -209,6 +209,20 @@ pub fn force_history(data: &[(f64, f64)], setup: &HistorySetup) -> Result<Histor
         }
         Ok(())
     };
+    // The elastic estimate of the stiffness from the peak force, mass and velocity: a start outside the range
+    // of f64 means inputs in the wrong units (a mass in grams, a force in kN).
+    if !layout.x0().iter().all(|x| x.is_finite()) {
+        return Err(Error::Choice {
+            name: "data",
+            value: format!(
+                "a peak force of {} N with mass {} kg and v_i {} m/s",
+                crate::words::number(peak),
+                crate::words::number(setup.mass),
+                crate::words::number(setup.v_i)
+            ),
+            allowed: "inputs whose elastic stiffness estimate F^(n+1) / ((n+1) m v^2 / 2)^n is a finite number > 0 (check the units: N, kg, m/s)".into(),
+        });
+    }
     let x_best = search(&layout, &residuals, data.len())?;
     let scales = vec![1.0; layout.len()];
     let s = minimise(residuals, &x_best, &scales, data.len(), "data")?;
