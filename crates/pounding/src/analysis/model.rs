@@ -74,7 +74,7 @@ impl<'a> Model<'a> {
                 );
             }
             let a0_dof = if base.is_some() { 0.0 } else { a0 };
-            dofs.extend(st.masses().iter().map(|&mass| Dof { mass, a0: a0_dof }));
+            dofs.extend(st.masses().iter().map(|&mass| Dof::x(mass, a0_dof)));
             if let (Some(base), true) = (base, a0 > 0.0) {
                 for (i, &m) in st.masses().iter().enumerate().filter(|(i, _)| *i != base) {
                     base_dashpots.push((offset + i, offset + base, a0 * m));
@@ -204,20 +204,20 @@ impl<'a> Model<'a> {
         atol[l.damping()] = rtol * e_scale;
         for (e, el) in sys.elements().iter().enumerate() {
             let r = l.block(e);
-            let ends = [el.a.dof(), el.b.dof()];
-            let v = ends
-                .iter()
-                .flatten()
-                .map(|&i| v_scale[i])
-                .fold(0.0, f64::max);
+            // Each end's terms (a point of a floor in plan weighs its degrees of freedom; a plain degree of
+            // freedom is one term of weight 1).
+            let (ta, tb) = (el.a.terms(), el.b.terms());
+            let terms = || {
+                ta.terms()
+                    .iter()
+                    .chain(tb.terms())
+                    .map(|&(i, c)| (i, c.abs()))
+            };
+            let v = terms().map(|(i, c)| c * v_scale[i]).fold(0.0, f64::max);
             // Ten times the local error allowed in each end's rate (atol + rtol |v|, up to 2 atol).
-            let v_res: f64 = ends.iter().flatten().map(|&i| 20.0 * atol[l.v(i)]).sum();
+            let v_res: f64 = terms().map(|(i, c)| 20.0 * c * atol[l.v(i)]).sum();
             resolutions.push((e, v_res));
-            let u = ends
-                .iter()
-                .flatten()
-                .map(|&i| u_scale[i])
-                .fold(0.0, f64::max);
+            let u = terms().map(|(i, c)| c * u_scale[i]).fold(0.0, f64::max);
             let scales = Scales {
                 rtol,
                 displacement: u,

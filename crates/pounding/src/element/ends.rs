@@ -3,21 +3,72 @@
 use super::{ElementEnergy, ElementLaw, Event, Law, Transition, Watch};
 use crate::Error;
 
-/// One end of an element: a degree of freedom (its index in the structure) or the ground.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// One end of an element: a degree of freedom (its index in the structure), a point of a rigid floor, or
+/// the ground.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum End {
     /// The (moving) ground: displacement 0 relative to itself.
     Ground,
     /// Degree of freedom `i`.
     Dof(usize),
+    /// A point of a floor that moves in plan: its displacement along a direction is a weighted sum of the
+    /// floor's degrees of freedom ([`Point`]).
+    Point(Point),
+}
+
+/// The displacement of a point of a rigid floor along a direction `n`: `sum c_k u_k` over at most three of
+/// the floor's degrees of freedom (for a point `r` from the floor's mass centre, `n_x u_x + n_y u_y +
+/// (r x n) theta`: coefficients dimensionless for the translations, m for the rotation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Point {
+    terms: [(usize, f64); 3],
+    len: usize,
+}
+
+impl Point {
+    /// The point of `terms` `(degree of freedom, coefficient)`, at most three (the rest are dropped).
+    pub fn new(terms: &[(usize, f64)]) -> Self {
+        let mut t = [(0, 0.0); 3];
+        let len = terms.len().min(3);
+        t[..len].copy_from_slice(&terms[..len]);
+        Self { terms: t, len }
+    }
+
+    /// Its terms.
+    #[inline]
+    pub fn terms(&self) -> &[(usize, f64)] {
+        &self.terms[..self.len]
+    }
 }
 
 impl End {
-    /// The degree of freedom, if the end is not the ground.
+    /// The degree of freedom, if the end is one (not the ground, nor a point of a floor).
     pub fn dof(self) -> Option<usize> {
         match self {
-            End::Ground => None,
             End::Dof(i) => Some(i),
+            End::Ground | End::Point(_) => None,
+        }
+    }
+
+    /// The end's displacement as `(degree of freedom, coefficient)` terms: none for the ground, `(i, 1)` for a
+    /// degree of freedom.
+    #[inline]
+    pub fn terms(&self) -> Point {
+        match *self {
+            End::Ground => Point::new(&[]),
+            End::Dof(i) => Point::new(&[(i, 1.0)]),
+            End::Point(p) => p,
+        }
+    }
+
+    /// The end's value in the vector `y` whose degrees of freedom start at `offset` (its displacement for
+    /// the displacements' offset, its velocity for the velocities').
+    #[inline]
+    pub fn value(&self, y: &[f64], offset: usize) -> f64 {
+        match self {
+            End::Ground => 0.0,
+            End::Dof(i) => y[offset + i],
+            End::Point(p) => p.terms().iter().map(|&(i, c)| c * y[offset + i]).sum(),
         }
     }
 }

@@ -28,7 +28,7 @@ mod registry;
 pub mod storey;
 
 pub use contact::{Contact, ContactPiece, Engagement, LawSource};
-pub use ends::{Element, End};
+pub use ends::{Element, End, Point};
 pub use gate::RateGate;
 pub use law::{ElementEnergy, ElementLaw, Event, Notice, Scales, Transition, Watch};
 pub use registry::{DeviceLaw, Law};

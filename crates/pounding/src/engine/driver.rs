@@ -135,7 +135,9 @@ pub fn run(
     let t_end = settings.t_end;
     // Kinks of the ground motion: the samples of a record, and its end.
     let (bp_first, bp_dt, bp_count, motion_end) = match sys.ground() {
-        Ground::Record(r) => (r.t0(), r.dt(), r.npts(), Some(r.duration())),
+        Ground::Record(r) | Ground::Plane { x: r, .. } => {
+            (r.t0(), r.dt(), r.npts(), Some(r.duration()))
+        }
         Ground::Constant(_) => (0.0, 1.0, 0, None),
     };
     let breakpoint = |k: usize| bp_first + k as f64 * bp_dt;

@@ -27,31 +27,74 @@ use crate::integrate::{Dense, DenseComponent, OdeSystem};
 /// The ground's acceleration, m/s^2.
 #[derive(Clone, Copy, Debug)]
 pub enum Ground<'a> {
-    /// A record, linear between samples (kinks at the samples) and 0 after its end.
+    /// A record along x, linear between samples (kinks at the samples) and 0 after its end.
     Record(&'a Record),
-    /// A constant acceleration (gravity pushing a body into a slab is `-g`).
+    /// Two records, along x and along y, on one time grid (the same start, step and length).
+    Plane {
+        /// Along x.
+        x: &'a Record,
+        /// Along y.
+        y: &'a Record,
+    },
+    /// A constant acceleration along x (gravity pushing a body into a slab is `-g`).
     Constant(f64),
 }
 
 impl Ground<'_> {
-    /// Ground acceleration at `t`, m/s^2.
+    /// Ground acceleration along x at `t`, m/s^2.
     #[inline]
     pub fn at(&self, t: f64) -> f64 {
         match self {
-            Ground::Record(r) => r.at(t),
+            Ground::Record(r) | Ground::Plane { x: r, .. } => r.at(t),
             Ground::Constant(a) => *a,
+        }
+    }
+
+    /// Ground acceleration along x and along y at `t`, m/s^2.
+    #[inline]
+    pub fn at_xy(&self, t: f64) -> (f64, f64) {
+        match self {
+            Ground::Plane { x, y } => (x.at(t), y.at(t)),
+            other => (other.at(t), 0.0),
         }
     }
 }
 
-/// A degree of freedom: its mass (kg) and mass-proportional damping coefficient `a0` (1/s).
+/// How a degree of freedom moves: along x, along y (the ground's two components push it), or a rotation about
+/// the vertical axis (which the ground does not push).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Axis {
+    /// A translation along x (every degree of freedom of a structure in one line).
+    #[default]
+    X,
+    /// A translation along y.
+    Y,
+    /// A rotation about the vertical axis through the mass centre (its "mass" is a moment of inertia).
+    Rotation,
+}
+
+/// A degree of freedom: its mass (kg; for a rotation its moment of inertia, kg m^2), mass-proportional
+/// damping coefficient `a0` (1/s) and axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dof {
-    /// Mass, kg.
+    /// Mass, kg (a rotation's moment of inertia, kg m^2).
     pub mass: f64,
     /// Mass-proportional damping `a0`: the force `-a0 m u'` acts between the degree of freedom and the
     /// ground, 1/s.
     pub a0: f64,
+    /// Its axis.
+    pub axis: Axis,
+}
+
+impl Dof {
+    /// A translation along x of mass `mass` (kg) with mass-proportional damping `a0` (1/s).
+    pub fn x(mass: f64, a0: f64) -> Self {
+        Self {
+            mass,
+            a0,
+            axis: Axis::X,
+        }
+    }
 }
 
 /// Energies of a state, J.
@@ -100,6 +143,9 @@ pub struct System<'a> {
     mass: Vec<f64>,
     inv_mass: Vec<f64>,
     a0: Vec<f64>,
+    /// The ground's pull on each degree of freedom per unit mass: `(1, 0)` along x, `(0, 1)` along y,
+    /// `(0, 0)` for a rotation.
+    pull: Vec<(f64, f64)>,
     elements: Vec<Element>,
     layout: Layout,
     ground: Ground<'a>,
@@ -113,6 +159,14 @@ impl<'a> System<'a> {
             mass: dofs.iter().map(|d| d.mass).collect(),
             inv_mass: dofs.iter().map(|d| 1.0 / d.mass).collect(),
             a0: dofs.iter().map(|d| d.a0).collect(),
+            pull: dofs
+                .iter()
+                .map(|d| match d.axis {
+                    Axis::X => (1.0, 0.0),
+                    Axis::Y => (0.0, 1.0),
+                    Axis::Rotation => (0.0, 0.0),
+                })
+                .collect(),
             elements,
             layout,
             ground,
@@ -145,8 +199,10 @@ impl<'a> System<'a> {
     pub fn deformation(&self, e: usize, y: &[f64]) -> (f64, f64) {
         let el = &self.elements[e];
         let n = self.layout.dofs();
-        let at = |end: End, off: usize| end.dof().map_or(0.0, |i| y[off + i]);
-        (at(el.a, 0) - at(el.b, 0), at(el.a, n) - at(el.b, n))
+        (
+            el.a.value(y, 0) - el.b.value(y, 0),
+            el.a.value(y, n) - el.b.value(y, n),
+        )
     }
 
     /// The interpolants of the deformation and rate of element `e`, kept after the stepper moved on.
@@ -157,11 +213,25 @@ impl<'a> System<'a> {
     ) -> (DenseComponent, DenseComponent) {
         let el = &self.elements[e];
         let n = self.layout.dofs();
-        let (a, b) = (el.a.dof(), el.b.dof());
-        (
-            dense.difference(a, b),
-            dense.difference(a.map(|i| n + i), b.map(|i| n + i)),
-        )
+        match (el.a, el.b) {
+            (End::Point(_), _) | (_, End::Point(_)) => {
+                let shift = |p: crate::element::Point| -> Vec<(usize, f64)> {
+                    p.terms().iter().map(|&(i, c)| (n + i, c)).collect()
+                };
+                let (ta, tb) = (el.a.terms(), el.b.terms());
+                (
+                    dense.combination(ta.terms()) - dense.combination(tb.terms()),
+                    dense.combination(&shift(ta)) - dense.combination(&shift(tb)),
+                )
+            }
+            _ => {
+                let (a, b) = (el.a.dof(), el.b.dof());
+                (
+                    dense.difference(a, b),
+                    dense.difference(a.map(|i| n + i), b.map(|i| n + i)),
+                )
+            }
+        }
     }
 
     /// Deformation and rate of element `e` on the interpolant at `t`.
@@ -169,7 +239,13 @@ impl<'a> System<'a> {
     pub fn deformation_at(&self, e: usize, dense: &Dense, t: f64) -> (f64, f64) {
         let el = &self.elements[e];
         let n = self.layout.dofs();
-        let at = |end: End, off: usize| end.dof().map_or(0.0, |i| dense.component(t, off + i));
+        let at = |end: End, off: usize| -> f64 {
+            end.terms()
+                .terms()
+                .iter()
+                .map(|&(i, c)| c * dense.component(t, off + i))
+                .sum()
+        };
         (at(el.a, 0) - at(el.b, 0), at(el.a, n) - at(el.b, n))
     }
 
@@ -211,12 +287,14 @@ impl OdeSystem for System<'_> {
 
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         let n = self.layout.dofs();
-        let ag = self.ground.at(t);
+        let (agx, agy) = self.ground.at_xy(t);
         dy[..n].copy_from_slice(&y[n..2 * n]);
         let (mut e_in, mut e_damp) = (0.0, 0.0);
         // Forces first (N), divided by the masses at the end.
         for i in 0..n {
             let (m, vi) = (self.mass[i], y[n + i]);
+            let (px, py) = self.pull[i];
+            let ag = px * agx + py * agy;
             dy[n + i] = -m * (ag + self.a0[i] * vi);
             e_in -= ag * m * vi;
             e_damp += self.a0[i] * m * vi * vi;
@@ -226,11 +304,15 @@ impl OdeSystem for System<'_> {
             let r = self.layout.block(e);
             let (f, fv) = el.evaluate(x, v, &y[r.clone()], &mut dy[r]);
             let total = f + fv;
-            if let End::Dof(a) = el.a {
-                dy[n + a] -= total;
+            match el.a {
+                End::Dof(a) => dy[n + a] -= total,
+                End::Point(p) => p.terms().iter().for_each(|&(i, c)| dy[n + i] -= c * total),
+                End::Ground => {}
             }
-            if let End::Dof(b) = el.b {
-                dy[n + b] += total;
+            match el.b {
+                End::Dof(b) => dy[n + b] += total,
+                End::Point(p) => p.terms().iter().for_each(|&(i, c)| dy[n + i] += c * total),
+                End::Ground => {}
             }
             e_damp += fv * v;
         }

@@ -135,7 +135,7 @@ fn integrate(
     };
     // Gravity pushes the body into the slab: a ground acceleration of -g.
     let mut sys = System::new(
-        &[Dof { mass: m, a0: 0.0 }],
+        &[Dof::x(m, 0.0)],
         vec![Element::new(
             End::Dof(0),
             End::Ground,

@@ -137,6 +137,16 @@ impl Dense {
         }
     }
 
+    /// The interpolant of `sum c u_i` over `terms` `(i, c)` (an empty list: 0), kept after the stepper has
+    /// moved on.
+    pub fn combination(&self, terms: &[(usize, f64)]) -> DenseComponent {
+        DenseComponent {
+            t0: self.t0,
+            h: self.h,
+            r: std::array::from_fn(|k| terms.iter().map(|&(i, c)| c * self.r[k][i]).sum()),
+        }
+    }
+
     /// Copies another interpolant into this one without allocating.
     pub fn copy_from(&mut self, other: &Dense) {
         self.t0 = other.t0;
@@ -153,6 +163,18 @@ pub struct DenseComponent {
     t0: f64,
     h: f64,
     r: [f64; 5],
+}
+
+impl std::ops::Sub for DenseComponent {
+    type Output = DenseComponent;
+    /// The difference of two scalars of one step's interpolant.
+    fn sub(self, o: DenseComponent) -> DenseComponent {
+        DenseComponent {
+            t0: self.t0,
+            h: self.h,
+            r: std::array::from_fn(|k| self.r[k] - o.r[k]),
+        }
+    }
 }
 
 impl DenseComponent {
