@@ -38,7 +38,7 @@ fn a_floor_against_a_rigid_wall_delivers_the_single_impact_e() {
                 (End::Ground, End::Dof(0))
             };
             let mut sys = System::new(
-                &[Dof { mass: m, a0: 0.0 }],
+                &[Dof::x(m, 0.0)],
                 vec![Element::new(a, b, contact)],
                 Ground::Constant(0.0),
             );

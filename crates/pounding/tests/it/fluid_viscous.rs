@@ -41,7 +41,7 @@ fn dissipated_per_cycle(law: &DeviceLaw, u0: f64, omega: f64) -> f64 {
     let record = Record::new("harmonic", dt, dt, acc).unwrap();
     let m = 1.0e20;
     let mut sys = System::new(
-        &[Dof { mass: m, a0: 0.0 }],
+        &[Dof::x(m, 0.0)],
         vec![Element::new(End::Dof(0), End::Ground, law.law().unwrap())],
         Ground::Record(&record),
     );

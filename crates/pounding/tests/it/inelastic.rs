@@ -41,7 +41,7 @@ fn oscillator(law: StoreyLaw, record: &Record) -> Vec<(f64, f64, f64, Vec<f64>)>
     let (m, k): (f64, f64) = (5.0e5, 7.8957e7);
     let c = 2.0 * 0.02 * (k * m).sqrt();
     let mut sys = System::new(
-        &[Dof { mass: m, a0: 0.0 }],
+        &[Dof::x(m, 0.0)],
         vec![Element::new(End::Dof(0), End::Ground, law.law(k)).with_dashpot(c)],
         Ground::Record(record),
     );
