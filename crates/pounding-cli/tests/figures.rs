@@ -7,6 +7,10 @@ use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+/// The figures' font metrics (DejaVu Sans and its bold face), the ones the layout uses.
+#[path = "../src/plot/font.rs"]
+mod font;
+
 fn pounding(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_pounding"))
         .args(args)
@@ -170,10 +174,10 @@ fn read_panels(path: &Path) -> Vec<Panel> {
     panels(&std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())))
 }
 
-/// Every panel title of an SVG whose text is cut (the panel's `data-title` is the whole title).
-fn cut_titles(text: &str) -> Vec<String> {
-    let doc = roxmltree::Document::parse(text).expect("well-formed SVG");
-    doc.descendants()
+/// Every panel title of an SVG (the document's element `svg`) whose text is cut (the panel's `data-title`
+/// is the whole title).
+fn cut_titles(svg: roxmltree::Node) -> Vec<String> {
+    svg.descendants()
         .filter(|n| n.attribute("class") == Some("panel"))
         .filter_map(|g| {
             let whole = g.attribute("data-title").unwrap_or("");
@@ -194,8 +198,10 @@ fn every_svg_reads_back(dir: &Path) -> usize {
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|x| x == "svg") {
-            let cut = cut_titles(&std::fs::read_to_string(&path).unwrap());
-            assert!(cut.is_empty(), "{}: titles cut: {cut:?}", path.display());
+            let text = std::fs::read_to_string(&path).unwrap();
+            let doc = roxmltree::Document::parse(&text).expect("well-formed SVG");
+            let bad = text_fits(doc.root_element(), "");
+            assert!(bad.is_empty(), "{}: {bad:#?}", path.display());
             let ps = read_panels(&path);
             assert!(!ps.is_empty(), "{}: no panel", path.display());
             for p in &ps {
@@ -210,6 +216,86 @@ fn every_svg_reads_back(dir: &Path) -> usize {
         }
     }
     n
+}
+
+/// The texts of the elements of class `class` among the children of `svg` (titles, subtitles and notes
+/// are the SVG's own children; a report's figure is an `<svg>` inside the page).
+fn texts_of<'a>(
+    svg: roxmltree::Node<'a, 'a>,
+    class: &str,
+) -> Vec<(roxmltree::Node<'a, 'a>, String)> {
+    svg.children()
+        .filter(|n| n.attribute("class") == Some(class))
+        .map(|n| (n, n.text().unwrap_or("").to_string()))
+        .collect()
+}
+
+/// Checks that the figure `svg` shows its whole title and subtitle inside its width: every line of the title
+/// (in the bold face it is set in) and of the subtitle fits, centred, with 10 px (title) and 20 px
+/// (subtitle) to spare at each side; the title's lines hold the `<title>` word for word; no subtitle line
+/// is cut with an ellipsis; every note fits from x = 20 to 20 px short of the right edge; and no panel
+/// title is cut. `subtitle_starts` is the text the subtitle begins with (the scenario's file name).
+/// Returns what is wrong, one line per defect.
+fn text_fits(svg: roxmltree::Node, subtitle_starts: &str) -> Vec<String> {
+    let id = svg.attribute("data-figure").unwrap_or("?").to_string();
+    let width = attr(svg, "width");
+    let mut bad = Vec::new();
+    let whole = svg
+        .children()
+        .find(|n| n.has_tag_name("title"))
+        .and_then(|t| t.text())
+        .unwrap_or("")
+        .to_string();
+    let title = texts_of(svg, "title");
+    let shown: String = title
+        .iter()
+        .map(|(_, t)| t.as_str())
+        .collect::<Vec<_>>()
+        .join(" ");
+    if title.is_empty() || shown.replace(' ', "") != whole.replace(' ', "") {
+        bad.push(format!("{id}: title {whole:?} shown as {shown:?}"));
+    }
+    let centred = |n: roxmltree::Node| {
+        n.attribute("text-anchor") == Some("middle") && (attr(n, "x") - width / 2.0).abs() < 0.01
+    };
+    for (n, t) in &title {
+        let w = font::bold_text_width(t, attr(*n, "font-size"));
+        if !centred(*n) || w > width - 20.0 + 1e-9 {
+            bad.push(format!(
+                "{id}: title line {t:?} is {w:.1} px in a figure {width} px wide"
+            ));
+        }
+    }
+    let sub = texts_of(svg, "subtitle");
+    let joined: String = sub
+        .iter()
+        .map(|(_, t)| t.as_str())
+        .collect::<Vec<_>>()
+        .join(" ");
+    if !joined.starts_with(subtitle_starts) {
+        bad.push(format!(
+            "{id}: subtitle {joined:?} does not start with {subtitle_starts:?}"
+        ));
+    }
+    for (n, t) in &sub {
+        let w = font::text_width(t, attr(*n, "font-size"));
+        if !centred(*n) || w > width - 40.0 + 1e-9 || t.ends_with('\u{2026}') {
+            bad.push(format!(
+                "{id}: subtitle line {t:?} is {w:.1} px (or cut) in {width} px"
+            ));
+        }
+    }
+    for (n, t) in texts_of(svg, "note") {
+        let w = font::text_width(&t, attr(n, "font-size"));
+        if attr(n, "x") + w > width - 20.0 + 1e-9 {
+            bad.push(format!("{id}: note line {t:?} runs past the right edge"));
+        }
+    }
+    let cut = cut_titles(svg);
+    if !cut.is_empty() {
+        bad.push(format!("{id}: panel titles cut: {cut:?}"));
+    }
+    bad
 }
 
 fn max_y(pts: &[(f64, f64)]) -> f64 {
@@ -944,6 +1030,57 @@ fn figure_ids<'a>(doc: &'a roxmltree::Document) -> Vec<&'a str> {
     doc.descendants()
         .filter_map(|n| n.attribute("data-figure"))
         .collect()
+}
+
+#[test]
+fn every_figure_of_every_example_shows_its_whole_title_and_subtitle() {
+    // Each example scenario with --plots and --report: every figure file, and every figure inlined in the
+    // report, keeps its title, subtitle, notes and panel titles whole and inside its width.
+    let mut examples: Vec<PathBuf> = std::fs::read_dir(example(""))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    examples.sort();
+    assert!(examples.len() >= 7, "{examples:?}");
+    let mut figures = 0;
+    for scenario in &examples {
+        let name = scenario.file_name().unwrap().to_str().unwrap().to_string();
+        let out = tmp(&format!("fit-{name}"));
+        ok_json(&[
+            "run",
+            scenario.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--plots",
+            "--report",
+            "--json",
+        ]);
+        let starts = format!("{name}:");
+        let mut bad = Vec::new();
+        for entry in std::fs::read_dir(&out).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|x| x == "svg") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                let doc = roxmltree::Document::parse(&text).expect("well-formed SVG");
+                bad.extend(text_fits(doc.root_element(), &starts));
+                figures += 1;
+            }
+        }
+        let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+        let doc = report(&html);
+        let inline: Vec<_> = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("svg") && n.attribute("data-figure").is_some())
+            .collect();
+        assert!(!inline.is_empty(), "{name}: the report has no figure");
+        for svg in inline {
+            bad.extend(text_fits(svg, &starts));
+        }
+        assert!(bad.is_empty(), "{name}: {bad:#?}");
+        let _ = std::fs::remove_dir_all(&out);
+    }
+    assert!(figures >= 60, "{figures} figures");
 }
 
 /// Two 6-storey buildings side by side, in contact at every floor (six contact levels), under the built-in

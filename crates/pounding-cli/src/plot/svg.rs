@@ -2,7 +2,7 @@
 //! lowest, highest and last point of each pixel column, which keeps every peak exactly.
 
 use super::axis::Axis;
-use super::font::text_width;
+use super::font::{bold_text_width, text_width};
 use super::{Dash, Figure, Legend, Mark, Panel, Series, Shape, Style};
 use std::fmt::Write as _;
 
@@ -14,6 +14,9 @@ const LABEL: f64 = 12.0;
 const TICK: f64 = 11.0;
 const LEGEND: f64 = 11.0;
 const NOTE: f64 = 11.5;
+/// Space kept clear at each side of the title and of the subtitle, px.
+const TITLE_MARGIN: f64 = 10.0;
+const SUBTITLE_MARGIN: f64 = 20.0;
 /// Height of one legend entry, px.
 const ENTRY: f64 = 16.0;
 /// The font stack: DejaVu Sans (whose metrics the layout uses, and which PNGs embed), then look-alikes.
@@ -75,11 +78,16 @@ pub fn render(fig: &Figure) -> String {
             bottom
         }
     };
-    // A subtitle too long for one line keeps its leading clauses (up to a "; ") and hands the rest to the
-    // notes; one without such a break is cut with an ellipsis. It never wraps.
-    let (sub, rest) = split_subtitle(&fig.subtitle, SUBTITLE, width - 40.0);
-    let head =
-        (14.0 + TITLE + 6.0 + if sub.is_empty() { 0.0 } else { SUBTITLE + 4.0 } + 6.0).ceil();
+    // The title wraps (in the bold face it is set in) into as few lines as fit the figure, broken after a
+    // comma or colon where it can. A subtitle too long for one line keeps its leading clauses (up to a
+    // "; ") and hands the rest to the notes; a first clause still too long wraps the same way.
+    let title = balanced(&fig.title, width - 2.0 * TITLE_MARGIN, &|t| {
+        bold_text_width(t, TITLE)
+    });
+    let (sub, rest) = split_subtitle(&fig.subtitle, SUBTITLE, width - 2.0 * SUBTITLE_MARGIN);
+    let title_h = (TITLE + 4.0) * title.len().max(1) as f64 - 4.0;
+    let sub_top = 14.0 + title_h + 6.0;
+    let head = (sub_top + (SUBTITLE + 4.0) * sub.len() as f64 + 6.0).ceil();
     let mut row_top = Vec::with_capacity(rows);
     let mut y = head;
     for row in 0..rows {
@@ -114,20 +122,22 @@ pub fn render(fig: &Figure) -> String {
         px(width),
         px(height)
     );
-    let _ = write!(
-        s,
-        "\n<text x=\"{}\" y=\"{}\" font-size=\"{TITLE}\" font-weight=\"bold\" text-anchor=\"middle\">{}</text>",
-        px(width / 2.0),
-        px(10.0 + TITLE),
-        esc(&one_line(&fig.title, TITLE, width - 20.0))
-    );
-    if !sub.is_empty() {
+    for (i, line) in title.iter().enumerate() {
+        let _ = write!(
+            s,
+            "\n<text class=\"title\" x=\"{}\" y=\"{}\" font-size=\"{TITLE}\" font-weight=\"bold\" text-anchor=\"middle\">{}</text>",
+            px(width / 2.0),
+            px(10.0 + TITLE + (TITLE + 4.0) * i as f64),
+            esc(line)
+        );
+    }
+    for (i, line) in sub.iter().enumerate() {
         let _ = write!(
             s,
             "\n<text class=\"subtitle\" x=\"{}\" y=\"{}\" font-size=\"{SUBTITLE}\" fill=\"#444444\" text-anchor=\"middle\">{}</text>",
             px(width / 2.0),
-            px(14.0 + TITLE + 6.0 + SUBTITLE),
-            esc(&sub)
+            px(sub_top + SUBTITLE + (SUBTITLE + 4.0) * i as f64),
+            esc(line)
         );
     }
     for (k, (panel, (xa, ya))) in fig.panels.iter().zip(&axes).enumerate() {
@@ -190,12 +200,15 @@ fn axes_of(p: &Panel) -> (Axis, Axis) {
     (x, y)
 }
 
-/// A subtitle on one line no wider than `width` px at `size` px: the longest run of its "; "-separated
-/// clauses that fits, and the other clauses (for a note); or, if even its first clause is too long, that
-/// clause cut with an ellipsis and the rest.
-fn split_subtitle(text: &str, size: f64, width: f64) -> (String, Option<String>) {
+/// A subtitle no wider than `width` px at `size` px: the longest run of its "; "-separated clauses that fits
+/// on one line, and the other clauses (for a note); or, if even its first clause is too long, that clause
+/// wrapped over as few lines as it needs ([`balanced`]), and the rest.
+fn split_subtitle(text: &str, size: f64, width: f64) -> (Vec<String>, Option<String>) {
+    if text.is_empty() {
+        return (Vec::new(), None);
+    }
     if text_width(text, size) <= width {
-        return (text.to_string(), None);
+        return (vec![text.to_string()], None);
     }
     let clauses: Vec<&str> = text.split("; ").collect();
     let mut k = 1;
@@ -204,7 +217,7 @@ fn split_subtitle(text: &str, size: f64, width: f64) -> (String, Option<String>)
     }
     let head = clauses[..k].join("; ");
     let rest = (k < clauses.len()).then(|| clauses[k..].join("; "));
-    (one_line(&head, size, width), rest)
+    (balanced(&head, width, &|t| text_width(t, size)), rest)
 }
 
 /// `text` on one line no wider than `width` px at `size` px: cut at the end with an ellipsis if too long.
@@ -225,17 +238,89 @@ fn one_line(text: &str, size: f64, width: f64) -> String {
 
 /// `text` broken at spaces into lines no wider than `width` px at `size` px.
 fn wrap(text: &str, size: f64, width: f64) -> Vec<String> {
+    wrap_by(text, width, &|t| text_width(t, size), false)
+}
+
+/// `text` broken at spaces into lines no wider than `width` px as `measure` sets them; with `phrases`, a
+/// line breaks after a comma, colon or semicolon when the phrase that follows fits on the next line whole.
+/// A word wider than a line is broken between characters, so no line is wider than `width`.
+fn wrap_by(text: &str, width: f64, measure: &dyn Fn(&str) -> f64, phrases: bool) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
-    for word in text.split(' ').filter(|w| !w.is_empty()) {
-        match lines.last_mut() {
-            Some(line) if text_width(&format!("{line} {word}"), size) <= width => {
-                line.push(' ');
-                line.push_str(word);
+    for phrase in phrase_split(text, phrases) {
+        let joined = lines.last().map(|l| format!("{l} {phrase}"));
+        if phrases && joined.is_some_and(|j| measure(&j) > width) && measure(phrase) <= width {
+            // The phrase fits a line of its own: start one rather than break it.
+            lines.push(String::new());
+        }
+        for word in phrase.split(' ').filter(|w| !w.is_empty()) {
+            match lines.last_mut() {
+                Some(line) if line.is_empty() => line.push_str(word),
+                Some(line) if measure(&format!("{line} {word}")) <= width => {
+                    line.push(' ');
+                    line.push_str(word);
+                }
+                _ => lines.push(word.to_string()),
             }
-            _ => lines.push(word.to_string()),
+            break_long_word(&mut lines, width, measure);
         }
     }
+    lines.retain(|l| !l.is_empty());
     lines
+}
+
+/// The last line, if wider than `width` (one word too long for any line), broken between characters.
+fn break_long_word(lines: &mut Vec<String>, width: f64, measure: &dyn Fn(&str) -> f64) {
+    while let Some(line) = lines.last_mut() {
+        let chars: Vec<char> = line.chars().collect();
+        if chars.len() < 2 || measure(line) <= width {
+            return;
+        }
+        let mut k = chars.len() - 1;
+        while k > 1 && measure(&chars[..k].iter().collect::<String>()) > width {
+            k -= 1;
+        }
+        let tail: String = chars[k..].iter().collect();
+        *line = chars[..k].iter().collect();
+        lines.push(tail);
+    }
+}
+
+/// The phrases of `text`: the pieces ending in ", ", ": " or "; " (the mark kept), or, without `phrases`,
+/// the whole text.
+fn phrase_split(text: &str, phrases: bool) -> Vec<&str> {
+    if !phrases {
+        return vec![text];
+    }
+    let mut out = Vec::new();
+    let mut start = 0;
+    for (i, c) in text.char_indices() {
+        if matches!(c, ',' | ':' | ';') && text[i + 1..].starts_with(' ') {
+            out.push(&text[start..=i]);
+            start = i + 2;
+        }
+    }
+    out.push(&text[start..]);
+    out
+}
+
+/// `text` in the fewest lines no wider than `width` px (as `measure` sets them) that phrase-wise wrapping
+/// gives, made as even as they can be: the narrowest width that still gives that many lines.
+fn balanced(text: &str, width: f64, measure: &dyn Fn(&str) -> f64) -> Vec<String> {
+    let lines = wrap_by(text, width, measure, true);
+    if lines.len() < 2 {
+        return lines;
+    }
+    let widest_word = text.split(' ').map(measure).fold(0.0, f64::max);
+    let (mut lo, mut hi) = (widest_word.min(width), width);
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if wrap_by(text, mid, measure, true).len() <= lines.len() {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    wrap_by(text, hi, measure, true)
 }
 
 /// A pixel coordinate as written: two decimals.
@@ -1025,16 +1110,39 @@ mod tests {
     }
 
     #[test]
-    fn long_subtitles_stay_on_one_line_and_lose_nothing() {
+    fn long_subtitles_keep_one_line_and_lose_nothing() {
         let text = "papi, k = 1e9 N/m, e = 0.65, damping formula; m1 = 100000 kg, m2 = inf (rigid) kg, v = 1 m/s";
-        let (line, rest) = split_subtitle(text, 12.0, 300.0);
-        assert!(text_width(&line, 12.0) <= 300.0);
-        assert_eq!(format!("{line}; {}", rest.unwrap()), text);
-        // One clause too long: cut with an ellipsis.
-        let path = "six.toml: records/a-very-long-folder-name/another-level/with-a-long-record-file-name.csv";
-        let (line, rest) = split_subtitle(path, 12.0, 300.0);
-        assert!(line.ends_with('\u{2026}') && text_width(&line, 12.0) <= 300.0);
+        let (lines, rest) = split_subtitle(text, 12.0, 300.0);
+        assert_eq!(lines.len(), 1);
+        assert!(text_width(&lines[0], 12.0) <= 300.0);
+        assert_eq!(format!("{}; {}", lines[0], rest.unwrap()), text);
+        // One clause too long: wrapped, after a comma or colon where it can, never cut.
+        let run = "three-vs-eight-inelastic.toml: el-centro-1940 \u{d7} 1, 20 s, 5 impacts";
+        let (lines, rest) = split_subtitle(run, 12.0, 300.0);
         assert_eq!(rest, None);
+        assert_eq!(lines.join(" "), run);
+        assert!(lines.len() == 2 && lines[0].ends_with(':'), "{lines:?}");
+        assert!(lines.iter().all(|l| text_width(l, 12.0) <= 300.0));
+        // A word longer than the line is broken between characters.
+        let path = "six.toml: records/a-very-long-folder-name/another-level/with-a-long-record-file-name.csv";
+        let (lines, rest) = split_subtitle(path, 12.0, 200.0);
+        assert_eq!(rest, None);
+        assert_eq!(lines.concat().replace(' ', ""), path.replace(' ', ""));
+        assert!(lines.iter().all(|l| text_width(l, 12.0) <= 200.0));
+    }
+
+    #[test]
+    fn long_titles_wrap_evenly_in_the_bold_face() {
+        let title = "Force against penetration of the strongest impacts, by contact level";
+        let w = |t: &str| bold_text_width(t, 16.0);
+        let lines = balanced(title, 405.0, &w);
+        assert_eq!(lines.join(" "), title);
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert!(lines.iter().all(|l| w(l) <= 405.0));
+        // Even: the two lines differ by less than a third of the longer.
+        assert!((w(&lines[0]) - w(&lines[1])).abs() < w(&lines[0]).max(w(&lines[1])) / 3.0);
+        assert_eq!(balanced("Short", 405.0, &w), vec!["Short".to_string()]);
+        assert!(balanced("", 405.0, &w).is_empty());
     }
 
     #[test]
