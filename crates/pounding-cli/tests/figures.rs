@@ -741,6 +741,18 @@ fn figure_title(path: &Path) -> String {
     t.text().unwrap_or("").to_string()
 }
 
+/// The words of an SVG figure under its title: its subtitle and its notes, lines joined by spaces.
+fn figure_words(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    doc.root_element()
+        .children()
+        .filter(|n| matches!(n.attribute("class"), Some("subtitle" | "note")))
+        .filter_map(|n| n.text())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
 fn numbers(v: &Value) -> Vec<f64> {
     v.as_array()
         .unwrap()
@@ -1545,6 +1557,19 @@ fn figures_follow_what_was_hit_and_what_the_structure_is() {
         100.0 * ratios[0] > 10.0 * max_x(pts),
         "the isolator's would have dwarfed them"
     );
+    // Its storeys stay linear but its Bouc-Wen isolator yields: the storey loop's note sends the reader to
+    // the isolator's figure, and does not call the building elastic.
+    let words = figure_words(&dir.join("hysteresis.svg"));
+    let mu = numbers(&s["buildings"][0]["ductility"])[0];
+    assert!(mu > 2.0, "the isolator yields: {mu}");
+    for says in [
+        "every storey above the isolator is linear",
+        &format!("the isolator of building isolated (bouc-wen, ductility {mu:.2})"),
+        "has its loop in its own figure, isolators.svg",
+    ] {
+        assert!(words.contains(says), "{says:?} not in {words:?}");
+    }
+    assert!(!words.contains("no inelastic storey"), "{words}");
 
     // The spectrum's periods on a log axis: the SD curve reads back exactly through it.
     let dir = tmp("follow-spectrum");

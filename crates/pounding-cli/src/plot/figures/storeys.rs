@@ -203,6 +203,45 @@ pub fn hysteresis(d: &RunData) -> Vec<Figure> {
     figs
 }
 
+/// Where the isolators' (and bearings') loops are, for the storey loop's note: "the isolator of building
+/// isolated (bouc-wen, ductility 7.46) has its loop in isolators.svg"; `None` without isolators.
+fn isolator_loops(d: &RunData) -> Option<String> {
+    let isolators: Vec<String> = d
+        .summary
+        .buildings
+        .iter()
+        .filter_map(|b| {
+            let iso = b.isolator.as_ref()?;
+            let form = b.form();
+            // An inelastic isolator is storey 1 of the inelastic storeys, its ductility the first.
+            let mu = (b.inelastic_storeys.first() == Some(&1))
+                .then(|| b.ductility.first().copied())
+                .flatten()
+                .map_or(String::new(), |mu| {
+                    format!(", ductility {}", fmt_sig(mu, 3))
+                });
+            Some(format!(
+                "the {} of {} {} ({}{mu})",
+                form.isolator_noun(),
+                form.noun(),
+                b.name,
+                iso.model.name()
+            ))
+        })
+        .collect();
+    match isolators.len() {
+        0 => None,
+        1 => Some(format!(
+            "{} has its loop in its own figure, isolators.svg",
+            isolators[0]
+        )),
+        _ => Some(format!(
+            "{} have their loops in their own figure, isolators.svg",
+            isolators.join(", ")
+        )),
+    }
+}
+
 /// The loop of storey `most`, with its yield lines and the end of the analysis marked.
 fn most_strained(d: &RunData, most: &StoreyInfo) -> Figure {
     let name = &d.buildings[most.building].name;
@@ -240,11 +279,23 @@ fn most_strained(d: &RunData, most: &StoreyInfo) -> Figure {
     if let Some(fy) = most.yield_force {
         yield_lines(&mut p, fy, true);
     }
-    let why = if most.ductility.is_some() {
-        "the largest ductility of the run"
-    } else {
-        "no inelastic storey; the largest peak drift ratio of the run"
+    let isolated = d
+        .summary
+        .buildings
+        .iter()
+        .filter(|b| b.isolator.is_some())
+        .count();
+    let mut why = match (most.ductility.is_some(), isolated) {
+        (true, _) => "the largest ductility of the run".to_string(),
+        (false, 0) => "no inelastic storey; the largest peak drift ratio of the run".to_string(),
+        (false, n) => format!(
+            "every storey above the {} is linear: the storey of the largest peak drift ratio",
+            if n == 1 { "isolator" } else { "isolators" }
+        ),
     };
+    if let Some(elsewhere) = isolator_loops(d) {
+        why = format!("{why}; {elsewhere}");
+    }
     Figure {
         id: "hysteresis".into(),
         title: format!(
