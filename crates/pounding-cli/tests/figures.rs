@@ -1095,6 +1095,89 @@ fn every_figure_of_every_example_shows_its_whole_title_and_subtitle() {
     assert!(figures >= 60, "{figures} figures");
 }
 
+/// The text of the `<dd>` after the `<dt>` `key` in a report, if there is one.
+fn report_entry(html: &str, key: &str) -> Option<String> {
+    let doc = report(html);
+    let dt = doc
+        .descendants()
+        .find(|n| n.has_tag_name("dt") && n.text() == Some(key))?;
+    let dd = dt.next_siblings().find(|n| n.has_tag_name("dd"))?;
+    Some(
+        dd.descendants()
+            .filter_map(|n| n.text())
+            .collect::<String>(),
+    )
+}
+
+#[test]
+fn why_delivered_e_differs_is_said_in_the_words_of_what_met() {
+    // Buildings meet buildings (storeys, floors), an isolated building meets its moat walls (the isolator and
+    // the storeys, floors driven off a wall), decks meet decks and abutments (bearings, decks): the figure's
+    // note, the report's summary, the terminal and summary.json say it in those words.
+    // (example, what the run's words say, what its first site's note in summary.json says, words never used)
+    let cases: [(&str, &str, &str, &[&str]); 3] = [
+        (
+            "two-sdof.toml",
+            "between buildings, the storeys",
+            "between buildings, the storeys",
+            &["bearings", "isolator", "deck", "wall"],
+        ),
+        (
+            "isolated-moat.toml",
+            "against a wall, the isolator and the storeys",
+            "against a wall, the isolator and the storeys",
+            &["bearings", "deck", "between buildings"],
+        ),
+        (
+            "bridge-three-span.toml",
+            "between decks or against a wall, the bearings",
+            "between decks, the bearings",
+            &["storey", "floor", "isolator", "between buildings"],
+        ),
+    ];
+    for (ex, says, site_says, never) in cases {
+        let out = tmp(&format!("why-{ex}"));
+        let o = pounding(&[
+            "run",
+            &example(ex),
+            "--out",
+            out.to_str().unwrap(),
+            "--plots",
+            "--report",
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let stdout = String::from_utf8_lossy(&o.stdout);
+        let flat = |t: &str| t.split_whitespace().collect::<Vec<_>>().join(" ");
+        let terminal = flat(&stdout[stdout.find("e_delivered (separation").expect(ex)..]);
+        let terminal = &terminal[..terminal.find("Impacts inside a run").unwrap()];
+        let note = figure_words(&out.join("impact-restitution.svg"));
+        let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+        let row = report_entry(&html, "why delivered e differs from e asked").expect(ex);
+        let summary: Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+                .unwrap();
+        let json = summary["sites"][0]["e_delivered"]["note"]
+            .as_str()
+            .unwrap()
+            .to_string();
+        for (place, text, says) in [
+            ("terminal", terminal.to_string(), says),
+            ("figure", note, says),
+            ("report", row, says),
+            ("summary.json", json, site_says),
+        ] {
+            assert!(
+                text.contains(says),
+                "{ex}, {place}: {says:?} not in {text:?}"
+            );
+            for word in never {
+                assert!(!text.contains(word), "{ex}, {place}: {word:?} in {text:?}");
+            }
+        }
+        let _ = std::fs::remove_dir_all(&out);
+    }
+}
+
 /// Two 6-storey buildings side by side, in contact at every floor (six contact levels), under the built-in
 /// synthetic record of seed 7: every level pounds.
 const SIX_LEVELS: &str = r#"

@@ -5,6 +5,7 @@ use super::markup::{dl, e, kj, mm, mn, n};
 use crate::output::fmt_sig;
 use crate::plot::axis::plain;
 use pounding::structure::Form;
+use pounding_study::summary::inside::{inside, Meeting};
 use pounding_study::summary::{BuildingSummary, RunSummary, SitePlace, SiteSummary};
 
 /// A building's storey models in a few words: "linear", "bilinear", or "1-2 bilinear, 3 linear".
@@ -64,20 +65,34 @@ fn building(b: &BuildingSummary) -> String {
     )
 }
 
-/// A contact in a line, and whether the e it delivered differs from the e asked.
+/// A contact or wall in a line, and whether the e it delivered differs from the e asked (with a bumper, the
+/// bumper's and the law's behind it).
 fn contact(c: &SiteSummary) -> (String, bool) {
+    let asked: Vec<f64> = c
+        .bumper
+        .iter()
+        .filter_map(|b| b.law.e)
+        .chain(c.law.e)
+        .collect();
     let (delivered, differs) = match &c.e_delivered {
         Some(d) => (
             format!(", delivered {} to {}", plain(d.min, 3), plain(d.max, 3)),
-            c.law
-                .e
-                .is_some_and(|e| (d.min - e).abs() > 0.01 || (d.max - e).abs() > 0.01),
+            !asked.is_empty()
+                && [d.min, d.max]
+                    .iter()
+                    .any(|x| asked.iter().all(|e| (x - e).abs() > 0.01)),
         ),
         None => (String::new(), false),
     };
-    let asked = match c.law.e {
-        Some(e) => format!("e asked {}", n(e)),
-        None => "elastic".to_string(),
+    let asked = match (c.bumper.as_ref().map(|b| b.law.e), c.law.e) {
+        (None, Some(e)) => format!("e asked {}", n(e)),
+        (None, None) => "elastic".to_string(),
+        (Some(Some(b)), Some(e)) => {
+            format!("e asked {} of the bumper and {} behind it", n(b), n(e))
+        }
+        (Some(Some(b)), None) => format!("e asked {} of the bumper, elastic behind it", n(b)),
+        (Some(None), Some(e)) => format!("an elastic bumper, e asked {} behind it", n(e)),
+        (Some(None), None) => "an elastic bumper, elastic behind it".to_string(),
     };
     let line = format!(
         "{}, {asked}{delivered}, peak force {} MN, dissipated {} kJ",
@@ -140,36 +155,32 @@ pub fn section(h: &mut String, s: &RunSummary) {
             );
         }
     }
-    for w in s.sites.iter().filter(|w| w.is_wall()) {
-        dl(
-            h,
-            &format!("wall {}", w.name),
-            format!(
-                "{} impacts, peak force {} MN, dissipated {} kJ",
-                w.impacts,
-                mn(w.peak_force),
-                kj(w.dissipated_energy)
-            ),
-        );
-    }
-    // Each contact's impacts, with the e asked of it and the range its impacts delivered.
-    let mut differs = false;
+    // Each wall and contact: its impacts, with the e asked of it and the range its impacts delivered.
+    let mut differ = Vec::new();
     for c in &s.sites {
-        if let SitePlace::Contact { between } = &c.place {
-            let (line, d) = contact(c);
-            differs |= d;
-            dl(h, &format!("contact {}", between.join("|")), line);
+        let (line, d) = contact(c);
+        if d {
+            differ.push(Meeting::of_summary(s, c));
+        }
+        match &c.place {
+            SitePlace::Wall { .. } => dl(h, &format!("wall {}", c.name), line),
+            SitePlace::Contact { between } => {
+                dl(h, &format!("contact {}", between.join("|")), line)
+            }
         }
     }
-    if differs {
+    if !differ.is_empty() {
+        let w = inside(&differ);
         dl(
             h,
             "why delivered e differs from e asked",
-            "delivered e is the separation over the approach velocity of each impact. The calibration is exact \
-             for two free bodies; between floors, the storeys, the damping and every other force on the two floors \
-             act during each contact, and can even part the floors faster than they met (e above 1). The energy \
-             balance still holds (docs/verification.md, \"Impacts inside a run\")."
-                .to_string(),
+            format!(
+                "delivered e is the separation over the approach velocity of each impact. The calibration is \
+                 exact for two free bodies; in a contact {}, {}, the damping and every other force on the {} \
+                 act during each contact, and can even {} (e above 1). The energy balance still holds \
+                 (docs/verification.md, \"Impacts inside a run\").",
+                w.contact, w.forces, w.masses, w.part
+            ),
         );
     }
     dl(

@@ -5,6 +5,7 @@
 
 mod building;
 mod device;
+pub mod inside;
 mod site;
 mod units;
 
@@ -12,7 +13,7 @@ pub use building::{BuildingSummary, IsolatorSummary};
 pub use device::DeviceSummary;
 pub use site::{
     BumperSummary, ContactLawSummary, DampingSummary, DeliveredE, LevelSummary, SitePlace,
-    SiteSummary, DELIVERED_E_NOTE,
+    SiteSummary,
 };
 
 use crate::input::Loaded;

@@ -190,10 +190,6 @@ pub struct DeliveredE {
     pub note: String,
 }
 
-/// Why the delivered e of a contact inside a run differs from the e asked of it.
-pub const DELIVERED_E_NOTE: &str = "separation over approach velocity; the calibration is exact for two free bodies, and the storey, \
-     damping and other forces on the floors act during each contact (docs/verification.md, \"Impacts inside a run\")";
-
 /// A contact site as it was run, and its totals.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct SiteSummary {
@@ -271,7 +267,7 @@ impl SiteSummary {
             e_delivered: r.delivered_e(i).map(|(min, max)| DeliveredE {
                 min,
                 max,
-                note: DELIVERED_E_NOTE.into(),
+                note: super::inside::delivered_e_note(super::inside::Meeting::of_site(s, site)),
             }),
         }
     }

@@ -6,6 +6,7 @@ use crate::plot::axis::human;
 use crate::plot::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
 use crate::run_data::RunData;
 use pounding::contact::material_e;
+use pounding_study::summary::inside::{inside, Meeting};
 use pounding_study::summary::DampingSummary;
 
 /// A contact level of a run: one contact element (a floor pair of a contact, or a wall's floor).
@@ -321,6 +322,8 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
     r.x_zero = true;
     r.legend = Legend::Right;
     let (mut above, mut ended, mut top) = (0, 0, f64::NEG_INFINITY);
+    // What met in the impacts above the e asked, for the words of the note.
+    let mut met: Vec<Meeting> = Vec::new();
     for lv in levels {
         let cd = &d.contacts[lv.contact];
         // Impacts on the site's face (a bumper's layer, or the law itself); the hard law behind a consumed
@@ -343,7 +346,13 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
             let Some(e) = i.e_post else { continue };
             ended += 1;
             let wanted = i.e_asked.or(asked).unwrap_or(1.0);
-            above += usize::from(e > wanted * (1.0 + 1e-9));
+            if e > wanted * (1.0 + 1e-9) {
+                above += 1;
+                met.push(Meeting::of_summary(
+                    &d.summary,
+                    &d.summary.sites[lv.contact],
+                ));
+            }
             top = top.max(e);
         }
         r.series.push(Series::points(
@@ -388,21 +397,7 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
     (ended > 0).then(|| {
         let mut notes = Vec::new();
         if above > 0 {
-            notes.push(format!(
-                "{above} of {ended} impacts lie above the requested e{}: each contact law is calibrated to \
-                 deliver e between two free bodies, but the storey forces act on the floors during a contact \
-                 between buildings (docs/verification.md, \"Impacts inside a run\").{}",
-                if top > 1.0 {
-                    format!(" (up to {})", fmt_sig(top, 4))
-                } else {
-                    String::new()
-                },
-                if top > 1.0 {
-                    " Above 1, the storeys pushed the floors apart during the contact."
-                } else {
-                    ""
-                }
-            ));
+            notes.push(above_note(above, ended, top, &met));
         }
         Figure {
             id: "impact-restitution".into(),
@@ -413,6 +408,30 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
             ..Figure::default()
         }
     })
+}
+
+/// The note of `above` of `ended` impacts delivering more than their e asked (the largest `top`), in the words
+/// of what met in them: "... in a contact between buildings, the storeys keep acting on the floors ...".
+fn above_note(above: usize, ended: usize, top: f64, met: &[Meeting]) -> String {
+    let w = inside(met);
+    let mut note = format!(
+        "{above} of {ended} impacts {} above the requested e{}: each contact law is calibrated to deliver e \
+         between two free bodies, but in a contact {}, {} keep acting on the {} while they touch \
+         (docs/verification.md, \"Impacts inside a run\").",
+        if above == 1 { "lies" } else { "lie" },
+        if top > 1.0 {
+            format!(" (up to {})", fmt_sig(top, 4))
+        } else {
+            String::new()
+        },
+        w.contact,
+        w.forces,
+        w.masses
+    );
+    if top > 1.0 {
+        note.push_str(&format!(" Above 1, {} {}.", w.forces, w.parted));
+    }
+    note
 }
 
 /// The e each contact asks (a bumper its own): one dashed line for contacts given the same e, and the curve
@@ -626,5 +645,31 @@ mod tests {
         );
         assert_eq!(t, [0.0, 0.5, 1.0, 1.5, 2.0]);
         assert_eq!(f, [0.0, 7.0, 0.0, 9.0, 0.0]);
+    }
+
+    #[test]
+    fn the_note_counts_in_good_grammar_and_names_what_met() {
+        use pounding::structure::Form;
+        use pounding_study::summary::inside::Meeting;
+        let deck = |i| (i, Form::Deck);
+        let one = super::above_note(1, 3, 0.9, &[Meeting::Wall(deck(0))]);
+        assert!(
+            one.starts_with("1 of 3 impacts lies above the requested e:"),
+            "{one}"
+        );
+        assert!(
+            one.contains("against a wall, the bearings keep acting on the decks"),
+            "{one}"
+        );
+        assert!(!one.contains("Above 1"), "{one}");
+        let two = super::above_note(2, 3, 1.2, &[Meeting::Between([deck(0), deck(1)])]);
+        assert!(
+            two.starts_with("2 of 3 impacts lie above the requested e (up to 1.2):"),
+            "{two}"
+        );
+        assert!(
+            two.ends_with("Above 1, the bearings parted the decks faster than they met."),
+            "{two}"
+        );
     }
 }
