@@ -1178,6 +1178,117 @@ fn why_delivered_e_differs_is_said_in_the_words_of_what_met() {
     }
 }
 
+/// Every text a reader sees in a report (a document's text nodes, the scenario file as run and the style
+/// sheet left out) or in an SVG figure (its texts, `<title>` and the titles and labels of its panels and
+/// series), lower case, one piece a line.
+fn seen_words(doc: &roxmltree::Document) -> String {
+    let mut out = String::new();
+    for n in doc.descendants() {
+        let hidden = n
+            .ancestors()
+            .any(|a| a.has_tag_name("pre") || a.has_tag_name("style"));
+        if n.is_text() && !hidden {
+            out.push_str(&n.text().unwrap_or("").to_lowercase());
+            out.push('\n');
+        }
+        for key in ["data-title", "data-label"] {
+            if let Some(v) = n.attribute(key) {
+                out.push_str(&v.to_lowercase());
+                out.push('\n');
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn a_bridge_is_told_in_deck_and_bearing_words() {
+    // examples/bridge-three-span.toml: three decks on their bearings, joints, abutments and restrainers. No
+    // storey, floor or building anywhere a reader looks: the terminal, the report, the figures.
+    let out = tmp("bridge-words");
+    let o = pounding(&[
+        "run",
+        &example("bridge-three-span.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "--plots",
+        "--report",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let terminal = String::from_utf8_lossy(&o.stdout).to_lowercase();
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    let doc = report(&html);
+    let mut places = vec![
+        ("terminal".to_string(), terminal.clone()),
+        ("report".to_string(), seen_words(&doc)),
+    ];
+    for entry in std::fs::read_dir(&out).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|x| x == "svg") {
+            let text = std::fs::read_to_string(&path).unwrap();
+            let svg = roxmltree::Document::parse(&text).unwrap();
+            places.push((path.display().to_string(), seen_words(&svg)));
+        }
+    }
+    for (place, text) in &places {
+        for word in ["storey", "floor", "building"] {
+            let at: Vec<&str> = text.lines().filter(|l| l.contains(word)).collect();
+            assert!(at.is_empty(), "{place}: {word:?} in {at:#?}");
+        }
+    }
+    // What they say instead.
+    let header = |id: &str| -> Vec<String> {
+        let t = doc
+            .descendants()
+            .find(|n| n.attribute("id") == Some(id))
+            .unwrap_or_else(|| panic!("table {id}"));
+        t.descendants()
+            .filter(|n| n.has_tag_name("th"))
+            .map(|n| n.text().unwrap_or("").to_string())
+            .collect()
+    };
+    assert_eq!(header("peaks")[0], "deck");
+    assert_eq!(
+        header("storeys-0")[..3],
+        ["model", "peak displacement (mm)", "peak force (MN)"]
+    );
+    assert!(header("energy").contains(&"bearing hysteresis".to_string()));
+    assert!(
+        terminal.contains("deck        displacement_mm"),
+        "{terminal}"
+    );
+    assert!(
+        terminal.contains("deck        bearings  ductility"),
+        "{terminal}"
+    );
+    assert!(terminal.contains("bearing yield"), "{terminal}");
+    assert!(figure_title(&out.join("energy.svg")).contains("bearing hysteresis"));
+    let words = figure_words(&out.join("relative-displacement.svg"));
+    assert!(
+        words.contains(
+            "each pair of contact decks (for a wall, the deck's displacement towards it)"
+        ),
+        "{words}"
+    );
+    let _ = std::fs::remove_dir_all(&out);
+
+    // An isolated building: its hysteresis is the isolator's.
+    let out = tmp("moat-words");
+    ok_json(&[
+        "run",
+        &example("isolated-moat.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "--plots",
+        "--report",
+        "--json",
+    ]);
+    assert!(figure_title(&out.join("energy.svg")).contains("+ isolator hysteresis +"));
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(html.contains("<th>isolator hysteresis</th>"));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 /// Two 6-storey buildings side by side, in contact at every floor (six contact levels), under the built-in
 /// synthetic record of seed 7: every level pounds.
 const SIX_LEVELS: &str = r#"

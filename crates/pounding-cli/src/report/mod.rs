@@ -15,6 +15,7 @@ use crate::plot::axis::plain;
 use crate::plot::{svg, Figure};
 use crate::run_data::RunData;
 use markup::{e, table, STYLE, UNITS};
+use pounding::structure::Form;
 use pounding_study::input::write_atomic;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -106,18 +107,21 @@ fn impacts(h: &mut String, d: &RunData) {
             d.impacts.len()
         );
     }
+    // Decks are one mass each: no floor numbers when every structure is one.
+    let decks = d.summary.buildings.iter().all(|b| b.form() == Form::Deck);
     let rows: Vec<Vec<String>> = d.impacts[..shown]
         .iter()
         .enumerate()
         .map(|(k, i)| {
-            vec![
-                (k + 1).to_string(),
-                e(&d.contacts[i.contact].name),
-                match i.floors {
+            let mut row = vec![(k + 1).to_string(), e(&d.contacts[i.contact].name)];
+            if !decks {
+                row.push(match i.floors {
                     // A wall's side has no floor.
                     (f, 0) | (0, f) => f.to_string(),
                     (l, r) => format!("{l}-{r}"),
-                },
+                });
+            }
+            row.extend([
                 format!("{:.4}", i.time),
                 plain(i.v_i, 4),
                 i.e_post.map_or("(not ended)".into(), |x| plain(x, 4)),
@@ -126,26 +130,29 @@ fn impacts(h: &mut String, d: &RunData) {
                 plain(i.duration * 1e3, 4),
                 plain(i.max_penetration * 1e3, 4),
                 plain(i.dissipated_energy * 1e-3, 4),
-            ]
+            ]);
+            row
         })
         .collect();
+    let mut head = vec!["#", "contact"];
+    if !decks {
+        head.push("floors");
+    }
+    head.extend([
+        "touch (s)",
+        "v_i (m/s)",
+        "e_post",
+        "peak force (MN)",
+        "peak at (s)",
+        "duration (ms)",
+        "max penetration (mm)",
+        "dissipated (kJ)",
+    ]);
     table(
         h,
         "impact-list",
         "Every impact (time of touch, relative velocity at touch, delivered e = −v_out / v_i)",
-        &[
-            "#",
-            "contact",
-            "floors",
-            "touch (s)",
-            "v_i (m/s)",
-            "e_post",
-            "peak force (MN)",
-            "peak at (s)",
-            "duration (ms)",
-            "max penetration (mm)",
-            "dissipated (kJ)",
-        ],
+        &head,
         &rows,
     );
 }

@@ -3,7 +3,10 @@
 use super::markup::{e, kj, mm, mn, n, secs, table};
 use crate::plot::axis::plain;
 use pounding::structure::Form;
-use pounding_study::summary::{DampingSummary, RunSummary, SitePlace, SiteSummary};
+use pounding_study::summary::inside::hysteresis_of;
+use pounding_study::summary::{
+    BuildingSummary, DampingSummary, RunSummary, SitePlace, SiteSummary,
+};
 
 /// The modal properties of each building.
 pub fn modes(h: &mut String, s: &RunSummary) {
@@ -37,105 +40,184 @@ pub fn modes(h: &mut String, s: &RunSummary) {
                 "period (s)",
                 "damping (%)",
                 "effective mass (%)",
-                "shape, floor 1 up (largest |component| = 1)",
+                match b.form() {
+                    Form::Deck => "shape (one mass)",
+                    _ => "shape, floor 1 up (largest |component| = 1)",
+                },
             ],
             &rows,
         );
     }
 }
 
-/// The peak response: floors, then the storeys of each building.
+/// The peak response: floors (a bridge's decks), then the storeys of each building (a deck's bearings).
 pub fn response(h: &mut String, s: &RunSummary) {
     h.push_str("\n<h2 id=\"response\">Peak response</h2>");
+    let decks = s
+        .buildings
+        .iter()
+        .filter(|b| b.form() == Form::Deck)
+        .count();
+    // The words of the structures and their masses: buildings' floors, decks, or both.
+    let (who, each) = match decks {
+        0 => ("building", "each floor"),
+        d if d == s.buildings.len() => ("deck", "each deck"),
+        _ => ("structure", "each floor and deck"),
+    };
+    let only_decks = who == "deck";
     let mut rows = Vec::new();
     for b in &s.buildings {
         let name = e(&b.name);
         for f in 0..b.storeys {
-            rows.push(vec![
-                name.clone(),
-                (f + 1).to_string(),
+            let mut row = vec![name.clone()];
+            if !only_decks {
+                row.push(match b.form() {
+                    Form::Deck => "deck".to_string(),
+                    _ => (f + 1).to_string(),
+                });
+            }
+            row.extend([
                 mm(b.peak_displacement[f]),
                 secs(b.time_of_peak_displacement[f]),
                 n(b.peak_absolute_acceleration[f]),
                 secs(b.time_of_peak_absolute_acceleration[f]),
                 mm(b.residual_displacement[f]),
             ]);
+            rows.push(row);
         }
     }
+    let mut head = vec![who];
+    if !only_decks {
+        head.push("floor");
+    }
+    head.extend([
+        "peak displacement (mm)",
+        "at (s)",
+        "peak absolute acceleration (m/s²)",
+        "at (s)",
+        "residual displacement (mm)",
+    ]);
     table(
         h,
         "peaks",
-        "Largest displacement (relative to the ground) and absolute acceleration of each floor",
-        &[
-            "building",
-            "floor",
-            "peak displacement (mm)",
-            "at (s)",
-            "peak absolute acceleration (m/s²)",
-            "at (s)",
-            "residual displacement (mm)",
-        ],
+        &format!(
+            "Largest displacement (relative to the ground) and absolute acceleration of {each}"
+        ),
+        &head,
         &rows,
     );
     for (k, b) in s.buildings.iter().enumerate() {
-        let rows: Vec<Vec<String>> = (0..b.storeys)
-            .map(|j| {
-                // Ductility, yield force and hysteretic energy are listed for the inelastic storeys only.
-                let at = b.inelastic_storeys.iter().position(|&i| i == j + 1);
-                let only = |v: &[f64], f: fn(f64) -> String| at.map_or(String::new(), |i| f(v[i]));
-                // An isolator (a deck's bearings) is storey 1; its drift over its height is no drift ratio.
-                let iso = j == 0 && b.isolator.is_some();
-                vec![
-                    if iso {
-                        format!("1 ({})", b.form().isolator_noun())
-                    } else {
-                        (j + 1).to_string()
-                    },
-                    e(b.storey_models[j].name()),
-                    mm(b.peak_drift[j]),
-                    if iso {
-                        "\u{2013}".to_string()
-                    } else {
-                        format!("{:.3}", 100.0 * b.peak_drift_ratio[j])
-                    },
-                    mn(b.peak_storey_shear[j]),
-                    mm(b.residual_drift[j]),
-                    only(&b.yield_forces, mn),
-                    only(&b.ductility, |mu| format!("{mu:.3}")),
-                    only(&b.hysteretic_energy, kj),
-                ]
-            })
-            .collect();
-        table(
-            h,
-            &format!("storeys-{k}"),
-            &format!(
-                "{} of {} {} (shear: the restoring force; ductility: peak drift / yield drift, inelastic storeys only)",
-                match b.form() {
-                    Form::Deck => "Bearings",
-                    _ => "Storeys",
-                },
-                b.form().noun(),
-                b.name
-            ),
-            &[
-                "storey",
-                "model",
-                "peak drift (mm)",
-                "drift ratio (%)",
-                "peak shear (MN)",
-                "residual drift (mm)",
-                "yield force (MN)",
-                "ductility",
-                "hysteretic energy (kJ)",
-            ],
-            &rows,
-        );
+        match b.form() {
+            Form::Deck => bearings(h, k, b),
+            _ => storeys(h, k, b),
+        }
     }
 }
 
-/// One site's row of the contacts table.
-fn site_row(c: &SiteSummary) -> Vec<String> {
+/// The storeys of building `b` (the `k`-th structure), an isolator's among them.
+fn storeys(h: &mut String, k: usize, b: &BuildingSummary) {
+    let rows: Vec<Vec<String>> = (0..b.storeys)
+        .map(|j| {
+            // Ductility, yield force and hysteretic energy are listed for the inelastic storeys only.
+            let at = b.inelastic_storeys.iter().position(|&i| i == j + 1);
+            let only = |v: &[f64], f: fn(f64) -> String| at.map_or(String::new(), |i| f(v[i]));
+            // An isolator is storey 1; its drift over its height is no drift ratio.
+            let iso = j == 0 && b.isolator.is_some();
+            vec![
+                if iso {
+                    format!("1 ({})", b.form().isolator_noun())
+                } else {
+                    (j + 1).to_string()
+                },
+                e(b.storey_models[j].name()),
+                mm(b.peak_drift[j]),
+                if iso {
+                    "\u{2013}".to_string()
+                } else {
+                    format!("{:.3}", 100.0 * b.peak_drift_ratio[j])
+                },
+                mn(b.peak_storey_shear[j]),
+                mm(b.residual_drift[j]),
+                only(&b.yield_forces, mn),
+                only(&b.ductility, |mu| format!("{mu:.3}")),
+                only(&b.hysteretic_energy, kj),
+            ]
+        })
+        .collect();
+    let inelastic = if b.isolator.is_some() {
+        "inelastic storeys and isolator only"
+    } else {
+        "inelastic storeys only"
+    };
+    table(
+        h,
+        &format!("storeys-{k}"),
+        &format!(
+            "Storeys of building {} (shear: the restoring force; ductility: peak drift / yield drift, {inelastic})",
+            b.name
+        ),
+        &[
+            "storey",
+            "model",
+            "peak drift (mm)",
+            "drift ratio (%)",
+            "peak shear (MN)",
+            "residual drift (mm)",
+            "yield force (MN)",
+            "ductility",
+            "hysteretic energy (kJ)",
+        ],
+        &rows,
+    );
+}
+
+/// The bearings of deck `b` (the `k`-th structure): one row, displacements and forces (no storey, no drift
+/// ratio).
+fn bearings(h: &mut String, k: usize, b: &BuildingSummary) {
+    // Yield force, ductility and hysteretic energy for bearings that can yield only.
+    let yields = b.inelastic_storeys.first() == Some(&1);
+    let only = |v: &[f64], f: fn(f64) -> String| {
+        v.first()
+            .filter(|_| yields)
+            .map_or(String::new(), |&x| f(x))
+    };
+    let row = vec![
+        e(b.storey_models[0].name()),
+        mm(b.peak_drift[0]),
+        mn(b.peak_storey_shear[0]),
+        mm(b.residual_drift[0]),
+        only(&b.yield_forces, mn),
+        only(&b.ductility, |mu| format!("{mu:.3}")),
+        only(&b.hysteretic_energy, kj),
+    ];
+    table(
+        h,
+        &format!("storeys-{k}"),
+        &format!(
+            "Bearings of deck {} (displacement relative to the ground; force: the restoring force; ductility: \
+             peak displacement / yield displacement, bearings that yield only)",
+            b.name
+        ),
+        &[
+            "model",
+            "peak displacement (mm)",
+            "peak force (MN)",
+            "residual displacement (mm)",
+            "yield force (MN)",
+            "ductility",
+            "hysteretic energy (kJ)",
+        ],
+        &[row],
+    );
+}
+
+/// Whether every structure of the run is a deck (one mass each: tables drop their floor numbers).
+fn decks_only(s: &RunSummary) -> bool {
+    s.buildings.iter().all(|b| b.form() == Form::Deck)
+}
+
+/// One site's row of the contacts table (without its floors when `decks`: every structure is a deck).
+fn site_row(c: &SiteSummary, decks: bool) -> Vec<String> {
     let label = match &c.place {
         SitePlace::Contact { between } => between.join("|"),
         SitePlace::Wall { facing, side } => {
@@ -173,10 +255,11 @@ fn site_row(c: &SiteSummary) -> Vec<String> {
         Some(k) => format!("{} (bumper consumed {k})", c.impacts),
         None => c.impacts.to_string(),
     };
-    vec![
-        e(&label),
-        mm(c.gap),
-        floors.join(", "),
+    let mut row = vec![e(&label), mm(c.gap)];
+    if !decks {
+        row.push(floors.join(", "));
+    }
+    row.extend([
         e(c.law.model.name()),
         c.law.e.map_or_else(|| "elastic".to_string(), n),
         format!("{} (n = {})", n(c.law.stiffness), n(c.law.exponent)),
@@ -187,50 +270,52 @@ fn site_row(c: &SiteSummary) -> Vec<String> {
         kj(c.dissipated_energy),
         plain(c.largest_opening() * 1e3, 4),
         seat,
-    ]
+    ]);
+    row
 }
 
 /// The contacts, the devices and the energy at the end.
 pub fn contacts(h: &mut String, s: &RunSummary) {
     h.push_str("\n<h2 id=\"contacts\">Contacts and energy</h2>");
     // Contacts between neighbours, then walls.
+    let decks = decks_only(s);
     let rows: Vec<Vec<String>> = (s.sites.iter().filter(|c| !c.is_wall()))
         .chain(s.sites.iter().filter(|c| c.is_wall()))
-        .map(site_row)
+        .map(|c| site_row(c, decks))
         .collect();
-    table(
-        h,
-        "contacts",
-        "Contacts",
-        &[
-            "contact",
-            "gap (mm)",
-            "floors",
-            "model",
-            "e",
-            "k (N/m^n, SI)",
-            "damping",
-            "impacts",
-            "peak force (MN)",
-            "max penetration (mm)",
-            "dissipated (kJ)",
-            "largest opening (mm)",
-            "seat (mm)",
-        ],
-        &rows,
-    );
+    let mut head = vec!["contact", "gap (mm)"];
+    if !decks {
+        head.push("floors");
+    }
+    head.extend([
+        "model",
+        "e",
+        "k (N/m^n, SI)",
+        "damping",
+        "impacts",
+        "peak force (MN)",
+        "max penetration (mm)",
+        "dissipated (kJ)",
+        "largest opening (mm)",
+        "seat (mm)",
+    ]);
+    table(h, "contacts", "Contacts", &head, &rows);
     devices(h, s);
     let en = &s.energy;
+    // What yields: storeys, isolators, a bridge's bearings.
+    let hysteresis = format!("{} hysteresis", hysteresis_of(&s.buildings));
     table(
         h,
         "energy",
-        "Energy at the end of the analysis (kJ): input = kinetic + strain + structural damping + storey hysteresis + contact",
+        &format!(
+            "Energy at the end of the analysis (kJ): input = kinetic + strain + structural damping + {hysteresis} + contact"
+        ),
         &[
             "input",
             "kinetic",
             "strain",
             "structural damping",
-            "storey hysteresis",
+            &hysteresis,
             "contact",
             "balance error (relative)",
         ],
@@ -248,6 +333,7 @@ pub fn contacts(h: &mut String, s: &RunSummary) {
 
 /// The devices table, if there are devices.
 fn devices(h: &mut String, s: &RunSummary) {
+    let decks = decks_only(s);
     let rows: Vec<Vec<String>> = s
         .devices
         .iter()
@@ -263,31 +349,35 @@ fn devices(h: &mut String, s: &RunSummary) {
                     .iter()
                     .map(|p| format!("{} {}", p.key, n(p.value))),
             );
-            vec![
-                e(&d.name),
-                e(&d.between.join("|")),
-                pairs.join(", "),
+            let mut row = vec![e(&d.name), e(&d.between.join("|"))];
+            if !decks {
+                row.push(pairs.join(", "));
+            }
+            row.extend([
                 e(&law.join(", ")),
                 peaks(&d.peak_force, mn),
                 peaks(&d.max_closing, mm),
                 peaks(&d.max_opening, mm),
-            ]
+            ]);
+            row
         })
         .collect();
+    let mut head = vec!["device", "between"];
+    if !decks {
+        head.push("floors");
+    }
+    head.extend([
+        "law",
+        "peak force (MN)",
+        "largest closing (mm)",
+        "largest opening (mm)",
+    ]);
     if !rows.is_empty() {
         table(
             h,
             "devices",
             "Devices (law, SI: stiffness N/m, damping_coefficient N s/m, slack m)",
-            &[
-                "device",
-                "between",
-                "floors",
-                "law",
-                "peak force (MN)",
-                "largest closing (mm)",
-                "largest opening (mm)",
-            ],
+            &head,
             &rows,
         );
     }

@@ -2,7 +2,7 @@
 //! what met: the storeys of buildings, the isolator of an isolated building, the bearings of a deck; floors
 //! or decks; each other or a wall. The terminal, the report, the figures and `summary.json` say it alike.
 
-use super::{RunSummary, SitePlace, SiteSummary};
+use super::{BuildingSummary, RunSummary, SitePlace, SiteSummary};
 use pounding::analysis::{ContactSite, Scenario, SiteKind};
 use pounding::structure::Form;
 
@@ -59,6 +59,8 @@ pub struct Inside {
     pub forces: String,
     /// The struck masses: "floors", "decks", or "floors and decks".
     pub masses: String,
+    /// One of them: "floor", "deck", or "floor or deck".
+    pub mass: String,
     /// Where they meet: "between buildings", "between decks", "between a building and a deck", "against a
     /// wall", several joined by "or".
     pub contact: String,
@@ -95,10 +97,10 @@ pub fn inside(meetings: &[Meeting]) -> Inside {
         forces.push("the storeys");
     }
     let floors = has(Form::Building) || has(Form::IsolatedBuilding);
-    let masses = match (floors, has(Form::Deck)) {
-        (true, true) => "floors and decks",
-        (false, true) => "decks",
-        _ => "floors",
+    let (masses, mass) = match (floors, has(Form::Deck)) {
+        (true, true) => ("floors and decks", "floor or deck"),
+        (false, true) => ("decks", "deck"),
+        _ => ("floors", "floor"),
     };
     let mut contact: Vec<&str> = Vec::new();
     for m in meetings {
@@ -133,6 +135,7 @@ pub fn inside(meetings: &[Meeting]) -> Inside {
     Inside {
         forces: and(&forces),
         masses: masses.to_string(),
+        mass: mass.to_string(),
         contact: contact.join(" or "),
         part,
         parted,
@@ -146,6 +149,38 @@ fn and(words: &[&str]) -> String {
         [one] => (*one).to_string(),
         [head @ .., last] => format!("{} and {last}", head.join(", ")),
     }
+}
+
+/// What dissipates a run's hysteretic energy, for its label ("storey hysteresis"): "storey", "isolator",
+/// "bearing", or several ("isolator and storey"), from what yields: the inelastic storeys above any
+/// isolator, the inelastic isolators of buildings, the inelastic bearings of decks. With nothing inelastic,
+/// what the run has: "storey", or a bridge's "bearing".
+pub fn hysteresis_of(buildings: &[BuildingSummary]) -> String {
+    let (mut storey, mut isolator, mut bearing) = (false, false, false);
+    for b in buildings {
+        for &j in &b.inelastic_storeys {
+            match (j, b.form()) {
+                (1, Form::Deck) => bearing = true,
+                (1, Form::IsolatedBuilding) => isolator = true,
+                _ => storey = true,
+            }
+        }
+    }
+    if !(storey || isolator || bearing) {
+        storey = buildings.iter().any(|b| b.form() != Form::Deck);
+        bearing = !storey && !buildings.is_empty();
+    }
+    let mut words = Vec::new();
+    if bearing {
+        words.push("bearing");
+    }
+    if isolator {
+        words.push("isolator");
+    }
+    if storey || words.is_empty() {
+        words.push("storey");
+    }
+    and(&words)
 }
 
 /// The note of a site's delivered e in `summary.json`: what it is, and why it differs from the e asked.

@@ -31,23 +31,6 @@ impl Form {
         }
     }
 
-    /// The noun of its masses, the ones that strike: "floor", or a deck's "deck".
-    pub fn mass_noun(self) -> &'static str {
-        match self {
-            Form::Building | Form::IsolatedBuilding => "floor",
-            Form::Deck => "deck",
-        }
-    }
-
-    /// The noun of its storeys as a table's column names them: "storey", or a deck's "bearings" (its one
-    /// storey; an isolated building's storey 1 is its isolator, named on its row).
-    pub fn storey_noun(self) -> &'static str {
-        match self {
-            Form::Building | Form::IsolatedBuilding => "storey",
-            Form::Deck => "bearings",
-        }
-    }
-
     /// The noun of its isolator: "isolator", or a deck's "bearings".
     pub fn isolator_noun(self) -> &'static str {
         match self {

@@ -1,6 +1,7 @@
 //! What a run prints before it starts: the record, the settings, each building with its modes, each contact
 //! site and device.
 
+use super::tables::who;
 use crate::describe::contact_label;
 use crate::output::{fmt_num, fmt_sig};
 use pounding::analysis::{Building, Bumper, Scenario, SiteKind};
@@ -35,9 +36,16 @@ pub fn print(loaded: &Loaded, file: &Path) {
         building(b);
     }
     sites(s);
+    // Decks are one mass each: no floor numbers when every structure is one.
+    let decks = who(s) == "deck";
     for d in s.devices() {
         let [a, b] = s.device_between(d);
         let floors: Vec<String> = d.floors.iter().map(|(i, j)| format!("{i}-{j}")).collect();
+        let at = if decks {
+            String::new()
+        } else {
+            format!(" at floors {}", floors.join(", "))
+        };
         let params: Vec<String> = d
             .law
             .parameters()
@@ -48,11 +56,10 @@ pub fn print(loaded: &Loaded, file: &Path) {
             })
             .collect();
         println!(
-            "\ndevice {}: {} {} between {a} and {b} at floors {}",
+            "\ndevice {}: {} {} between {a} and {b}{at}",
             d.name,
             d.law.name(),
             params.join(", "),
-            floors.join(", ")
         );
     }
     println!();
@@ -214,6 +221,8 @@ fn sites(s: &Scenario) {
     if s.sites().iter().any(|site| !site.active) {
         println!("\ncontacts off: the contacts and walls below record closings only, their laws never act");
     }
+    // Decks are one mass each: no floor numbers when every structure is one.
+    let decks = who(s) == "deck";
     for site in s.sites() {
         let law = contact_label(site.contact.spec(), site.contact.parameter());
         match site.kind {
@@ -223,23 +232,31 @@ fn sites(s: &Scenario) {
                     .iter()
                     .map(|l| format!("{}-{}", l.left.unwrap_or(0), l.right.unwrap_or(0)))
                     .collect();
+                let at = if decks {
+                    String::new()
+                } else {
+                    format!(" at floors {}", floors.join(", "))
+                };
                 println!(
-                    "\ncontact {}: gap {} m at floors {}, {law}",
+                    "\ncontact {}: gap {} m{at}, {law}",
                     site.name,
-                    fmt_num(site.gap),
-                    floors.join(", ")
+                    fmt_num(site.gap)
                 );
             }
             SiteKind::Wall { building, side } => {
                 let floors: Vec<String> =
                     site.levels.iter().map(|l| l.floor().to_string()).collect();
+                let at = if decks {
+                    String::new()
+                } else {
+                    format!(", floors {}", floors.join(", "))
+                };
                 println!(
-                    "\nwall {}: {} of {}, gap {} m, floors {}, {law}",
+                    "\nwall {}: {} of {}, gap {} m{at}, {law}",
                     site.name,
                     side.name(),
                     s.buildings()[building].name,
-                    fmt_num(site.gap),
-                    floors.join(", ")
+                    fmt_num(site.gap)
                 );
             }
         }

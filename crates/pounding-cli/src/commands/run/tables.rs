@@ -14,7 +14,7 @@ pub fn print(s: &Scenario, r: &Results) {
     isolators(s, r);
     sites(s, r);
     devices(s, r);
-    energy(r);
+    energy(s, r);
 }
 
 /// Metres as millimetres, N as MN, J as kJ: the units of the terminal tables, the figures and the report.
@@ -28,13 +28,45 @@ fn kj(x: f64) -> String {
     fmt_table(1e-3 * x, 4)
 }
 
-/// The peak response of every floor and storey.
+/// The word of the structures' column: "building", or "deck" when every structure is one, else "structure".
+pub(super) fn who(s: &Scenario) -> &'static str {
+    let decks = s
+        .buildings()
+        .iter()
+        .filter(|b| b.structure.form() == Form::Deck)
+        .count();
+    match decks {
+        0 => "building",
+        d if d == s.buildings().len() => "deck",
+        _ => "structure",
+    }
+}
+
+/// The peak response of every floor and storey (of a bridge's decks: each deck and its bearings).
 fn floors(s: &Scenario, r: &Results) {
     println!(
         "peak responses (lengths in mm, forces in MN, energies in kJ; the files hold m, N and J)\n"
     );
+    let who = who(s);
+    if who == "deck" {
+        // One mass on its bearings: the bearings' displacement is the deck's.
+        println!(
+            "deck        displacement_mm    at_s  abs_acceleration_m_per_s2  bearing_force_MN"
+        );
+        for (b, resp) in s.buildings().iter().zip(&r.buildings) {
+            println!(
+                "{:<10}  {:>15}  {:>6.2}  {:>25}  {:>16}",
+                b.name,
+                mm(resp.peak_displacement[0]),
+                resp.time_of_peak_displacement[0],
+                fmt_table(resp.peak_absolute_acceleration[0], 4),
+                mn(resp.peak_storey_shear[0])
+            );
+        }
+        return;
+    }
     println!(
-        "building    floor  displacement_mm    at_s  abs_acceleration_m_per_s2  storey  drift_mm  drift_ratio_%  shear_MN"
+        "{who:<10}  floor  displacement_mm    at_s  abs_acceleration_m_per_s2  storey  drift_mm  drift_ratio_%  shear_MN"
     );
     let mut isolated = false;
     for (b, resp) in s.buildings().iter().zip(&r.buildings) {
@@ -80,64 +112,90 @@ fn storey_name(form: Form, j: usize) -> String {
     }
 }
 
-/// The storeys that yield: ductility, residual drift, hysteretic energy.
+/// The storeys that yield (a bridge's: the bearings): ductility, residual drift, hysteretic energy.
 fn inelastic(s: &Scenario, r: &Results) {
     let inelastic = s
         .buildings()
         .iter()
         .any(|b| b.structure.storey_laws().iter().any(|l| l.is_inelastic()));
-    if inelastic {
+    if !inelastic {
+        return;
+    }
+    let who = who(s);
+    if who == "deck" {
         println!(
-            "\nbuilding    storey  model     ductility  residual_drift_mm  hysteretic_energy_kJ"
+            "\ndeck        bearings  ductility  residual_displacement_mm  hysteretic_energy_kJ"
         );
-        for (b, resp) in s.buildings().iter().zip(&r.buildings) {
-            for (j, law) in b.structure.storey_laws().iter().enumerate() {
-                if let Some(mu) = resp.ductility[j] {
-                    println!(
-                        "{:<10}  {:>6}  {:<8}  {:>9.3}  {:>17}  {:>20}",
-                        b.name,
-                        storey_name(b.structure.form(), j),
-                        law.name(),
-                        mu,
-                        mm(resp.residual_drift[j]),
-                        kj(resp.hysteretic_energy[j])
-                    );
-                }
+    } else {
+        println!(
+            "\n{who:<10}  storey  model     ductility  residual_drift_mm  hysteretic_energy_kJ"
+        );
+    }
+    for (b, resp) in s.buildings().iter().zip(&r.buildings) {
+        for (j, law) in b.structure.storey_laws().iter().enumerate() {
+            let Some(mu) = resp.ductility[j] else {
+                continue;
+            };
+            if who == "deck" {
+                println!(
+                    "{:<10}  {:<8}  {:>9.3}  {:>24}  {:>20}",
+                    b.name,
+                    law.name(),
+                    mu,
+                    mm(resp.residual_drift[j]),
+                    kj(resp.hysteretic_energy[j])
+                );
+            } else {
+                println!(
+                    "{:<10}  {:>6}  {:<8}  {:>9.3}  {:>17}  {:>20}",
+                    b.name,
+                    storey_name(b.structure.form(), j),
+                    law.name(),
+                    mu,
+                    mm(resp.residual_drift[j]),
+                    kj(resp.hysteretic_energy[j])
+                );
             }
         }
     }
 }
 
-/// The isolators: their displacement against their clearance.
+/// The isolators (a bridge's bearings): their displacement against their clearance.
 fn isolators(s: &Scenario, r: &Results) {
     let isolated: Vec<usize> = (0..s.buildings().len())
         .filter(|&b| s.buildings()[b].structure.isolator().is_some())
         .collect();
-    if !isolated.is_empty() {
+    if isolated.is_empty() {
+        return;
+    }
+    let who = who(s);
+    let what = if who == "deck" {
+        "bearings"
+    } else {
+        "isolator"
+    };
+    println!("\n{who:<10}  {what:<17}  peak_displacement_mm  clearance_mm  residual_mm");
+    for b in isolated {
+        let (st, resp) = (&s.buildings()[b].structure, &r.buildings[b]);
+        let iso = st.isolator().expect("isolated");
+        let clearance = iso.clearance.map_or("-".to_string(), mm);
+        let over = match iso.clearance {
+            Some(c) if resp.peak_drift[0] > c => "  EXCEEDED",
+            _ => "",
+        };
+        // Among isolated buildings, a deck's isolator is said to be its bearings.
+        let model = match st.form() {
+            Form::Deck if who != "deck" => format!("{} bearings", iso.model.name()),
+            _ => iso.model.name().to_string(),
+        };
         println!(
-            "\nbuilding    isolator           peak_displacement_mm  clearance_mm  residual_mm"
+            "{:<10}  {:<17}  {:>20}  {:>12}  {:>11}{over}",
+            s.buildings()[b].name,
+            model,
+            mm(resp.peak_drift[0]),
+            clearance,
+            mm(resp.residual_drift[0])
         );
-        for b in isolated {
-            let (st, resp) = (&s.buildings()[b].structure, &r.buildings[b]);
-            let iso = st.isolator().expect("isolated");
-            let clearance = iso.clearance.map_or("-".to_string(), mm);
-            let over = match iso.clearance {
-                Some(c) if resp.peak_drift[0] > c => "  EXCEEDED",
-                _ => "",
-            };
-            let model = match st.form() {
-                Form::Deck => format!("{} bearings", iso.model.name()),
-                _ => iso.model.name().to_string(),
-            };
-            println!(
-                "{:<10}  {:<17}  {:>20}  {:>12}  {:>11}{over}",
-                s.buildings()[b].name,
-                model,
-                mm(resp.peak_drift[0]),
-                clearance,
-                mm(resp.residual_drift[0])
-            );
-        }
     }
 }
 
@@ -281,13 +339,24 @@ fn lines(text: &str, width: usize) -> Vec<String> {
 /// Every device: its peaks per floor pair.
 fn devices(s: &Scenario, r: &Results) {
     if !s.devices().is_empty() {
-        println!("\ndevice               floors  peak_force_MN  max_closing_mm  max_opening_mm");
+        // Decks are one mass each: no floor numbers when every structure is one.
+        let floors = |text: String| {
+            if who(s) == "deck" {
+                String::new()
+            } else {
+                text
+            }
+        };
+        println!(
+            "\ndevice               {}peak_force_MN  max_closing_mm  max_opening_mm",
+            floors("floors  ".into())
+        );
         for (d, dr) in s.devices().iter().zip(&r.devices) {
             for (k, (i, j)) in d.floors.iter().enumerate() {
                 println!(
-                    "{:<20} {:>6}  {:>13}  {:>14}  {:>14}",
+                    "{:<20} {}{:>13}  {:>14}  {:>14}",
                     d.name,
-                    format!("{i}-{j}"),
+                    floors(format!("{:>6}  ", format!("{i}-{j}"))),
                     mn(dr.peak_force[k]),
                     mm(dr.max_closing[k]),
                     mm(dr.max_opening[k])
@@ -297,8 +366,28 @@ fn devices(s: &Scenario, r: &Results) {
     }
 }
 
+/// What can yield, for the events' words: "storey", "isolator and storey", "bearing", ...
+fn yielding(s: &Scenario) -> String {
+    let has = |f: Form| s.buildings().iter().any(|b| b.structure.form() == f);
+    let mut words = Vec::new();
+    if has(Form::Deck) {
+        words.push("bearing");
+    }
+    if has(Form::IsolatedBuilding) {
+        words.push("isolator");
+    }
+    if has(Form::Building) || has(Form::IsolatedBuilding) {
+        words.push("storey");
+    }
+    match words.as_slice() {
+        [a, b, c] => format!("{a}, {b} and {c}"),
+        [a, b] => format!("{a} and {b}"),
+        _ => words.concat(),
+    }
+}
+
 /// The energy at the end, its balance and the integration counts.
-fn energy(r: &Results) {
+fn energy(s: &Scenario, r: &Results) {
     let e = &r.energy.end;
     println!(
         "\nenergy at the end, kJ: input {} = kinetic {} + strain {} + damping {} + hysteretic {} + contact {}",
@@ -314,7 +403,10 @@ fn energy(r: &Results) {
         r.energy.relative_error
     );
     println!(
-        "integration: {} steps ({} rejected), {} events (contact touch, turn, separation; storey yield, reversal; device taut, slack, reversal)",
-        r.statistics.steps, r.statistics.rejected, r.statistics.events
+        "integration: {} steps ({} rejected), {} events (contact touch, turn, separation; {} yield, reversal; device taut, slack, reversal)",
+        r.statistics.steps,
+        r.statistics.rejected,
+        r.statistics.events,
+        yielding(s)
     );
 }

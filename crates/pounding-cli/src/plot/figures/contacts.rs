@@ -172,16 +172,16 @@ pub fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<F
         .collect(),
         ..Figure::default()
     };
+    let (masses, what) = closing_words(d);
     let closing_fig = Figure {
         id: "relative-displacement".into(),
-        title: "Relative displacement of the contact floors against the gap".into(),
+        title: format!("Relative displacement of the contact {masses} against the gap"),
         subtitle: d.subtitle.clone(),
         panels: closing,
         plot: (PLOT.0, multiple_height(n)),
         share_x: true,
         notes: vec![format!(
-            "u_left \u{2212} u_right of each pair of contact floors (for a wall, the floor's displacement towards \
-             it); dashed: the gap, contact above it{}. One axis for every level.",
+            "{what}; dashed: the gap, contact above it{}. One axis for every level.",
             if d.summary.sites.iter().any(|s| s.bumper.is_some()) {
                 "; dotted: a bumper's face, touched first"
             } else {
@@ -192,6 +192,34 @@ pub fn contact_figures(d: &RunData) -> (Option<Figure>, Option<Figure>, Option<F
     };
 
     (Some(force_fig), Some(closing_fig), restitution(d, &levels))
+}
+
+/// The words of `relative-displacement.svg`: the masses that meet ("floors", "decks") and what is drawn
+/// ("u_left - u_right of each pair of contact floors (for a wall, the floor's displacement towards it)").
+fn closing_words(d: &RunData) -> (String, String) {
+    let meet = |wall: bool| -> Vec<Meeting> {
+        d.summary
+            .sites
+            .iter()
+            .filter(|c| c.is_wall() == wall)
+            .map(|c| Meeting::of_summary(&d.summary, c))
+            .collect()
+    };
+    let (pairs, walls) = (meet(false), meet(true));
+    let all: Vec<Meeting> = pairs.iter().chain(&walls).copied().collect();
+    let what = match (pairs.is_empty(), walls.is_empty()) {
+        (false, false) => format!(
+            "u_left \u{2212} u_right of each pair of contact {} (for a wall, the {}'s displacement towards it)",
+            inside(&pairs).masses,
+            inside(&walls).mass
+        ),
+        (false, true) => format!(
+            "u_left \u{2212} u_right of each pair of contact {}",
+            inside(&pairs).masses
+        ),
+        _ => format!("the {}'s displacement towards the wall", inside(&walls).mass),
+    };
+    (inside(&all).masses, what)
 }
 
 /// For each contact level: its force over time, and its closing against its gap (on one range for every

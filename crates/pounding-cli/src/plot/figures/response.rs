@@ -7,6 +7,7 @@ use crate::plot::axis::human;
 use crate::plot::{Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
 use crate::run_data::RunData;
 use pounding::structure::Form;
+use pounding_study::summary::inside::hysteresis_of;
 
 /// The ground motion, and each building's floor displacements with the instants of its impacts.
 pub fn displacement(d: &RunData) -> Figure {
@@ -169,12 +170,15 @@ pub fn energy(d: &RunData) -> Figure {
     energy.x_tight = true;
     energy.y_zero = true;
     energy.legend = Legend::Right;
+    // What yields: storeys, isolators, a bridge's bearings.
+    let what = hysteresis_of(&d.summary.buildings);
+    let by_hysteresis = format!("dissipated by {what} hysteresis");
     let names = [
         "input (ground motion)",
         "kinetic",
         "strain",
         "dissipated by structural damping",
-        "dissipated by storey hysteresis",
+        &by_hysteresis,
         "contact (dissipated and stored)",
     ];
     let styles = [
@@ -190,7 +194,7 @@ pub fn energy(d: &RunData) -> Figure {
     ];
     for ((name, e), st) in names.iter().zip(&d.energy).zip(styles) {
         // Linear storeys dissipate nothing by hysteresis: no line for them.
-        if name.contains("hysteresis") {
+        if *name == by_hysteresis {
             if e.iter().all(|x| *x == 0.0) {
                 continue;
             }
@@ -203,11 +207,12 @@ pub fn energy(d: &RunData) -> Figure {
     Figure {
         id: "energy".into(),
         title: if hysteretic {
-            "Energy balance: input = kinetic + strain + structural damping + storey hysteresis + contact"
+            format!(
+                "Energy balance: input = kinetic + strain + structural damping + {what} hysteresis + contact"
+            )
         } else {
-            "Energy balance: input = kinetic + strain + structural damping + contact"
-        }
-        .into(),
+            "Energy balance: input = kinetic + strain + structural damping + contact".into()
+        },
         subtitle: d.subtitle.clone(),
         panels: vec![energy],
         columns: 1,
