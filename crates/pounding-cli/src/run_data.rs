@@ -104,6 +104,8 @@ pub struct ImpactData {
     pub max_penetration: f64,
     /// An impact of the hard law behind a consumed bumper (layer `consumed`).
     pub consumed: bool,
+    /// Which law of its site it is of: `direct`, a bumper's layer, or the hard law behind a consumed one.
+    pub layer: pounding::analysis::Layer,
 }
 
 /// Everything a run wrote, read back.
@@ -185,6 +187,7 @@ impl RunData {
                     dissipated_energy: r.dissipated_energy_j,
                     max_penetration: r.max_penetration_m,
                     consumed: r.layer == pounding::analysis::Layer::Consumed,
+                    layer: r.layer,
                 })
             })
             .collect::<Result<Vec<_>, CliError>>()?;

@@ -1289,6 +1289,135 @@ fn a_bridge_is_told_in_deck_and_bearing_words() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// The rows of the report's table `id`, each its cells' texts (header row left out).
+fn table_rows(doc: &roxmltree::Document, id: &str) -> Vec<Vec<String>> {
+    let t = doc
+        .descendants()
+        .find(|n| n.has_tag_name("table") && n.attribute("id") == Some(id))
+        .unwrap_or_else(|| panic!("table {id}"));
+    t.descendants()
+        .filter(|n| n.has_tag_name("tr"))
+        .map(|tr| {
+            tr.children()
+                .filter(|n| n.has_tag_name("td"))
+                .map(|n| {
+                    n.descendants()
+                        .filter(|t| t.is_text())
+                        .filter_map(|t| t.text())
+                        .collect::<String>()
+                })
+                .collect::<Vec<_>>()
+        })
+        .filter(|r| !r.is_empty())
+        .collect()
+}
+
+#[test]
+fn a_bumper_is_in_the_report_with_its_law_and_each_impact_with_its_layer() {
+    // examples/isolated-moat.toml: a rubber bumper on the east moat wall, consumed twice.
+    let out = tmp("moat-bumper");
+    let s = ok_json(&[
+        "run",
+        &example("isolated-moat.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "--report",
+        "--json",
+    ]);
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    let doc = report(&html);
+    let site = sites(&s, "wall")
+        .into_iter()
+        .find(|w| w["bumper"].is_object())
+        .expect("a wall with a bumper");
+    let b = &site["bumper"];
+    let name = site["name"].as_str().unwrap();
+    // The contacts table: the site's row (the law behind the bumper), then the bumper's own row.
+    let rows = table_rows(&doc, "contacts");
+    let k = rows
+        .iter()
+        .position(|r| r[0].starts_with(&format!("wall {name} ")))
+        .expect("the site's row");
+    assert!(rows[k][0].ends_with("behind its bumper"), "{:?}", rows[k]);
+    let bumper = &rows[k + 1];
+    let mm = |x: f64| format!("{}", (x * 1e3 * 1e6).round() / 1e6);
+    assert_eq!(
+        bumper[0],
+        format!(
+            "bumper of {name}: {} mm thick, consumed at strain {}",
+            mm(b["thickness"].as_f64().unwrap()),
+            b["max_strain"]
+        )
+    );
+    let face = site["gap"].as_f64().unwrap() - b["thickness"].as_f64().unwrap();
+    assert_eq!(bumper[1], format!("{} (its face)", mm(face)));
+    assert_eq!(bumper[3], b["model"].as_str().unwrap());
+    let f = |v: &Value| v.as_f64().unwrap();
+    assert_eq!(bumper[4], format!("{}", f(&b["e"])));
+    assert_eq!(
+        bumper[5],
+        format!("{} (n = {})", f(&b["stiffness"]), f(&b["exponent"]))
+    );
+    let chi = b["damping_parameter"]["value"].as_f64().unwrap();
+    assert_eq!(bumper[6], format!("chi = {}", (chi * 1e4).round() / 1e4));
+    assert_ne!(
+        rows[k][4], bumper[4],
+        "the two laws' e differ in this example"
+    );
+    // The impacts table: a layer column equal to impacts.csv's, and a caption that says what a consumed
+    // row is.
+    let (ih, irows) = csv(&out.join("impacts.csv"));
+    let c = |name: &str| ih.iter().position(|h| h == name).unwrap();
+    let list = table_rows(&doc, "impact-list");
+    assert_eq!(list.len(), irows.len());
+    let layer_col = 3;
+    for (shown, row) in list.iter().zip(&irows) {
+        assert_eq!(shown[layer_col], row[c("layer")]);
+    }
+    let caption = doc
+        .descendants()
+        .find(|n| n.has_tag_name("table") && n.attribute("id") == Some("impact-list"))
+        .and_then(|t| t.children().find(|n| n.has_tag_name("caption")))
+        .and_then(|n| n.text())
+        .unwrap();
+    assert!(
+        caption.contains("A consumed row is no impact of its own"),
+        "{caption}"
+    );
+    // What the caption says holds: each consumed row lies within the last bumper row of its level before it.
+    let num = |r: &Vec<String>, name: &str| -> f64 { r[c(name)].parse().unwrap() };
+    let mut consumed = 0;
+    for (i, r) in irows.iter().enumerate() {
+        if r[c("layer")] != "consumed" {
+            continue;
+        }
+        consumed += 1;
+        let level = |q: &Vec<String>| {
+            (
+                q[c("contact")].clone(),
+                q[c("floor_left")].clone(),
+                q[c("floor_right")].clone(),
+            )
+        };
+        let host = irows[..i]
+            .iter()
+            .rev()
+            .find(|q| q[c("layer")] == "bumper" && level(q) == level(r))
+            .expect("a bumper row before it");
+        let (t0, t1) = (
+            num(host, "time_s"),
+            num(host, "time_s") + num(host, "duration_s"),
+        );
+        assert!(
+            t0 <= num(r, "time_s") && num(r, "time_s") + num(r, "duration_s") <= t1,
+            "{r:?} within {host:?}"
+        );
+    }
+    assert_eq!(consumed, site["consumed"].as_u64().unwrap());
+    assert!(consumed > 0);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 /// Two 6-storey buildings side by side, in contact at every floor (six contact levels), under the built-in
 /// synthetic record of seed 7: every level pounds.
 const SIX_LEVELS: &str = r#"

@@ -109,6 +109,8 @@ fn impacts(h: &mut String, d: &RunData) {
     }
     // Decks are one mass each: no floor numbers when every structure is one.
     let decks = d.summary.buildings.iter().all(|b| b.form() == Form::Deck);
+    // With a bumper, which law each row is of.
+    let layers = d.summary.sites.iter().any(|c| c.bumper.is_some());
     let rows: Vec<Vec<String>> = d.impacts[..shown]
         .iter()
         .enumerate()
@@ -120,6 +122,9 @@ fn impacts(h: &mut String, d: &RunData) {
                     (f, 0) | (0, f) => f.to_string(),
                     (l, r) => format!("{l}-{r}"),
                 });
+            }
+            if layers {
+                row.push(i.layer.name().to_string());
             }
             row.extend([
                 format!("{:.4}", i.time),
@@ -138,6 +143,9 @@ fn impacts(h: &mut String, d: &RunData) {
     if !decks {
         head.push("floors");
     }
+    if layers {
+        head.push("layer");
+    }
     head.extend([
         "touch (s)",
         "v_i (m/s)",
@@ -148,11 +156,14 @@ fn impacts(h: &mut String, d: &RunData) {
         "max penetration (mm)",
         "dissipated (kJ)",
     ]);
-    table(
-        h,
-        "impact-list",
-        "Every impact (time of touch, relative velocity at touch, delivered e = −v_out / v_i)",
-        &head,
-        &rows,
-    );
+    let caption = if layers {
+        "Every impact (time of touch, relative velocity at touch, delivered e = −v_out / v_i), as the rows of \
+         impacts.csv (#). Layer: direct, the site's own law; bumper, a bumper's layer; consumed, the hard law \
+         behind a bumper compressed to its limit (max_strain × thickness). A consumed row is no impact of its \
+         own: it lies within the last bumper row of its level above it, from the instant the layer \
+         was used up (its touch, its v_i the closing speed then) to the instant the hard law let go."
+    } else {
+        "Every impact (time of touch, relative velocity at touch, delivered e = −v_out / v_i)"
+    };
+    table(h, "impact-list", caption, &head, &rows);
 }

@@ -5,7 +5,7 @@ use crate::plot::axis::plain;
 use pounding::structure::Form;
 use pounding_study::summary::inside::hysteresis_of;
 use pounding_study::summary::{
-    BuildingSummary, DampingSummary, RunSummary, SitePlace, SiteSummary,
+    BuildingSummary, ContactLawSummary, DampingSummary, RunSummary, SitePlace, SiteSummary,
 };
 
 /// The modal properties of each building.
@@ -216,8 +216,9 @@ fn decks_only(s: &RunSummary) -> bool {
     s.buildings.iter().all(|b| b.form() == Form::Deck)
 }
 
-/// One site's row of the contacts table (without its floors when `decks`: every structure is a deck).
-fn site_row(c: &SiteSummary, decks: bool) -> Vec<String> {
+/// One site's rows of the contacts table (without its floors when `decks`: every structure is a deck): the
+/// site with its law, and a bumper's layer with its own.
+fn site_rows(c: &SiteSummary, decks: bool) -> Vec<Vec<String>> {
     let label = match &c.place {
         SitePlace::Contact { between } => between.join("|"),
         SitePlace::Wall { facing, side } => {
@@ -233,7 +234,59 @@ fn site_row(c: &SiteSummary, decks: bool) -> Vec<String> {
             (None, None) => String::new(),
         })
         .collect();
-    let param = match c.law.damping_parameter {
+    let seat = match (c.seat, c.unseated) {
+        (Some(x), Some(true)) => format!("{}: UNSEATED", mm(x)),
+        (Some(x), _) => format!("{}: seated", mm(x)),
+        _ => "–".into(),
+    };
+    let impacts = match c.consumed {
+        Some(k) => format!("{} (bumper consumed {k})", c.impacts),
+        None => c.impacts.to_string(),
+    };
+    // With a bumper, the site's row gives the law behind it; the bumper's own row follows.
+    let label = match c.bumper {
+        Some(_) => format!("{label}, behind its bumper"),
+        None => label,
+    };
+    let mut row = vec![e(&label), mm(c.gap)];
+    if !decks {
+        row.push(floors.join(", "));
+    }
+    row.extend(law_cells(&c.law));
+    row.extend([
+        impacts,
+        mn(c.peak_force),
+        mm(c.max_penetration),
+        kj(c.dissipated_energy),
+        plain(c.largest_opening() * 1e3, 4),
+        seat,
+    ]);
+    let mut rows = vec![row];
+    if let Some(b) = &c.bumper {
+        // The layer: its thickness, where its face is, its law; the site's totals are on the row above.
+        let mut row = vec![
+            e(&format!(
+                "bumper of {}: {} mm thick, consumed at strain {}",
+                c.name,
+                mm(b.thickness),
+                n(b.max_strain)
+            )),
+            format!("{} (its face)", mm(c.gap - b.thickness)),
+        ];
+        if !decks {
+            row.push(floors.join(", "));
+        }
+        row.extend(law_cells(&b.law));
+        row.push(format!("{} on its face", c.impacts));
+        row.extend(std::iter::repeat_n(String::new(), 5));
+        rows.push(row);
+    }
+    rows
+}
+
+/// The model, e, stiffness and damping cells of a contact law.
+fn law_cells(law: &ContactLawSummary) -> [String; 4] {
+    let param = match law.damping_parameter {
         DampingSummary::None => "none (elastic)".into(),
         DampingSummary::PerImpact => "set per impact".into(),
         DampingSummary::Zeta { value } => format!("zeta = {}", n(value)),
@@ -246,32 +299,20 @@ fn site_row(c: &SiteSummary, decks: bool) -> Vec<String> {
             format!("p_y = {} Pa, R = {} m", n(value), n(radius))
         }
     };
-    let seat = match (c.seat, c.unseated) {
-        (Some(x), Some(true)) => format!("{}: UNSEATED", mm(x)),
-        (Some(x), _) => format!("{}: seated", mm(x)),
-        _ => "–".into(),
+    // A law asked no one e: a table of e against v_i, a damping constant, Thornton's plastic spheres.
+    let e_cell = match (law.e, &law.e_table, law.damping_parameter) {
+        (Some(e), _, _) => n(e),
+        (None, Some(_), _) => "table e(v_i)".to_string(),
+        (None, None, DampingSummary::DampingConstant { .. }) => "from D/K at v_i".to_string(),
+        (None, None, DampingSummary::YieldPressure { .. }) => "plastic".to_string(),
+        _ => "elastic".to_string(),
     };
-    let impacts = match c.consumed {
-        Some(k) => format!("{} (bumper consumed {k})", c.impacts),
-        None => c.impacts.to_string(),
-    };
-    let mut row = vec![e(&label), mm(c.gap)];
-    if !decks {
-        row.push(floors.join(", "));
-    }
-    row.extend([
-        e(c.law.model.name()),
-        c.law.e.map_or_else(|| "elastic".to_string(), n),
-        format!("{} (n = {})", n(c.law.stiffness), n(c.law.exponent)),
+    [
+        e(law.model.name()),
+        e_cell,
+        format!("{} (n = {})", n(law.stiffness), n(law.exponent)),
         param,
-        impacts,
-        mn(c.peak_force),
-        mm(c.max_penetration),
-        kj(c.dissipated_energy),
-        plain(c.largest_opening() * 1e3, 4),
-        seat,
-    ]);
-    row
+    ]
 }
 
 /// The contacts, the devices and the energy at the end.
@@ -281,7 +322,7 @@ pub fn contacts(h: &mut String, s: &RunSummary) {
     let decks = decks_only(s);
     let rows: Vec<Vec<String>> = (s.sites.iter().filter(|c| !c.is_wall()))
         .chain(s.sites.iter().filter(|c| c.is_wall()))
-        .map(|c| site_row(c, decks))
+        .flat_map(|c| site_rows(c, decks))
         .collect();
     let mut head = vec!["contact", "gap (mm)"];
     if !decks {
@@ -299,7 +340,13 @@ pub fn contacts(h: &mut String, s: &RunSummary) {
         "largest opening (mm)",
         "seat (mm)",
     ]);
-    table(h, "contacts", "Contacts", &head, &rows);
+    let caption = if s.sites.iter().any(|c| c.bumper.is_some()) {
+        "Contacts (a bumper on its own row under its site, with its own law; the site's row gives the law \
+         behind the bumper and the site's totals)"
+    } else {
+        "Contacts"
+    };
+    table(h, "contacts", caption, &head, &rows);
     devices(h, s);
     let en = &s.energy;
     // What yields: storeys, isolators, a bridge's bearings.
