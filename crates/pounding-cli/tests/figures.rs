@@ -1418,6 +1418,84 @@ fn a_bumper_is_in_the_report_with_its_law_and_each_impact_with_its_layer() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+#[test]
+fn impacts_released_at_one_over_chi_are_counted_and_explained() {
+    // A clamped Hunt-Crossley-type force k d^n (1 + chi d'/v_i) vanishes when the parting speed reaches
+    // v_i/chi; an impact whose floors part that fast with penetration left ends there, at e = 1/chi exactly.
+    // isolated-moat: four impacts on the bumper (chi 1.4328, 1/chi 0.698, e asked 0.5); three-in-a-row:
+    // three between middle and east (1/chi 1.026). Found from the files alone, then looked for in the note.
+    for (ex, expect, says) in [
+        ("isolated-moat.toml", 4, "with the bumper still compressed"),
+        ("three-in-a-row.toml", 3, "with penetration left"),
+    ] {
+        let out = tmp(&format!("released-{ex}"));
+        let s = ok_json(&[
+            "run",
+            &example(ex),
+            "--out",
+            out.to_str().unwrap(),
+            "--plots",
+            "--json",
+        ]);
+        // Each site's chi, and its bumper's, by (site, layer).
+        let mut chi = std::collections::HashMap::new();
+        for site in s["sites"].as_array().unwrap() {
+            let name = site["name"].as_str().unwrap().to_string();
+            for (layer, law) in [
+                ("direct", &site["damping_parameter"]),
+                ("bumper", &site["bumper"]["damping_parameter"]),
+            ] {
+                if law["name"] == "chi" {
+                    chi.insert((name.clone(), layer), law["value"].as_f64().unwrap());
+                }
+            }
+        }
+        let (ih, irows) = csv(&out.join("impacts.csv"));
+        let c = |name: &str| ih.iter().position(|h| h == name).unwrap();
+        let (lh, lrows) = csv(&out.join("impact-loops.csv"));
+        let l = |name: &str| lh.iter().position(|h| h == name).unwrap();
+        let mut at = Vec::new();
+        for (k, r) in irows.iter().enumerate() {
+            let layer = r[c("layer")].as_str();
+            let Some(&x) = chi.get(&(r[c("contact")].clone(), layer)) else {
+                continue;
+            };
+            let Ok(e) = r[c("e_post")].parse::<f64>() else {
+                continue;
+            };
+            if (e * x - 1.0).abs() <= 1e-9 {
+                at.push((k + 1, 1.0 / x));
+            }
+        }
+        assert_eq!(at.len(), expect, "{ex}: {at:?}");
+        // Each ended with penetration left and no force: its loop's last point.
+        for &(k, _) in &at {
+            let last = lrows
+                .iter()
+                .rfind(|r| r[l("impact")] == k.to_string())
+                .unwrap();
+            let pen: f64 = last[l("penetration_m")].parse().unwrap();
+            let force: f64 = last[l("force_N")].parse().unwrap();
+            assert!(
+                pen > 1e-4 && force == 0.0,
+                "{ex}: impact {k} ends at {pen} m, {force} N"
+            );
+        }
+        let words = figure_words(&out.join("impact-restitution.svg"));
+        for part in [
+            format!(
+                "Of these, {expect} deliver exactly 1/chi of their law, 1/chi = {:.3}",
+                at[0].1
+            ),
+            "vanishes when the parting speed d' reaches v_i/chi".to_string(),
+            says.to_string(),
+        ] {
+            assert!(words.contains(&part), "{ex}: {part:?} not in {words:?}");
+        }
+        let _ = std::fs::remove_dir_all(&out);
+    }
+}
+
 /// Two 6-storey buildings side by side, in contact at every floor (six contact levels), under the built-in
 /// synthetic record of seed 7: every level pounds.
 const SIX_LEVELS: &str = r#"

@@ -4,10 +4,10 @@ use super::common::{fmt_mm, force, time};
 use crate::output::{fmt_num, fmt_sig};
 use crate::plot::axis::human;
 use crate::plot::{Dash, Figure, Legend, Mark, Panel, Quantity, Series, Style, PLOT};
-use crate::run_data::RunData;
+use crate::run_data::{ImpactData, RunData};
 use pounding::contact::material_e;
 use pounding_study::summary::inside::{inside, Meeting};
-use pounding_study::summary::DampingSummary;
+use pounding_study::summary::{ContactLawSummary, DampingSummary};
 
 /// A contact level of a run: one contact element (a floor pair of a contact, or a wall's floor).
 struct Level {
@@ -352,6 +352,8 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
     let (mut above, mut ended, mut top) = (0, 0, f64::NEG_INFINITY);
     // What met in the impacts above the e asked, for the words of the note.
     let mut met: Vec<Meeting> = Vec::new();
+    // The impacts that ended when their clamped force vanished with penetration left (e = 1/chi).
+    let mut released = Released::default();
     for lv in levels {
         let cd = &d.contacts[lv.contact];
         // Impacts on the site's face (a bumper's layer, or the law itself); the hard law behind a consumed
@@ -398,6 +400,7 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
             Some(b) => &b.law,
             None => &d.summary.sites[lv.contact].law,
         };
+        released.add(d, (lv.contact, asked), law, &mine);
         if let DampingSummary::YieldPressure { .. } = law.damping_parameter {
             let mut own: Vec<(f64, f64)> = mine
                 .iter()
@@ -426,6 +429,9 @@ fn restitution(d: &RunData, levels: &[Level]) -> Option<Figure> {
         let mut notes = Vec::new();
         if above > 0 {
             notes.push(above_note(above, ended, top, &met));
+        }
+        if released.count > 0 {
+            notes.push(released.note(ended));
         }
         Figure {
             id: "impact-restitution".into(),
@@ -460,6 +466,124 @@ fn above_note(above: usize, ended: usize, top: f64, met: &[Meeting]) -> String {
         note.push_str(&format!(" Above 1, {} {}.", w.forces, w.parted));
     }
     note
+}
+
+/// The impacts that ended when the force of their clamped Hunt–Crossley-type law, `k d^n (1 + chi d'/v_i)`,
+/// vanished: at the parting speed `d' = -v_i/chi`, with penetration left, so that they delivered exactly
+/// `e = 1/chi` (`1/((D/K) v_i)` with a damping constant), whatever e the law was asked.
+#[derive(Default)]
+struct Released {
+    /// How many, and how many of them lie above the e asked.
+    count: usize,
+    above: usize,
+    /// Each law concerned ("1/chi = 0.698 (the bumper of moat-east, chi = 1.4328)") and how many of its
+    /// impacts.
+    laws: Vec<(String, usize)>,
+    /// Whether some were on a bumper's layer, and some not.
+    bumper: bool,
+    direct: bool,
+    /// What met in them.
+    met: Vec<Meeting>,
+}
+
+impl Released {
+    /// Counts the ended impacts `mine` of site `site`, of law `law` (asked `asked`, unless an impact was
+    /// asked its own), that delivered its 1/chi (to 1e-9).
+    fn add(
+        &mut self,
+        d: &RunData,
+        (site, asked): (usize, Option<f64>),
+        law: &ContactLawSummary,
+        mine: &[&ImpactData],
+    ) {
+        let at = |i: &ImpactData| {
+            let ceiling = match law.damping_parameter {
+                DampingSummary::Chi { value } => 1.0 / value,
+                DampingSummary::DampingConstant { value } => 1.0 / (value * i.v_i),
+                _ => return false,
+            };
+            i.e_post
+                .is_some_and(|e| (e - ceiling).abs() <= 1e-9 * ceiling)
+        };
+        let n = mine.iter().filter(|i| at(i)).count();
+        if n == 0 {
+            return;
+        }
+        self.above += mine
+            .iter()
+            .filter(|i| at(i))
+            .filter(|i| {
+                let wanted = i.e_asked.or(asked).unwrap_or(1.0);
+                i.e_post.is_some_and(|e| e > wanted * (1.0 + 1e-9))
+            })
+            .count();
+        let sum = &d.summary.sites[site];
+        let whose = match sum.bumper {
+            Some(_) => format!("the bumper of {}", sum.name),
+            None if sum.is_wall() => format!("wall {}", sum.name),
+            None => format!("contact {}", sum.name),
+        };
+        let which = match law.damping_parameter {
+            DampingSummary::Chi { value } => format!(
+                "1/chi = {} ({whose}, chi = {})",
+                fmt_sig(1.0 / value, 4),
+                fmt_sig(value, 5)
+            ),
+            DampingSummary::DampingConstant { value } => {
+                format!("1/((D/K) v_i) ({whose}, D/K = {} s/m)", fmt_sig(value, 5))
+            }
+            _ => unreachable!("only these laws are counted"),
+        };
+        match self.laws.iter_mut().find(|l| l.0 == which) {
+            Some(l) => l.1 += n,
+            None => self.laws.push((which, n)),
+        }
+        self.count += n;
+        self.bumper |= sum.bumper.is_some();
+        self.direct |= sum.bumper.is_none();
+        self.met.push(Meeting::of_summary(&d.summary, sum));
+    }
+
+    /// The note: how many of the `ended` impacts, of which law, and why (after the note of those above the
+    /// e asked, which these are among when they lie above it too).
+    fn note(&self, ended: usize) -> String {
+        let n = self.count;
+        let verb = if n == 1 { "delivers" } else { "deliver" };
+        let who = if self.above == n {
+            format!("Of these, {n} {verb}")
+        } else {
+            format!("{n} of {ended} impacts {verb}")
+        };
+        let laws: Vec<String> = self
+            .laws
+            .iter()
+            .map(|(l, k)| {
+                if self.laws.len() > 1 {
+                    format!("{l}: {k}")
+                } else {
+                    l.clone()
+                }
+            })
+            .collect();
+        let left = match (self.bumper, self.direct) {
+            (true, false) => "with the bumper still compressed",
+            (true, true) => "with penetration left (a bumper still compressed)",
+            _ => "with penetration left",
+        };
+        let (its, these) = if n == 1 {
+            ("its", "this contact")
+        } else {
+            ("their", "these contacts")
+        };
+        format!(
+            "{who} exactly 1/chi of {its} law, {}: a Hunt\u{2013}Crossley-type force k d^n (1 + chi d'/v_i), \
+             clamped at zero, vanishes when the parting speed d' reaches v_i/chi, and {these} ended there, \
+             {left}, because the {} moved away faster than the law's force could follow (the law's own e \
+             holds between free bodies only).",
+            laws.join("; "),
+            inside(&self.met).masses
+        )
+    }
 }
 
 /// The e each contact asks (a bumper its own): one dashed line for contacts given the same e, and the curve
@@ -699,5 +823,33 @@ mod tests {
             two.ends_with("Above 1, the bearings parted the decks faster than they met."),
             "{two}"
         );
+    }
+
+    #[test]
+    fn released_impacts_are_told_in_good_grammar() {
+        use pounding::structure::Form;
+        use pounding_study::summary::inside::Meeting;
+        let mut one = super::Released {
+            count: 1,
+            above: 1,
+            laws: vec![("1/chi = 1.026 (wall west, chi = 0.97487)".into(), 1)],
+            bumper: false,
+            direct: true,
+            met: vec![Meeting::Wall((0, Form::Deck))],
+        };
+        let note = one.note(5);
+        assert!(
+            note.starts_with(
+                "Of these, 1 delivers exactly 1/chi of its law, 1/chi = 1.026 (wall west"
+            ),
+            "{note}"
+        );
+        assert!(
+            note.contains("this contact ended there, with penetration left, because the decks"),
+            "{note}"
+        );
+        // Not above the e asked: said plainly.
+        one.above = 0;
+        assert!(one.note(5).starts_with("1 of 5 impacts delivers exactly"));
     }
 }
