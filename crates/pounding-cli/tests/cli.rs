@@ -4147,3 +4147,44 @@ fn separation_gives_probabilities_codes_and_annual_frequencies() {
     ]);
     assert!(err.contains("decreasing"), "{err}");
 }
+
+/// A clamped Hunt–Crossley-type law pushes only while `1 + chi v / v_i > 0`: an impact is released at the
+/// latest when the floors part at `v_i / chi`, so no impact of it delivers more than `1 / chi`. Both factor
+/// and penetration change sign within one step at a slow impact of the moat (6.88 s) and the bridge's
+/// abutment, where the release was missed and the impact ran on to `d = 0` (e 1.094 and 1.043 against
+/// 1/chi = 1.026) until the release was located on the factor alone.
+#[test]
+fn no_clamped_hunt_crossley_impact_delivers_more_than_one_over_chi() {
+    let dir = tmp("one-over-chi");
+    for ex in [
+        "isolated-moat.toml",
+        "bridge-three-span.toml",
+        "three-in-a-row.toml",
+    ] {
+        let out = dir.join(ex);
+        let s = json(&["run", &example(ex), "--out", out.to_str().unwrap(), "-q"]);
+        let (header, rows) = csv_cells(&out.join("impacts.csv"));
+        let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+        for r in &rows {
+            let site = s["sites"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|x| x["name"] == r[col("contact")].as_str())
+                .unwrap();
+            let law = if r[col("layer")] == "bumper" {
+                &site["bumper"]
+            } else {
+                site
+            };
+            let (Some("chi"), Some(chi), Ok(e)) = (
+                law["damping_parameter"]["name"].as_str(),
+                law["damping_parameter"]["value"].as_f64(),
+                r[col("e_post")].parse::<f64>(),
+            ) else {
+                continue;
+            };
+            assert!(e <= 1.0 / chi * (1.0 + 1e-9), "{ex}: {r:?}: {e} > 1/{chi}");
+        }
+    }
+}

@@ -194,6 +194,21 @@ impl ForceLaw {
         Some((f, f * d / (n + 1.0)))
     }
 
+    /// A function that is positive while the law pushes and whose first sign change in restitution marks
+    /// the force reaching 0 before the penetration does (the release of a clamped law): the force itself,
+    /// except for a Hunt–Crossley law, whose force `k d^n (1 + chi_r v / v_i)` changes sign twice when the
+    /// factor and the penetration both do within one step (and so seems not to change at all): its factor
+    /// alone, `1 + chi_r v / v_i`.
+    #[inline]
+    pub fn release_value(&self, d: f64, v: f64, phase: Phase, turn: &Turn) -> f64 {
+        match (*self, phase) {
+            (ForceLaw::HuntCrossley { chi_r, v_i, .. }, Phase::Restitution) => {
+                1.0 + chi_r * v / v_i
+            }
+            _ => self.force(d, v, phase, turn),
+        }
+    }
+
     /// A function whose sign change marks a kink of the law (where the force is continuous but its slope
     /// is not), so that integration can restart there; `None` for smooth laws.
     pub fn kink(&self, d: f64, phase: Phase, turn: &Turn) -> Option<f64> {

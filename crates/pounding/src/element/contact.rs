@@ -426,7 +426,7 @@ impl ElementLaw for Contact {
             TOUCH => -d,
             TURN => v + self.gate.slack(),
             KINK => law.and_then(|l| l.kink(d, phase, &turn)).unwrap_or(1.0),
-            ZERO_FORCE => law.map_or(1.0, |l| l.force(d, v, phase, &turn)),
+            ZERO_FORCE => law.map_or(1.0, |l| l.release_value(d, v, phase, &turn)),
             // Held floors part when `d` returns to 0 while they part: a hold that began at `d = 0` with the
             // floors closing at a vanishing rate does not end at once (it chattered between touch and end).
             SEPARATION if matches!(self.state, Engagement::Held { .. }) => d.max(v),
