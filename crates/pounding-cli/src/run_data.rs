@@ -254,10 +254,8 @@ impl RunData {
             .map(|(s, forces)| {
                 let (left, right) = match &s.place {
                     SitePlace::Contact { between } => (index(&between[0]), index(&between[1])),
-                    SitePlace::Wall { facing, side } => match side {
-                        pounding::analysis::Side::Right => (index(facing), None),
-                        pounding::analysis::Side::Left => (None, index(facing)),
-                    },
+                    SitePlace::Wall { facing, side } if side.negative() => (None, index(facing)),
+                    SitePlace::Wall { facing, .. } => (index(facing), None),
                 };
                 ContactData {
                     name: s.name.clone(),

@@ -111,7 +111,7 @@ impl ImpactRow {
                 let v_law = i.v_i.max(s.min_impact_velocity());
                 // A law asked no e but not elastic (Thornton's spheres): the e it delivers at this v_i.
                 let own = || {
-                    let m = s.effective_mass(site, &level);
+                    let m = s.effective_mass(site, i.level);
                     let (l, _) = law.law(m, v_law).ok()?;
                     exact::e_post(&l, law.spec().tension(), m, v_law)
                         .filter(|_| law.spec().sphere().is_some())

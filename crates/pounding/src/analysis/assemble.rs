@@ -64,7 +64,7 @@ impl Scenario {
 
     /// Floor pairs given for a contact between `left` and `right`, checked; by default the floors at the
     /// same height.
-    fn link_floors(
+    pub(super) fn link_floors(
         &self,
         left: usize,
         right: usize,
@@ -73,7 +73,7 @@ impl Scenario {
         let (bl, br) = (&self.buildings[left], &self.buildings[right]);
         let (nl, nr) = (bl.structure.storeys(), br.structure.storeys());
         let Some(f) = floors else {
-            let pairs = self.aligned_floors(left);
+            let pairs = self.aligned_floor_pairs(left, right);
             if pairs.is_empty() {
                 return Err(choice(
                     "floors",
@@ -117,7 +117,7 @@ impl Scenario {
     }
 
     /// Puts `site` among the sites: contacts between neighbours left to right, before the walls.
-    fn insert_link(&mut self, site: ContactSite) {
+    pub(super) fn insert_link(&mut self, site: ContactSite) {
         let left_of = |s: &ContactSite| match s.kind {
             SiteKind::Between { left, .. } => Some(left),
             SiteKind::Wall { .. } => None,
@@ -167,6 +167,7 @@ impl Scenario {
             bumper: None,
             seat: None,
             active: true,
+            plan: None,
         });
         Ok(self)
     }
@@ -174,13 +175,20 @@ impl Scenario {
     /// The site of the contact between the neighbours `a` and `b`.
     fn link_index(&self, a: &str, b: &str) -> Result<usize, Error> {
         let (ia, ib) = (self.building_index(a)?, self.building_index(b)?);
-        let pair = SiteKind::Between {
-            left: ia.min(ib),
-            right: ia.max(ib),
-        };
+        // Buildings in plan are left and right as their façades face, not as listed.
+        let pairs = [
+            SiteKind::Between {
+                left: ia,
+                right: ib,
+            },
+            SiteKind::Between {
+                left: ib,
+                right: ia,
+            },
+        ];
         self.sites
             .iter()
-            .position(|s| s.kind == pair)
+            .position(|s| pairs.contains(&s.kind))
             .ok_or_else(|| {
                 choice(
                     "between",
@@ -222,10 +230,32 @@ impl Scenario {
                 "a name used by no building and no other wall".into(),
             ));
         }
+        let in_plan = self.buildings[b].structure.plan().is_some();
         let neighbour = match w.side {
+            _ if in_plan => None,
             Side::Left => b.checked_sub(1),
             Side::Right => (b + 1 < self.buildings.len()).then_some(b + 1),
+            Side::South | Side::North => {
+                return Err(choice(
+                    "side",
+                    format!("{:?}", w.side.name()),
+                    format!(
+                        "left or right of {:?}: south and north are sides of a building in plan",
+                        w.facing
+                    ),
+                ))
+            }
         };
+        if w.points.is_some() && !in_plan {
+            return Err(choice(
+                "points",
+                format!("{:?}", w.points.as_deref().unwrap_or_default()),
+                format!(
+                    "points along a façade apply to a building in plan; {:?} stands in one line",
+                    w.facing
+                ),
+            ));
+        }
         if let Some(n) = neighbour {
             return Err(choice(
                 "side",
@@ -272,19 +302,22 @@ impl Scenario {
         check_bumper(&w.bumper, w.gap)?;
         check_seat(w.seat)?;
         let contact = w.contact.prepare()?;
-        let levels = floors
-            .iter()
-            .map(|&f| match w.side {
-                Side::Right => Level {
+        let (levels, plan) = if in_plan {
+            let (levels, plan) = self.plan_wall_levels(b, w.side, &floors, w.points)?;
+            (levels, Some(plan))
+        } else {
+            let level = |f: usize| match w.side.negative() {
+                false => Level {
                     left: Some(f),
                     right: None,
                 },
-                Side::Left => Level {
+                true => Level {
                     left: None,
                     right: Some(f),
                 },
-            })
-            .collect();
+            };
+            (floors.iter().map(|&f| level(f)).collect(), None)
+        };
         self.sites.push(ContactSite {
             name: w.name,
             kind,
@@ -294,6 +327,7 @@ impl Scenario {
             bumper: w.bumper,
             seat: w.seat,
             active: true,
+            plan,
         });
         Ok(self)
     }
@@ -420,7 +454,12 @@ impl Scenario {
     /// height stay unlinked.
     pub fn without_contact(&self) -> Scenario {
         let mut s = self.clone().with_contacts_off();
+        self.plan_pairs_without_contact(&mut s);
         for left in 0..self.buildings.len().saturating_sub(1) {
+            let in_plan = |b: usize| self.buildings[b].structure.plan().is_some();
+            if in_plan(left) || in_plan(left + 1) {
+                continue;
+            }
             let pair = SiteKind::Between {
                 left,
                 right: left + 1,
@@ -446,6 +485,7 @@ impl Scenario {
                     bumper: None,
                     seat: None,
                     active: false,
+                    plan: None,
                 });
             }
         }

@@ -1,7 +1,7 @@
 //! Histories at the output interval, as an observer of the engine: the state is interpolated at every
 //! output time that a step passes.
 
-use super::model::{ContactRef, DeviceRef, Model};
+use super::model::{ContactRef, DeviceRef, Model, StoreyRef};
 use super::peaks::total_force;
 use super::Histories;
 use crate::engine::{Observer, Segment};
@@ -13,7 +13,9 @@ pub(super) struct HistoryRecorder {
     times: Vec<f64>,
     next: usize,
     offsets: Vec<usize>,
-    first_storey: Vec<usize>,
+    /// Floors of each building in plan (`None` in one line).
+    plans: Vec<Option<usize>>,
+    storeys: Vec<StoreyRef>,
     contacts: Vec<ContactRef>,
     devices: Vec<DeviceRef>,
     ys: Vec<f64>,
@@ -26,7 +28,7 @@ impl HistoryRecorder {
     /// site, pairs per device.
     pub fn new(
         m: &Model,
-        (storeys, sites, devices): (&[usize], &[usize], &[usize]),
+        (storeys, plans, sites, devices): (&[usize], &[usize], &[usize], &[usize]),
         n_out: usize,
         dt: f64,
         t_end: f64,
@@ -43,7 +45,10 @@ impl HistoryRecorder {
             hist: Histories {
                 t: Vec::with_capacity(n_out),
                 ground_acceleration: Vec::with_capacity(n_out),
+                ground_acceleration_y: Vec::new(),
                 displacement: per(storeys),
+                displacement_y: per(plans),
+                rotation: per(plans),
                 absolute_acceleration: per(storeys),
                 storey_shear: per(storeys),
                 site_force: per(sites),
@@ -54,7 +59,12 @@ impl HistoryRecorder {
             times: (0..n_out).map(|k| (k as f64 * dt).min(t_end)).collect(),
             next: 0,
             offsets: m.offsets.clone(),
-            first_storey: m.first_storey.clone(),
+            plans: storeys
+                .iter()
+                .zip(plans)
+                .map(|(&n, &p)| (p > 0).then_some(n))
+                .collect(),
+            storeys: m.storeys.clone(),
             contacts: m.contacts.clone(),
             devices: m.devices.clone(),
             ys: vec![0.0; dim],
@@ -78,7 +88,10 @@ impl Observer for HistoryRecorder {
             let h = &mut self.hist;
             h.t.push(t);
             h.ground_acceleration.push(ag);
-            for (b, (&o, &s0)) in self.offsets.iter().zip(&self.first_storey).enumerate() {
+            if let crate::engine::Ground::Plane { y, .. } = sys.ground() {
+                h.ground_acceleration_y.push(y.at(t));
+            }
+            for (b, (&o, plan)) in self.offsets.iter().zip(&self.plans).enumerate() {
                 for (f, col) in h.displacement[b].iter_mut().enumerate() {
                     col.push(self.ys[l.u(o + f)]);
                 }
@@ -86,7 +99,21 @@ impl Observer for HistoryRecorder {
                     col.push(self.rate[l.v(o + f)] + ag);
                 }
                 for (j, col) in h.storey_shear[b].iter_mut().enumerate() {
-                    col.push(sys.element_force(s0 + j, &self.ys));
+                    let st = &self.storeys[o + j];
+                    col.push(
+                        st.elements
+                            .iter()
+                            .map(|&(e, c)| c * sys.element_force(e, &self.ys))
+                            .sum(),
+                    );
+                }
+                if let Some(n) = *plan {
+                    for (f, col) in h.displacement_y[b].iter_mut().enumerate() {
+                        col.push(self.ys[l.u(o + n + f)]);
+                    }
+                    for (f, col) in h.rotation[b].iter_mut().enumerate() {
+                        col.push(self.ys[l.u(o + 2 * n + f)]);
+                    }
                 }
             }
             for col in h.site_force.iter_mut().flatten() {

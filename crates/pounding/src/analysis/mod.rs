@@ -25,10 +25,12 @@
 
 mod assemble;
 mod devices;
+mod facades;
 mod histories;
 mod impacts;
 mod model;
 mod peaks;
+mod plan_sites;
 mod plausibility;
 mod recorders;
 mod results;
@@ -40,11 +42,13 @@ pub use assemble::NO_CONTACT_GAP;
 pub use devices::{Device, DeviceEnds, DeviceSpec};
 pub use plausibility::{PLAUSIBLE_PERIOD, PLAUSIBLE_PGA_G};
 pub use results::{
-    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Impact, ImpactLoop, Results,
-    SiteResponse, Statistics, MAX_LOOP_POINTS,
+    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Impact, ImpactLoop, LineResponse,
+    PlanResponse, Results, SiteResponse, Statistics, MAX_LOOP_POINTS,
 };
 pub use run::{Progress, RunOptions};
 pub use scenario::{
     Building, Scenario, DEFAULT_MIN_IMPACT_VELOCITY, DEFAULT_OUTPUT_DT, DEFAULT_TOLERANCE,
 };
-pub use sites::{Bumper, ContactSite, Layer, Level, LinkSpec, Side, SiteKind, WallSpec};
+pub use sites::{
+    Bumper, ContactSite, Layer, Level, LinkSpec, PlanLinkSpec, Side, SiteKind, SitePlan, WallSpec,
+};

@@ -3,10 +3,11 @@
 //! mass-proportional damping of its superstructure), one contact element per level of each contact site
 //! (two with a bumper), and one device element per floor pair of each device.
 
-use super::{ContactSite, DeviceEnds, Layer, Level, Scenario, SiteKind, NO_CONTACT_GAP};
+use super::{ContactSite, DeviceEnds, Layer, Scenario, SiteKind, NO_CONTACT_GAP};
 use crate::element::device::Dashpot;
-use crate::element::{Contact, Element, ElementLaw, End, Scales};
-use crate::engine::{Dof, Ground, System};
+use crate::element::{Contact, Element, ElementLaw, End, Point, Scales};
+use crate::engine::{Axis, Dof, System};
+use crate::structure::{Plan, PlanDof};
 
 /// A contact element and where it stands.
 #[derive(Clone, Copy, Debug)]
@@ -30,15 +31,33 @@ pub(super) struct DeviceRef {
     pub device: usize,
 }
 
+/// The storey under a degree of freedom: the degree of freedom below it (the ground under floor 1), and the
+/// storey's elements that act on it, each with its coefficient there (1 for a storey in one line; for a floor
+/// in plan, 1 for the lines along the degree of freedom's direction, a line's arm (m) for the rotation). The
+/// storey's force on the degree of freedom is `sum c f`: its shear, or its torque (N m).
+#[derive(Clone, Debug, Default)]
+pub(super) struct StoreyRef {
+    pub below: Option<usize>,
+    pub elements: Vec<(usize, f64)>,
+}
+
 /// The system and the map from buildings, storeys and contacts to its degrees of freedom and elements.
 pub(super) struct Model<'a> {
     pub system: System<'a>,
-    /// First degree of freedom of each building (floor 1).
+    /// First degree of freedom of each building (floor 1; for a building in plan, its x block).
     pub offsets: Vec<usize>,
-    /// Element index of storey 1 of each building (its storeys follow in order).
+    /// Element index of the first element of storey 1 of each building.
     pub first_storey: Vec<usize>,
-    /// Element index of the storey under each floor (degree of freedom).
-    pub storey_under: Vec<usize>,
+    /// Elements per storey of each building (1, or a plan's number of lines); storey `j`'s are
+    /// `first_storey + j * per_storey ..` and the next `per_storey`.
+    pub per_storey: Vec<usize>,
+    /// The storey under each degree of freedom.
+    pub storeys: Vec<StoreyRef>,
+    /// The displacements of the corners of every floor in plan, building by building, floor by floor, corner
+    /// by corner (counterclockwise from the plan's `(x_min, y_min)`), along x then along y.
+    pub corners: Vec<Point>,
+    /// The elements of the lines of every building in plan, building by building, storey by storey.
+    pub lines: Vec<usize>,
     /// The contact elements, site by site, level by level; a bumper's layer comes before the hard law
     /// behind it.
     pub contacts: Vec<ContactRef>,
@@ -46,106 +65,145 @@ pub(super) struct Model<'a> {
     pub devices: Vec<DeviceRef>,
 }
 
+/// Degrees of freedom and elements as they are assembled.
+#[derive(Default)]
+struct Parts {
+    dofs: Vec<Dof>,
+    elements: Vec<Element>,
+    storeys: Vec<StoreyRef>,
+    /// Dashpots of the mass-proportional damping of isolated superstructures, relative to the base slab.
+    base_dashpots: Vec<(usize, usize, f64)>,
+}
+
+impl Parts {
+    /// A building in one line: one degree of freedom per floor, one storey element per storey.
+    fn in_line(&mut self, st: &crate::structure::ShearBuilding) {
+        let (c, a0, base) = st.damping_layout();
+        let offset = self.dofs.len();
+        for (j, (&k, law)) in st.stiffnesses().iter().zip(st.storey_laws()).enumerate() {
+            let bottom = if j == 0 {
+                End::Ground
+            } else {
+                End::Dof(offset + j - 1)
+            };
+            self.storeys.push(StoreyRef {
+                below: j.checked_sub(1).map(|b| offset + b),
+                elements: vec![(self.elements.len(), 1.0)],
+            });
+            // Rayleigh damping on the initial stiffness (OpenSees' betaKinit); an isolator's own.
+            self.elements
+                .push(Element::new(End::Dof(offset + j), bottom, law.law(k)).with_dashpot(c[j]));
+        }
+        let a0_dof = if base.is_some() { 0.0 } else { a0 };
+        self.dofs
+            .extend(st.masses().iter().map(|&mass| Dof::x(mass, a0_dof)));
+        if let (Some(base), true) = (base, a0 > 0.0) {
+            for (i, &m) in st.masses().iter().enumerate().filter(|(i, _)| *i != base) {
+                self.base_dashpots.push((offset + i, offset + base, a0 * m));
+            }
+        }
+    }
+
+    /// A building in plan: x, y and rotation of every floor (x block, y block, rotation block), one element
+    /// per line per storey (storey by storey), with Rayleigh damping `a0 M + a1 K_0` of the plan's modes.
+    fn in_plan(&mut self, plan: &Plan) {
+        let (a0, a1) = plan.rayleigh();
+        let offset = self.dofs.len();
+        let n = plan.floors();
+        let masses = plan.dof_masses();
+        for (i, &mass) in masses.iter().enumerate() {
+            let axis = match i / n {
+                0 => Axis::X,
+                1 => Axis::Y,
+                _ => Axis::Rotation,
+            };
+            self.dofs.push(Dof { mass, a0, axis });
+            self.storeys.push(StoreyRef::default());
+        }
+        for storey in 1..=n {
+            for (li, line) in plan.lines().iter().enumerate() {
+                let k = line.stiffnesses[storey - 1];
+                let (a, b) = plan.line_ends(li, storey, offset);
+                let e = self.elements.len();
+                for &(i, c) in a.terms().terms() {
+                    if c != 0.0 {
+                        self.storeys[i].elements.push((e, c));
+                    }
+                }
+                self.elements
+                    .push(Element::new(a, b, line.laws[storey - 1].law(k)).with_dashpot(a1 * k));
+            }
+        }
+        for floor in 2..=n {
+            for d in [PlanDof::X, PlanDof::Y, PlanDof::Rotation] {
+                self.storeys[offset + plan.dof(floor, d)].below =
+                    Some(offset + plan.dof(floor - 1, d));
+            }
+        }
+    }
+}
+
 impl<'a> Model<'a> {
     pub fn new(s: &'a Scenario) -> Self {
-        let mut dofs = Vec::new();
-        let mut elements = Vec::new();
+        let mut parts = Parts::default();
         let mut offsets = Vec::new();
         let mut first_storey = Vec::new();
-        let mut storey_under = Vec::new();
-        // Dashpots of the mass-proportional damping of isolated superstructures, relative to the base slab.
-        let mut base_dashpots = Vec::new();
+        let mut per_storey = Vec::new();
+        let mut corners = Vec::new();
+        let mut lines = Vec::new();
         for b in s.buildings() {
             let st = &b.structure;
-            let (c, a0, base) = st.damping_layout();
-            let offset = dofs.len();
+            let offset = parts.dofs.len();
             offsets.push(offset);
-            first_storey.push(elements.len());
-            for (j, (&k, law)) in st.stiffnesses().iter().zip(st.storey_laws()).enumerate() {
-                let bottom = if j == 0 {
-                    End::Ground
-                } else {
-                    End::Dof(offset + j - 1)
-                };
-                storey_under.push(elements.len());
-                // Rayleigh damping on the initial stiffness (OpenSees' betaKinit); an isolator's own.
-                elements.push(
-                    Element::new(End::Dof(offset + j), bottom, law.law(k)).with_dashpot(c[j]),
-                );
-            }
-            let a0_dof = if base.is_some() { 0.0 } else { a0 };
-            dofs.extend(st.masses().iter().map(|&mass| Dof::x(mass, a0_dof)));
-            if let (Some(base), true) = (base, a0 > 0.0) {
-                for (i, &m) in st.masses().iter().enumerate().filter(|(i, _)| *i != base) {
-                    base_dashpots.push((offset + i, offset + base, a0 * m));
+            first_storey.push(parts.elements.len());
+            match st.plan() {
+                Some(plan) => {
+                    per_storey.push(plan.lines().len());
+                    let first = parts.elements.len();
+                    parts.in_plan(plan);
+                    lines.extend(first..parts.elements.len());
+                    for floor in 1..=plan.floors() {
+                        for c in plan.corners() {
+                            for n in [(1.0, 0.0), (0.0, 1.0)] {
+                                corners.push(plan.point(floor, offset, c, n));
+                            }
+                        }
+                    }
+                }
+                None => {
+                    per_storey.push(1);
+                    parts.in_line(st);
                 }
             }
         }
+        let Parts {
+            dofs,
+            mut elements,
+            storeys,
+            base_dashpots,
+        } = parts;
         for (i, b, c) in base_dashpots {
             elements.push(Element::new(End::Dof(i), End::Dof(b), Dashpot::new(c)));
         }
-        let mut contacts = Vec::new();
-        for (si, site) in s.sites().iter().enumerate() {
-            for (li, level) in site.levels.iter().enumerate() {
-                let ends = site_ends(site, level, &offsets);
-                let m_eff = s.effective_mass(site, level);
-                let mut push = |layer, gap, contact: &crate::contact::PreparedContact| {
-                    contacts.push(ContactRef {
-                        element: elements.len(),
-                        site: si,
-                        level: li,
-                        layer,
-                    });
-                    let law = Contact::new(contact.clone(), gap, m_eff, s.min_impact_velocity());
-                    elements.push(Element::new(ends.0, ends.1, law));
-                };
-                match &site.bumper {
-                    _ if !site.active => push(Layer::Direct, NO_CONTACT_GAP, &site.contact),
-                    None => push(Layer::Direct, site.gap, &site.contact),
-                    Some(bm) => {
-                        let (touch, consumed) = bm.gaps(site.gap);
-                        push(Layer::Bumper, touch, &bm.contact);
-                        push(Layer::Consumed, consumed, &site.contact);
-                    }
-                }
-            }
-        }
-        let mut devices = Vec::new();
-        for (di, d) in s.devices().iter().enumerate() {
-            for &(fa, fb) in &d.floors {
-                let ends = match d.ends {
-                    DeviceEnds::Buildings { left, right } => (
-                        End::Dof(offsets[left] + fa - 1),
-                        End::Dof(offsets[right] + fb - 1),
-                    ),
-                    DeviceEnds::Wall { site } => {
-                        let level = Level {
-                            left: Some(fa),
-                            right: Some(fa),
-                        };
-                        site_ends(&s.sites()[site], &level, &offsets)
-                    }
-                };
-                devices.push(DeviceRef {
-                    element: elements.len(),
-                    device: di,
-                });
-                // Checked when the device was added.
-                let law = d
-                    .law
-                    .law()
-                    .expect("a device law checked by Scenario::with_device");
-                elements.push(Element::new(ends.0, ends.1, law));
-            }
-        }
+        let contacts = contact_elements(s, &offsets, &mut elements);
+        let devices = device_elements(s, &offsets, &mut elements);
         Self {
-            system: System::new(&dofs, elements, Ground::Record(s.record())),
+            system: System::new(&dofs, elements, s.ground()),
             offsets,
             first_storey,
-            storey_under,
+            per_storey,
+            storeys,
+            corners,
+            lines,
             contacts,
             devices,
         }
+    }
+
+    /// The elements of storey `j` (from 0) of building `b`.
+    pub fn storey_elements(&self, b: usize, j: usize) -> std::ops::Range<usize> {
+        let (first, per) = (self.first_storey[b], self.per_storey[b]);
+        first + j * per..first + (j + 1) * per
     }
 
     /// Absolute tolerances of every state component for the relative tolerance `rtol`, and a first trial
@@ -158,13 +216,9 @@ impl<'a> Model<'a> {
         let sys = &self.system;
         let l = sys.layout();
         let n = l.dofs();
-        // The peak ground acceleration within the analysis (a short analysis of a long record sees only its
+        // The peak ground accelerations within the analysis (a short analysis of a long record sees only its
         // start).
-        let r = s.record();
-        let within = ((s.duration() - r.t0()) / r.dt()).floor().max(0.0) as usize + 1;
-        let pga = r.accelerations()[..within.min(r.npts())]
-            .iter()
-            .fold(0.0f64, |a, x| a.max(x.abs()));
+        let (pga, pga_y) = s.pga_within();
         let w_floor = 2.0 * std::f64::consts::PI / s.duration();
         let mut atol = vec![0.0; l.dim()];
         let mut u_scale = vec![0.0; n];
@@ -174,30 +228,69 @@ impl<'a> Model<'a> {
         // Energy a building can take in: each mode's effective mass times its velocity under the peak ground
         // acceleration (the modal masses sum to the building's mass; a stiff, heavy floor whose mode barely
         // responds used to count with the fundamental mode's velocity, which loosened the control of the
-        // energy terms a hundredfold).
+        // energy terms a hundredfold). A plan's modes take in energy along x and along y.
         let mut e_scale = 0.0;
+        let velocity = |a: f64, w: f64| {
+            let w = w.max(w_floor);
+            (a / (w * w)).max(1e-30) * w
+        };
         for b in s.buildings() {
-            let modes = b.structure.modes();
-            let m = b.structure.masses();
-            for (w, phi) in modes.omega.iter().zip(&modes.shapes) {
-                let gamma: f64 = phi.iter().zip(m).map(|(p, m)| p * m).sum();
-                let w = w.max(w_floor);
-                let v = (pga / (w * w)).max(1e-30) * w;
-                e_scale += gamma * gamma * v * v;
+            match b.structure.plan() {
+                None => {
+                    let modes = b.structure.modes();
+                    let m = b.structure.masses();
+                    for (w, phi) in modes.omega.iter().zip(&modes.shapes) {
+                        let gamma: f64 = phi.iter().zip(m).map(|(p, m)| p * m).sum();
+                        let v = velocity(pga, *w);
+                        e_scale += gamma * gamma * v * v;
+                    }
+                }
+                Some(p) => {
+                    for (w, (gx, gy)) in p.modes().omega.iter().zip(p.gammas()) {
+                        let (vx, vy) = (velocity(pga, *w), velocity(pga_y, *w));
+                        e_scale += gx * gx * vx * vx + gy * gy * vy * vy;
+                    }
+                }
             }
         }
         for (b, &offset) in s.buildings().iter().zip(&self.offsets) {
-            let omega = &b.structure.modes().omega;
-            w_max = omega.iter().copied().fold(w_max, f64::max);
-            let w = omega[0].max(w_floor);
             // What the building can reach, not a gap it may never close (a huge gap used to loosen the error
             // control of every floor); no floor of a nanometre either (a stiff floor that moves 1e-10 m had its
             // energies controlled to 1e-3 only).
-            let u = (pga / (w * w)).max(1e-30);
-            for i in offset..offset + omega.len() {
+            let reach = |a: f64, w: f64| {
+                let w = w.max(w_floor);
+                ((a / (w * w)).max(1e-30), w)
+            };
+            let mut scale = |i: usize, (u, w): (f64, f64)| {
                 (u_scale[i], v_scale[i]) = (u, u * w);
                 atol[l.u(i)] = rtol * u;
                 atol[l.v(i)] = rtol * u * w;
+            };
+            match b.structure.plan() {
+                None => {
+                    let omega = &b.structure.modes().omega;
+                    w_max = omega.iter().copied().fold(w_max, f64::max);
+                    for i in offset..offset + omega.len() {
+                        scale(i, reach(pga, omega[0]));
+                    }
+                }
+                Some(p) => {
+                    let a = pga.max(pga_y);
+                    let f = p.floors();
+                    let first = p.first_modes();
+                    w_max = p.excited_w_max(pga > 0.0, pga_y > 0.0).max(w_max);
+                    let (x, y) = (reach(a, first.0), reach(a, first.1));
+                    for k in 0..f {
+                        scale(offset + k, x);
+                        scale(offset + f + k, y);
+                        // A rotation that moves the floor's edge by what its centre can reach.
+                        let rg = (p.inertias()[k] / p.masses()[k]).sqrt();
+                        scale(
+                            offset + 2 * f + k,
+                            (x.0.min(y.0) / rg, first.2.max(w_floor)),
+                        );
+                    }
+                }
             }
         }
         atol[l.input()] = rtol * e_scale;
@@ -233,20 +326,98 @@ impl<'a> Model<'a> {
     }
 }
 
-/// The ends of a site's contact element at `level`: the left floor and the right floor, or a floor and the
-/// ground (a wall on its right is end `b`; on its left, end `a`). For a device to a wall, `level` gives the
-/// building's floor on both sides.
-fn site_ends(site: &ContactSite, level: &Level, offsets: &[usize]) -> (End, End) {
-    let floor = |b: usize, f: Option<usize>| End::Dof(offsets[b] + f.unwrap_or(1) - 1);
+/// The contact elements of every site, level by level.
+fn contact_elements(
+    s: &Scenario,
+    offsets: &[usize],
+    elements: &mut Vec<Element>,
+) -> Vec<ContactRef> {
+    let mut contacts = Vec::new();
+    for (si, site) in s.sites().iter().enumerate() {
+        for li in 0..site.levels.len() {
+            let ends = site_ends(s, site, li, offsets);
+            let m_eff = s.effective_mass(site, li);
+            let mut push = |layer, gap, contact: &crate::contact::PreparedContact| {
+                contacts.push(ContactRef {
+                    element: elements.len(),
+                    site: si,
+                    level: li,
+                    layer,
+                });
+                let law = Contact::new(contact.clone(), gap, m_eff, s.min_impact_velocity());
+                elements.push(Element::new(ends.0, ends.1, law));
+            };
+            match &site.bumper {
+                _ if !site.active => push(Layer::Direct, NO_CONTACT_GAP, &site.contact),
+                None => push(Layer::Direct, site.gap, &site.contact),
+                Some(bm) => {
+                    let (touch, consumed) = bm.gaps(site.gap);
+                    push(Layer::Bumper, touch, &bm.contact);
+                    push(Layer::Consumed, consumed, &site.contact);
+                }
+            }
+        }
+    }
+    contacts
+}
+
+/// The elements of every device, floor pair by floor pair (devices join buildings in one line).
+fn device_elements(s: &Scenario, offsets: &[usize], elements: &mut Vec<Element>) -> Vec<DeviceRef> {
+    let mut devices = Vec::new();
+    for (di, d) in s.devices().iter().enumerate() {
+        for &(fa, fb) in &d.floors {
+            let ends = match d.ends {
+                DeviceEnds::Buildings { left, right } => (
+                    End::Dof(offsets[left] + fa - 1),
+                    End::Dof(offsets[right] + fb - 1),
+                ),
+                DeviceEnds::Wall { site } => {
+                    let floor = |b: usize| End::Dof(offsets[b] + fa - 1);
+                    match s.sites()[site].kind {
+                        SiteKind::Wall { building, side } if side.negative() => {
+                            (End::Ground, floor(building))
+                        }
+                        SiteKind::Wall { building, .. }
+                        | SiteKind::Between { left: building, .. } => {
+                            (floor(building), End::Ground)
+                        }
+                    }
+                }
+            };
+            devices.push(DeviceRef {
+                element: elements.len(),
+                device: di,
+            });
+            // Checked when the device was added.
+            let law = d
+                .law
+                .law()
+                .expect("a device law checked by Scenario::with_device");
+            elements.push(Element::new(ends.0, ends.1, law));
+        }
+    }
+    devices
+}
+
+/// The ends of a site's contact element at level `level` (an index in its levels): the left floor and the
+/// right floor, or a floor and the ground (a wall on the positive side is end `b`; on the negative side, end
+/// `a`). A floor in plan is its point of the façade, moving along the site's normal.
+fn site_ends(s: &Scenario, site: &ContactSite, level: usize, offsets: &[usize]) -> (End, End) {
+    let lv = site.levels[level];
+    // A point across the gap has the same arm about the mass centre along the normal: the right
+    // building's point is taken at the left façade's.
+    let floor = |b: usize, f: Option<usize>| {
+        let f = f.unwrap_or(1);
+        match (s.buildings()[b].structure.plan(), &site.plan) {
+            (Some(p), Some(sp)) => End::Point(p.point(f, offsets[b], sp.points[level], sp.normal)),
+            _ => End::Dof(offsets[b] + f - 1),
+        }
+    };
     match site.kind {
-        SiteKind::Between { left, right } => (floor(left, level.left), floor(right, level.right)),
-        SiteKind::Wall {
-            building,
-            side: super::Side::Right,
-        } => (floor(building, level.left), End::Ground),
-        SiteKind::Wall {
-            building,
-            side: super::Side::Left,
-        } => (End::Ground, floor(building, level.right)),
+        SiteKind::Between { left, right } => (floor(left, lv.left), floor(right, lv.right)),
+        SiteKind::Wall { building, side } if side.negative() => {
+            (End::Ground, floor(building, lv.right))
+        }
+        SiteKind::Wall { building, .. } => (floor(building, lv.left), End::Ground),
     }
 }

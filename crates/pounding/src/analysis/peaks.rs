@@ -1,7 +1,8 @@
 //! Peaks a run keeps, as observers of the engine: of every floor and storey, of every device, and the worst
 //! energy imbalance.
 
-use super::model::{DeviceRef, Model};
+use super::model::{DeviceRef, Model, StoreyRef};
+use crate::element::{End, Point};
 use crate::engine::{EventInfo, Observer, Segment, System};
 use crate::integrate::{hermite_peak, Hermite};
 
@@ -31,37 +32,110 @@ fn room(m: &Model) -> Vec<f64> {
 }
 
 /// Peaks of every floor (degree of freedom) and every storey (indexed by the degree of freedom of its top
-/// floor).
+/// floor: for a floor in plan, the storey's drift and shear along x and along y, its twist and torque), of
+/// every element of a plan's lines, and of the corners of every floor in plan.
 pub(super) struct Peaks {
-    /// Element index of the storey under each floor.
-    storey: Vec<usize>,
+    storeys: Vec<StoreyRef>,
     pub displacement: Vec<Peak>,
     pub acceleration: Vec<Peak>,
     pub drift: Vec<f64>,
     pub shear: Vec<f64>,
-    /// A storey's states between nodes.
+    /// The elements of the lines of buildings in plan, and the largest |deformation| of each, m.
+    lines: Vec<usize>,
+    pub line_drift: Vec<f64>,
+    /// The corners' displacements along x and along y ([`Model::corners`]), and their largest |value|, m.
+    corners: Vec<Point>,
+    pub corner: Vec<Peak>,
+    /// A storey element's states between nodes.
     states: Vec<f64>,
+    /// Each storey element's deformation on the step (room for the storey with the most).
+    curves: Vec<Hermite>,
 }
 
 impl Peaks {
     pub fn new(m: &Model) -> Self {
         let n = m.system.layout().dofs();
+        let most = m
+            .storeys
+            .iter()
+            .map(|s| s.elements.len())
+            .max()
+            .unwrap_or(0);
         Self {
-            storey: m.storey_under.clone(),
+            storeys: m.storeys.clone(),
             displacement: vec![Peak::default(); n],
             acceleration: vec![Peak::default(); n],
             drift: vec![0.0; n],
             shear: vec![0.0; n],
+            lines: m.lines.clone(),
+            line_drift: vec![0.0; m.lines.len()],
+            corners: m.corners.clone(),
+            corner: vec![Peak::default(); m.corners.len()],
             states: room(m),
+            curves: vec![Hermite::new(0.0, 0.0, 0.0, 0.0, 1.0); most],
         }
     }
 
     fn accelerations(&mut self, sys: &System, t: f64, rate: &[f64]) {
-        let ag = sys.ground().at(t);
+        let (gx, gy) = sys.ground().at_xy(t);
         let l = sys.layout();
         for (i, p) in self.acceleration.iter_mut().enumerate() {
+            let (px, py) = sys.pull(i);
+            // Written so that a floor in one line adds exactly the ground's acceleration.
+            let ag = if py == 0.0 {
+                px * gx
+            } else {
+                px * gx + py * gy
+            };
             p.offer((rate[l.v(i)] + ag).abs(), t);
         }
+    }
+
+    /// The storey under degree of freedom `i` on the segment: its drift's peak, and its force (`sum c f` of
+    /// its elements) at the drift's extrema and at the end.
+    fn storey(&mut self, seg: &Segment<'_, '_>, i: usize) {
+        let sys = seg.system;
+        let l = sys.layout();
+        let (y0, y1) = (seg.y0, seg.y1);
+        let h = seg.t1 - seg.t0;
+        let Self {
+            storeys,
+            curves,
+            states: room,
+            ..
+        } = self;
+        let st = &storeys[i];
+        let drift = |y: &[f64], off: usize| y[off + i] - st.below.map_or(0.0, |b| y[off + b]);
+        let n = l.dofs();
+        let (xa, xb, va, vb) = (drift(y0, 0), drift(y1, 0), drift(y0, n), drift(y1, n));
+        let curve = Hermite::new(xa, xb, va, vb, h);
+        let peak_drift = hermite_peak(xa, xb, va, vb, h).1;
+        let mut end = 0.0;
+        for (k, &(e, c)) in st.elements.iter().enumerate() {
+            let ((pa, qa), (pb, qb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
+            curves[k] = Hermite::new(pa, pb, qa, qb, h);
+            end += c * sys.elements()[e].force(pb, qb, &y1[l.block(e)]);
+        }
+        let mut shear = end.abs();
+        for s in curve.extrema() {
+            if s.is_nan() {
+                continue;
+            }
+            let t = seg.t0 + s * h;
+            let mut f = 0.0;
+            for (k, &(e, c)) in st.elements.iter().enumerate() {
+                let block = l.block(e);
+                let states = &mut room[..block.len()];
+                for (kk, z) in block.clone().zip(states.iter_mut()) {
+                    *z = seg.dense.component(t, kk);
+                }
+                let p = &curves[k];
+                f += c * sys.elements()[e].force(p.at(s), p.slope(s), states);
+            }
+            shear = shear.max(f.abs());
+        }
+        self.drift[i] = self.drift[i].max(peak_drift);
+        self.shear[i] = self.shear[i].max(shear);
     }
 }
 
@@ -71,29 +145,22 @@ impl Observer for Peaks {
         let l = sys.layout();
         let (y0, y1) = (seg.y0, seg.y1);
         let h = seg.t1 - seg.t0;
-        for i in 0..l.dofs() {
+        let n = l.dofs();
+        for i in 0..n {
             let (s, u) = hermite_peak(y0[l.u(i)], y1[l.u(i)], y0[l.v(i)], y1[l.v(i)], h);
             self.displacement[i].offer(u, seg.t0 + s * h);
-            // The storey under floor i: its drift, and its force at the drift's extrema and at the end.
-            let e = self.storey[i];
-            let el = &sys.elements()[e];
+            self.storey(seg, i);
+        }
+        for (k, &e) in self.lines.iter().enumerate() {
             let ((xa, va), (xb, vb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
-            let drift = Hermite::new(xa, xb, va, vb, h);
-            self.drift[i] = self.drift[i].max(hermite_peak(xa, xb, va, vb, h).1);
-            let block = l.block(e);
-            let mut shear = el.force(xb, vb, &y1[block.clone()]).abs();
-            for s in drift.extrema() {
-                if s.is_nan() {
-                    continue;
-                }
-                let t = seg.t0 + s * h;
-                let states = &mut self.states[..block.len()];
-                for (k, z) in block.clone().zip(states.iter_mut()) {
-                    *z = seg.dense.component(t, k);
-                }
-                shear = shear.max(el.force(drift.at(s), 0.0, states).abs());
-            }
-            self.shear[i] = self.shear[i].max(shear);
+            self.line_drift[k] = self.line_drift[k].max(hermite_peak(xa, xb, va, vb, h).1);
+        }
+        for (p, peak) in self.corners.iter().zip(&mut self.corner) {
+            let end = End::Point(*p);
+            let (ua, ub) = (end.value(y0, 0), end.value(y1, 0));
+            let (va, vb) = (end.value(y0, n), end.value(y1, n));
+            let (s, u) = hermite_peak(ua, ub, va, vb, h);
+            peak.offer(u, seg.t0 + s * h);
         }
         self.accelerations(sys, seg.t1, seg.rate1);
     }

@@ -65,6 +65,51 @@ pub struct BuildingResponse {
     pub ductility: Vec<Option<f64>>,
     /// Energy dissipated by the hysteresis of each storey, J (0 for a linear storey).
     pub hysteretic_energy: Vec<f64>,
+    /// For a building in plan, the rest of its response: the fields above are then those of its floors' mass
+    /// centres along x (the drift and shear along x: the sum of its lines' along x), with each storey's
+    /// largest ductility of any line and the hysteretic energy of all its lines.
+    pub plan: Option<PlanResponse>,
+}
+
+/// The response of a building in plan beyond its mass centres' along x ([`BuildingResponse`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlanResponse {
+    /// Largest |displacement along y| of each floor's mass centre, m.
+    pub peak_displacement_y: Vec<f64>,
+    /// Largest |rotation| of each floor about the vertical axis, rad.
+    pub peak_rotation: Vec<f64>,
+    /// Largest |drift along y| of each storey at the mass centres, m.
+    pub peak_drift_y: Vec<f64>,
+    /// Largest |twist| of each storey (the rotation of its floor less that of the floor below), rad.
+    pub peak_twist: Vec<f64>,
+    /// Largest |shear along y| of each storey (the sum of its lines' along y, without damping), N.
+    pub peak_storey_shear_y: Vec<f64>,
+    /// Largest |torque| of each storey's lines about the mass centre of its floor, N m.
+    pub peak_torque: Vec<f64>,
+    /// Largest |displacement| of each floor's corners along x and along y, m: `peak_corner[floor][corner] =
+    /// (along x, along y)`, the corners counterclockwise from the plan's `(x_min, y_min)`.
+    pub peak_corner: Vec<[(f64, f64); 4]>,
+    /// Torsional amplification of each floor along x and along y: the largest corner peak over the mass
+    /// centre's peak (dimensionless: 1 for a floor that does not turn; `None` where the centre did not
+    /// move).
+    pub torsional_amplification: Vec<(Option<f64>, Option<f64>)>,
+    /// Displacement along y of each floor's mass centre at the end of the analysis, m (signed).
+    pub residual_displacement_y: Vec<f64>,
+    /// Rotation of each floor at the end of the analysis, rad (signed, counterclockwise).
+    pub residual_rotation: Vec<f64>,
+    /// Each load-resisting line, in the plan's order.
+    pub lines: Vec<LineResponse>,
+}
+
+/// Peaks of one load-resisting line of a building in plan, storey by storey.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineResponse {
+    /// Largest |drift| of the line in each storey (along its direction, where it stands), m.
+    pub peak_drift: Vec<f64>,
+    /// Ductility demand of each storey, peak drift / yield drift (`None` for a linear storey).
+    pub ductility: Vec<Option<f64>>,
+    /// Energy dissipated by the line's hysteresis in each storey, J.
+    pub hysteretic_energy: Vec<f64>,
 }
 
 /// Totals of one contact site (all its elements): a contact between neighbours or a wall.
@@ -120,13 +165,24 @@ pub struct EnergyBalance {
 pub struct Histories {
     /// Times, s.
     pub t: Vec<f64>,
-    /// Ground acceleration, m/s^2.
+    /// Ground acceleration (along x), m/s^2.
     pub ground_acceleration: Vec<f64>,
-    /// `displacement[building][floor][sample]`, m, relative to the ground.
+    /// Ground acceleration along y, m/s^2 (empty unless the ground shakes in two directions).
+    pub ground_acceleration_y: Vec<f64>,
+    /// `displacement[building][floor][sample]`, m, relative to the ground (of a floor in plan, its mass
+    /// centre's along x).
     pub displacement: Vec<Vec<Vec<f64>>>,
-    /// `absolute_acceleration[building][floor][sample]`, `u'' + a_g`, m/s^2.
+    /// `displacement_y[building][floor][sample]`: a floor in plan's mass centre along y, m (no floors for a
+    /// building in one line).
+    pub displacement_y: Vec<Vec<Vec<f64>>>,
+    /// `rotation[building][floor][sample]`: a floor in plan's rotation about the vertical axis,
+    /// counterclockwise, rad (no floors for a building in one line).
+    pub rotation: Vec<Vec<Vec<f64>>>,
+    /// `absolute_acceleration[building][floor][sample]`, `u'' + a_g`, m/s^2 (of a floor in plan, its mass
+    /// centre's along x).
     pub absolute_acceleration: Vec<Vec<Vec<f64>>>,
-    /// `storey_shear[building][storey][sample]`: the restoring force of each storey, N.
+    /// `storey_shear[building][storey][sample]`: the restoring force of each storey, N (of a building in
+    /// plan, the sum of its lines' along x).
     pub storey_shear: Vec<Vec<Vec<f64>>>,
     /// `site_force[site][level][sample]`, N (sites in [`super::Scenario::sites`] order, levels in
     /// [`super::ContactSite::levels`] order; with a bumper, the layer's and the hard law's force together).
@@ -226,6 +282,8 @@ impl Results {
         let h = &self.histories;
         let groups = [
             &h.displacement,
+            &h.displacement_y,
+            &h.rotation,
             &h.absolute_acceleration,
             &h.storey_shear,
             &h.site_force,

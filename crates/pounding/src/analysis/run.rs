@@ -6,8 +6,8 @@ use super::model::Model;
 use super::peaks::{DevicePeaks, Peak, Peaks};
 use super::recorders::Recorders;
 use super::{
-    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Layer, Results, Scenario,
-    SiteResponse, Statistics,
+    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Layer, LineResponse, PlanResponse,
+    Results, Scenario, SiteResponse, Statistics,
 };
 use crate::engine::{self, Outcome, Settings};
 use crate::Error;
@@ -105,9 +105,16 @@ fn check_histories(s: &Scenario) -> Result<(), Error> {
         });
     }
     let floors: usize = s.buildings().iter().map(|b| b.structure.storeys()).sum();
+    // A floor in plan has two more histories (along y, rotation), and a ground along y one.
+    let plan_floors: usize = s
+        .buildings()
+        .iter()
+        .map(|b| b.structure.plan().map_or(0, |p| p.floors()))
+        .sum();
     let contacts: usize = s.sites().iter().map(|l| l.levels.len()).sum::<usize>()
         + s.devices().iter().map(|d| d.floors.len()).sum::<usize>();
-    let columns = 2 + 3 * floors + contacts + 6;
+    let columns =
+        2 + 3 * floors + 2 * plan_floors + usize::from(s.record_y().is_some()) + contacts + 6;
     if s.output_samples().saturating_mul(columns) > crate::limits::MAX_HISTORY_VALUES {
         return Err(Error::Parameter {
             name: "output_dt",
@@ -127,7 +134,10 @@ fn budget(s: &Scenario, dim: usize, max_work: f64) -> Result<usize, Error> {
     let w_max = s
         .buildings()
         .iter()
-        .flat_map(|b| b.structure.modes().omega.iter().copied())
+        .flat_map(|b| match b.structure.plan() {
+            Some(p) => p.modes().omega.iter().copied(),
+            None => b.structure.modes().omega.iter().copied(),
+        })
         .fold(0.0, f64::max);
     if w_max * t_end / 3.0 > budget as f64 {
         return Err(Error::StepBudget {
@@ -168,11 +178,16 @@ fn run(
             .iter()
             .map(|b| b.structure.storeys())
             .collect();
+        let plans: Vec<usize> = s
+            .buildings()
+            .iter()
+            .map(|b| b.structure.plan().map_or(0, |p| p.floors()))
+            .collect();
         let sites: Vec<usize> = s.sites().iter().map(|l| l.levels.len()).collect();
         let devices: Vec<usize> = s.devices().iter().map(|d| d.floors.len()).collect();
         HistoryRecorder::new(
             &model,
-            (&storeys, &sites, &devices),
+            (&storeys, &plans, &sites, &devices),
             s.output_samples(),
             s.output_dt(),
             t_end,
@@ -280,15 +295,49 @@ fn building_responses(
 ) -> Vec<BuildingResponse> {
     let sys = &model.system;
     let l = sys.layout();
+    // Each line element's index among the plans' lines ([`Peaks::line_drift`]).
+    let mut line_at = vec![usize::MAX; sys.elements().len()];
+    for (k, &e) in model.lines.iter().enumerate() {
+        line_at[e] = k;
+    }
+    let mut corner = 0;
     s.buildings()
         .iter()
-        .zip(model.offsets.iter().zip(&model.first_storey))
-        .map(|(b, (&o, &s0))| {
-            let st = &b.structure;
-            let r = o..o + st.storeys();
-            let storeys = s0..s0 + st.storeys();
-            let residual_drift: Vec<f64> =
-                storeys.clone().map(|e| sys.deformation(e, y).0).collect();
+        .enumerate()
+        .map(|(b, bd)| {
+            let st = &bd.structure;
+            let o = model.offsets[b];
+            let n = st.storeys();
+            let r = o..o + n;
+            let drift_at = |i: usize| y[l.u(i)] - model.storeys[i].below.map_or(0.0, |k| y[l.u(k)]);
+            let elements = |j: usize| model.storey_elements(b, j);
+            let hysteretic = |e: usize| {
+                let (x, _) = sys.deformation(e, y);
+                sys.elements()[e].energy(x, &y[l.block(e)]).hysteretic
+            };
+            let plan = st.plan().map(|p| {
+                let pr = plan_response(model, peaks, y, (b, p), corner, &line_at, &hysteretic);
+                corner += 8 * n;
+                pr
+            });
+            let ductility = match &plan {
+                None => st
+                    .storey_laws()
+                    .iter()
+                    .zip(st.stiffnesses())
+                    .zip(&peaks.drift[r.clone()])
+                    .map(|((law, k), d)| law.yield_force().map(|fy| d / (fy / k)))
+                    .collect(),
+                // The largest of any line of the storey.
+                Some(pr) => (0..n)
+                    .map(|j| {
+                        pr.lines
+                            .iter()
+                            .filter_map(|line| line.ductility[j])
+                            .reduce(f64::max)
+                    })
+                    .collect(),
+            };
             BuildingResponse {
                 peak_displacement: values(&peaks.displacement[r.clone()]),
                 time_of_peak_displacement: times(&peaks.displacement[r.clone()]),
@@ -297,23 +346,88 @@ fn building_responses(
                 time_of_peak_absolute_acceleration: times(&peaks.acceleration[r.clone()]),
                 peak_storey_shear: peaks.shear[r.clone()].to_vec(),
                 residual_displacement: r.clone().map(|i| y[l.u(i)]).collect(),
-                residual_drift,
-                ductility: st
-                    .storey_laws()
-                    .iter()
-                    .zip(st.stiffnesses())
-                    .zip(&peaks.drift[r.clone()])
-                    .map(|((law, k), d)| law.yield_force().map(|fy| d / (fy / k)))
-                    .collect(),
-                hysteretic_energy: storeys
-                    .map(|e| {
-                        let (x, _) = sys.deformation(e, y);
-                        sys.elements()[e].energy(x, &y[l.block(e)]).hysteretic
-                    })
-                    .collect(),
+                residual_drift: r.clone().map(drift_at).collect(),
+                ductility,
+                hysteretic_energy: (0..n).map(|j| elements(j).map(hysteretic).sum()).collect(),
+                plan,
             }
         })
         .collect()
+}
+
+/// The response of building `b` in plan `p` beyond its mass centres' along x; its corners' peaks start at
+/// `corner` in [`Peaks::corner`].
+fn plan_response(
+    model: &Model,
+    peaks: &Peaks,
+    y: &[f64],
+    (b, p): (usize, &crate::structure::Plan),
+    corner: usize,
+    line_at: &[usize],
+    hysteretic: &dyn Fn(usize) -> f64,
+) -> PlanResponse {
+    use crate::structure::PlanDof;
+    let l = model.system.layout();
+    let o = model.offsets[b];
+    let n = p.floors();
+    let at = |d: PlanDof| (1..=n).map(move |f| o + p.dof(f, d));
+    let peak = |d: PlanDof, v: &[f64]| at(d).map(|i| v[i]).collect::<Vec<f64>>();
+    let disp: Vec<f64> = values(&peaks.displacement);
+    let corners: Vec<[(f64, f64); 4]> = (0..n)
+        .map(|f| {
+            std::array::from_fn(|c| {
+                let k = corner + 8 * f + 2 * c;
+                (peaks.corner[k].value, peaks.corner[k + 1].value)
+            })
+        })
+        .collect();
+    let ratio = |c: f64, m: f64| (m > 0.0).then_some(c / m);
+    let torsional_amplification = (0..n)
+        .map(|f| {
+            let (cx, cy) = corners[f]
+                .iter()
+                .fold((0.0f64, 0.0f64), |a, c| (a.0.max(c.0), a.1.max(c.1)));
+            let (mx, my) = (
+                disp[o + p.dof(f + 1, PlanDof::X)],
+                disp[o + p.dof(f + 1, PlanDof::Y)],
+            );
+            (ratio(cx, mx), ratio(cy, my))
+        })
+        .collect();
+    let lines = (0..p.lines().len())
+        .map(|li| {
+            let line = &p.lines()[li];
+            let es: Vec<usize> = (0..n)
+                .map(|j| model.storey_elements(b, j).start + li)
+                .collect();
+            LineResponse {
+                peak_drift: es.iter().map(|&e| peaks.line_drift[line_at[e]]).collect(),
+                ductility: es
+                    .iter()
+                    .enumerate()
+                    .map(|(j, &e)| {
+                        line.laws[j]
+                            .yield_force()
+                            .map(|fy| peaks.line_drift[line_at[e]] / (fy / line.stiffnesses[j]))
+                    })
+                    .collect(),
+                hysteretic_energy: es.iter().map(|&e| hysteretic(e)).collect(),
+            }
+        })
+        .collect();
+    PlanResponse {
+        peak_displacement_y: peak(PlanDof::Y, &disp),
+        peak_rotation: peak(PlanDof::Rotation, &disp),
+        peak_drift_y: peak(PlanDof::Y, &peaks.drift),
+        peak_twist: peak(PlanDof::Rotation, &peaks.drift),
+        peak_storey_shear_y: peak(PlanDof::Y, &peaks.shear),
+        peak_torque: peak(PlanDof::Rotation, &peaks.shear),
+        peak_corner: corners,
+        torsional_amplification,
+        residual_displacement_y: at(PlanDof::Y).map(|i| y[l.u(i)]).collect(),
+        residual_rotation: at(PlanDof::Rotation).map(|i| y[l.u(i)]).collect(),
+        lines,
+    }
 }
 
 /// Totals of contact site `site`: its impacts, the work of its elements, its closings and openings per level

@@ -61,6 +61,8 @@ pub struct Scenario {
     pub(super) sites: Vec<ContactSite>,
     pub(super) devices: Vec<Device>,
     pub(super) record: Record,
+    /// The record along y, on the x record's time grid ([`Scenario::with_ground_y`]).
+    pub(super) record_y: Option<Record>,
     pub(super) duration: f64,
     pub(super) output_dt: f64,
     pub(super) tolerance: f64,
@@ -98,6 +100,7 @@ impl Scenario {
             sites: Vec::new(),
             devices: Vec::new(),
             record,
+            record_y: None,
             duration,
             output_dt: DEFAULT_OUTPUT_DT,
             tolerance: DEFAULT_TOLERANCE,
@@ -131,8 +134,13 @@ impl Scenario {
 
     /// The floor pairs of buildings `left` and `left + 1` at the same height (within 1 mm), from 1.
     pub fn aligned_floors(&self, left: usize) -> Vec<(usize, usize)> {
-        let zl = self.buildings[left].structure.elevations();
-        let zr = self.buildings[left + 1].structure.elevations();
+        self.aligned_floor_pairs(left, left + 1)
+    }
+
+    /// The floor pairs of buildings `a` and `b` at the same height (within 1 mm), from 1.
+    pub fn aligned_floor_pairs(&self, a: usize, b: usize) -> Vec<(usize, usize)> {
+        let zl = self.buildings[a].structure.elevations();
+        let zr = self.buildings[b].structure.elevations();
         zl.iter()
             .enumerate()
             .filter_map(|(i, z)| {
@@ -206,24 +214,29 @@ impl Scenario {
             SiteKind::Between { left, .. } => left,
         }
     }
-    /// The effective mass (kg) of the contact element at `level` of `site`: `m_L m_R / (m_L + m_R)` of its two
-    /// floors, or the floor's own mass against a rigid wall.
-    pub fn effective_mass(&self, site: &ContactSite, level: &super::Level) -> f64 {
-        let mass =
-            |b: usize, f: Option<usize>| self.buildings[b].structure.masses()[f.unwrap_or(1) - 1];
+    /// The effective mass (kg) of the contact element at level `level` (an index in the site's levels) of
+    /// `site`: `m_L m_R / (m_L + m_R)` of the masses its two ends meet, or the one end's against a rigid wall.
+    /// A floor in one line meets its own mass; a floor in plan, at a point `r` from its mass centre along the
+    /// normal `n`, meets `1 / (1 / m + (r x n)^2 / J)` ([`crate::structure::Plan::point_mass`]).
+    pub fn effective_mass(&self, site: &ContactSite, level: usize) -> f64 {
+        let lv = site.levels[level];
+        // A point across the gap has the same arm along the normal: the left façade's point serves both.
+        let mass = |b: usize, f: Option<usize>| {
+            let floor = f.unwrap_or(1);
+            let st = &self.buildings[b].structure;
+            match (st.plan(), &site.plan) {
+                (Some(p), Some(sp)) => p.point_mass(floor, sp.points[level], sp.normal),
+                _ => st.masses()[floor - 1],
+            }
+        };
         match site.kind {
             SiteKind::Between { left, right } => {
-                let (ml, mr) = (mass(left, level.left), mass(right, level.right));
+                let (ml, mr) = (mass(left, lv.left), mass(right, lv.right));
                 ml * mr / (ml + mr)
             }
-            SiteKind::Wall {
-                building,
-                side: super::Side::Right,
-            } => mass(building, level.left),
-            SiteKind::Wall {
-                building,
-                side: super::Side::Left,
-            } => mass(building, level.right),
+            SiteKind::Wall { building, side } => {
+                mass(building, if side.negative() { lv.right } else { lv.left })
+            }
         }
     }
     /// The names of what device `d` joins: two buildings, or a building and a wall.
@@ -237,9 +250,47 @@ impl Scenario {
             }
         }
     }
-    /// The ground motion.
+    /// The ground motion (along x).
     pub fn record(&self) -> &Record {
         &self.record
+    }
+    /// The ground motion along y, if the ground shakes in two directions.
+    pub fn record_y(&self) -> Option<&Record> {
+        self.record_y.as_ref()
+    }
+    /// The peak ground accelerations along x and along y within the analysis, m/s^2 (a short analysis of a
+    /// long record sees only its start).
+    pub fn pga_within(&self) -> (f64, f64) {
+        let peak = |r: &Record| {
+            let within = ((self.duration - r.t0()) / r.dt()).floor().max(0.0) as usize + 1;
+            r.accelerations()[..within.min(r.npts())]
+                .iter()
+                .fold(0.0f64, |a, x| a.max(x.abs()))
+        };
+        (peak(&self.record), self.record_y.as_ref().map_or(0.0, peak))
+    }
+    /// The ground as the engine moves it: the record along x, or both records.
+    pub fn ground(&self) -> crate::engine::Ground<'_> {
+        match &self.record_y {
+            Some(y) => crate::engine::Ground::Plane { x: &self.record, y },
+            None => crate::engine::Ground::Record(&self.record),
+        }
+    }
+
+    /// Shakes the ground along y as well, with `y` (the record along x stays [`Scenario::record`]). The two
+    /// records are put on one time grid: a step that holds every sample of both (their steps' common
+    /// divisor), where each is the same piecewise-linear acceleration as before; each keeps its length (its
+    /// acceleration is 0 after its last sample). Refused if the steps have no common divisor of at least a
+    /// hundredth of the smaller step, or if the first samples are not a whole number of common steps apart.
+    pub fn with_ground_y(mut self, y: Record) -> Result<Self, Error> {
+        let (x, y) = crate::ground_motion::on_one_grid(&self.record, &y)?;
+        // A duration left at the record's follows the longer of the two.
+        if self.duration == self.record.duration() {
+            self.duration = x.duration().max(y.duration());
+        }
+        self.record = x;
+        self.record_y = Some(y);
+        Ok(self)
     }
     /// Analysed duration, s.
     pub fn duration(&self) -> f64 {

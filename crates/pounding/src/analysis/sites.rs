@@ -25,10 +25,32 @@ use crate::Error;
 crate::named! {
     /// Which side of a building a wall stands on.
     pub enum Side: "side" {
-        /// Towards negative displacements.
+        /// Towards negative displacements (for a building in plan: its façade at the smallest x, west).
         Left = "left",
-        /// Towards positive displacements.
+        /// Towards positive displacements (for a building in plan: its façade at the largest x, east).
         Right = "right",
+        /// For a building in plan only: its façade at the smallest y.
+        South = "south",
+        /// For a building in plan only: its façade at the largest y.
+        North = "north",
+    }
+}
+
+impl Side {
+    /// The direction from the building to a wall on this side, a unit vector in plan (x, y).
+    pub fn outward(self) -> (f64, f64) {
+        match self {
+            Side::Left => (-1.0, 0.0),
+            Side::Right => (1.0, 0.0),
+            Side::South => (0.0, -1.0),
+            Side::North => (0.0, 1.0),
+        }
+    }
+
+    /// Whether a wall on this side stands towards negative coordinates (left, south): the building is then
+    /// the right-hand end of the wall's contact elements, as in a row.
+    pub fn negative(self) -> bool {
+        matches!(self, Side::Left | Side::South)
     }
 }
 
@@ -130,6 +152,22 @@ pub struct ContactSite {
     /// Whether its contacts act: a site of a run without contact ([`super::Scenario::with_contacts_off`])
     /// only records the largest closing and opening of each level.
     pub active: bool,
+    /// For buildings in plan: the direction the contact elements act along and the point of each level.
+    pub plan: Option<SitePlan>,
+}
+
+/// Where the contact elements of a site between buildings in plan act: along the normal of the facing
+/// façades, at a point of the façade per level.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SitePlan {
+    /// The unit normal of the façades, from the left building (or from the building to a wall) towards the
+    /// right building (or the wall): `(±1, 0)` or `(0, ±1)`.
+    pub normal: (f64, f64),
+    /// The point of each level on the façade of the left building (a wall's building) at rest, in the site's
+    /// frame, m; `points[k]` is that of `levels[k]`.
+    pub points: Vec<(f64, f64)>,
+    /// The points given along the façade (m, the site-frame coordinate along the façade), per floor pair.
+    pub along: Vec<f64>,
 }
 
 impl ContactSite {
@@ -178,6 +216,29 @@ pub struct LinkSpec {
     pub seat: Option<f64>,
 }
 
+/// What a contact between two buildings in plan is given: named fields, checked by
+/// [`super::Scenario::with_plan_contact`] (a scenario file's `[[contact]]` between buildings with a
+/// `[building.plan]`). The gap and the direction come from the plans' positions: the façades that face each
+/// other.
+#[derive(Clone, Debug)]
+pub struct PlanLinkSpec {
+    /// The two buildings, by name.
+    pub between: [String; 2],
+    /// Floor pairs `(floor of the first building of between, floor of the second)`, from 1 (`None`: every
+    /// pair of floors at the same height, within 1 mm).
+    pub floors: Option<Vec<(usize, usize)>>,
+    /// Where along the façades the contact elements act, m: the site-frame coordinate along the façade (y
+    /// for façades facing along x, x for façades facing along y), each on both façades (`None`: both ends
+    /// of the façades' overlap, each a corner of one of the plans).
+    pub points: Option<Vec<f64>>,
+    /// The contact law of every element (one per point and floor pair; its stiffness is that of one point).
+    pub contact: ContactModel,
+    /// A bumper on the façades.
+    pub bumper: Option<Bumper>,
+    /// Seat length for the unseating check, m (> 0).
+    pub seat: Option<f64>,
+}
+
 /// What a wall is given: named fields, checked by [`super::Scenario::with_wall`].
 #[derive(Clone, Debug)]
 pub struct WallSpec {
@@ -191,6 +252,9 @@ pub struct WallSpec {
     pub gap: f64,
     /// Floors that can strike it, from 1 (default: floor 1).
     pub floors: Option<Vec<usize>>,
+    /// For a building in plan: where along its façade the contact elements act, m (the site-frame
+    /// coordinate along the façade; default its two corners). `None` for a building in one line.
+    pub points: Option<Vec<f64>>,
     /// The contact law.
     pub contact: ContactModel,
     /// A bumper on its face.

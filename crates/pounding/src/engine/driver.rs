@@ -127,6 +127,7 @@ pub fn run(
     let mut dp = Stepper::new(Tolerance {
         rtol: settings.rtol,
         atol: settings.atol.clone(),
+        quiet: sys.quiet_components(),
     });
     let mut y0 = y_start.to_vec();
     let mut ye = vec![0.0; dim];
@@ -134,11 +135,16 @@ pub fn run(
     dp.reset(sys, t_start, &y0, settings.h0);
     let t_end = settings.t_end;
     // Kinks of the ground motion: the samples of a record, and its end.
+    // Two components share one grid (their own lengths): both samples and both ends are kinks.
     let (bp_first, bp_dt, bp_count, motion_end) = match sys.ground() {
-        Ground::Record(r) | Ground::Plane { x: r, .. } => {
-            (r.t0(), r.dt(), r.npts(), Some(r.duration()))
-        }
-        Ground::Constant(_) => (0.0, 1.0, 0, None),
+        Ground::Record(r) => (r.t0(), r.dt(), r.npts(), [Some(r.duration()), None]),
+        Ground::Plane { x, y } => (
+            x.t0(),
+            x.dt(),
+            x.npts().max(y.npts()),
+            [Some(x.duration()), Some(y.duration())],
+        ),
+        Ground::Constant(_) => (0.0, 1.0, 0, [None, None]),
     };
     let breakpoint = |k: usize| bp_first + k as f64 * bp_dt;
     let mut k_bp = 0usize;
@@ -217,7 +223,7 @@ pub fn run(
                 t0 = te;
                 break;
             }
-        } else if Some(t1) == motion_end && t1 < t_end {
+        } else if motion_end.contains(&Some(t1)) && t1 < t_end {
             let h = dp.h();
             dp.reset(&*sys, t1, &ye, h);
         }

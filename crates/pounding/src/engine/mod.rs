@@ -29,7 +29,8 @@ use crate::integrate::{Dense, DenseComponent, OdeSystem};
 pub enum Ground<'a> {
     /// A record along x, linear between samples (kinks at the samples) and 0 after its end.
     Record(&'a Record),
-    /// Two records, along x and along y, on one time grid (the same start, step and length).
+    /// Two records, along x and along y, on one time grid (the same first sample time and step; lengths
+    /// their own, [`crate::ground_motion::on_one_grid`]).
     Plane {
         /// Along x.
         x: &'a Record,
@@ -189,9 +190,37 @@ impl<'a> System<'a> {
     pub fn elements_mut(&mut self) -> &mut [Element] {
         &mut self.elements
     }
+    /// The ground's pull on degree of freedom `i` per unit mass: `(1, 0)` along x, `(0, 1)` along y, `(0, 0)`
+    /// for a rotation.
+    #[inline]
+    pub fn pull(&self, i: usize) -> (f64, f64) {
+        self.pull[i]
+    }
     /// The ground motion.
     pub fn ground(&self) -> Ground<'a> {
         self.ground
+    }
+
+    /// The state components that may stay identically zero through a run and then count in no error norm
+    /// ([`crate::integrate::Tolerance::quiet`]): the displacements and velocities of the degrees of freedom
+    /// along y and in rotation, and the states of the elements acting on those alone (a symmetric plan
+    /// shaken along x keeps them all at 0). None for structures in one line.
+    pub fn quiet_components(&self) -> Vec<usize> {
+        let l = &self.layout;
+        let across = |i: usize| self.pull[i].0 == 0.0;
+        let mut quiet: Vec<usize> = (0..l.dofs())
+            .filter(|&i| across(i))
+            .flat_map(|i| [l.u(i), l.v(i)])
+            .collect();
+        for (e, el) in self.elements.iter().enumerate() {
+            let (ta, tb) = (el.a.terms(), el.b.terms());
+            let mut terms = ta.terms().iter().chain(tb.terms());
+            if terms.all(|&(i, _)| across(i)) && !(ta.terms().is_empty() && tb.terms().is_empty()) {
+                quiet.extend(l.block(e));
+            }
+        }
+        quiet.sort_unstable();
+        quiet
     }
 
     /// Deformation `x = u_a - u_b` (m) and its rate (m/s) of element `e` in state `y`.

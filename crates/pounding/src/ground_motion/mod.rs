@@ -9,6 +9,7 @@
 
 mod builtin;
 mod format;
+mod pair;
 pub mod parse;
 mod record;
 pub mod spectrum;
@@ -16,4 +17,5 @@ pub mod synthetic;
 
 pub use builtin::Builtin;
 pub use format::{Format, ParseError, Units};
+pub use pair::{on_one_grid, turned};
 pub use record::{Peaks, Record, RecordError};

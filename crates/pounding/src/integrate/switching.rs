@@ -58,6 +58,7 @@ impl Stepper {
             Rosenbrock::new(Tolerance {
                 rtol: IMPLICIT_TOLERANCE * tol.rtol,
                 atol: tol.atol.iter().map(|a| IMPLICIT_TOLERANCE * a).collect(),
+                quiet: tol.quiet.clone(),
             })
         });
         Self {
@@ -229,10 +230,7 @@ mod tests {
                 (s * t).exp() * u0 * ((w * t).cos() - s / w * (w * t).sin())
             }
         };
-        let mut st = Stepper::new(Tolerance {
-            rtol,
-            atol: vec![rtol * u0, rtol * u0 * k.sqrt()],
-        });
+        let mut st = Stepper::new(Tolerance::new(rtol, vec![rtol * u0, rtol * u0 * k.sqrt()]));
         st.reset(sys, 0.0, &[u0, 0.0], 1e-9);
         let mut worst: f64 = 0.0;
         while st.t() < t_end {

@@ -107,6 +107,16 @@ pub struct GroundMotionDoc {
     /// Scale factor on the accelerations (dimensionless).
     #[serde(default = "one")]
     pub scale: f64,
+    /// `[ground_motion.y]`: the record along y (the keys above, for it; the one above is then along x), for
+    /// buildings in plan. Put on one time grid with the record along x
+    /// ([`crate::ground_motion::on_one_grid`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub y: Option<Box<GroundMotionDoc>>,
+    /// The direction of the record above from the x axis, degrees counterclockwise (default 0): one record
+    /// along an angle shakes x with `cos` and y with `sin` of it; with a record along y too, the pair is
+    /// turned by the angle.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub angle: Option<f64>,
 }
 
 /// `[analysis]`: settings; each absent one keeps the library's default.
@@ -138,7 +148,8 @@ pub struct BuildingDoc {
     pub name: String,
     /// Floor masses, kg.
     pub masses: Vec<f64>,
-    /// Storey stiffnesses (initial), N/m.
+    /// Storey stiffnesses (initial), N/m; for a building in plan, its lines carry them instead.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stiffnesses: Vec<f64>,
     /// Storey heights, m.
     pub heights: Vec<f64>,
@@ -160,6 +171,64 @@ pub struct BuildingDoc {
     /// The isolator under the base slab, for a building isolated at its base.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub isolator: Option<IsolatorDoc>,
+    /// `[building.plan]`: floors that move in plan (x, y and rotation), placed in the site's frame.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plan: Option<PlanDoc>,
+    /// `[[building.line]]`: the lateral load-resisting lines of a building in plan.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub line: Vec<LineDoc>,
+}
+
+/// `[building.plan]`: a rectangular plan, its place in the site's frame, its floors' mass centres and
+/// moments of inertia, and the modes its Rayleigh damping is fixed on.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct PlanDoc {
+    /// `[a, b]`: the plan's size along x and along y, m.
+    pub size: [f64; 2],
+    /// `[x, y]`: its corner of smallest x and y in the site's frame, m (default `[0, 0]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub position: Option<[f64; 2]>,
+    /// `[x, y]` of the mass centre in the plan's frame (from its corner), m: one for every floor or one per
+    /// floor (default the plan's middle).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass_centre: Option<OneOrMany<[f64; 2]>>,
+    /// Moment of inertia of each floor about its mass centre, kg m^2: one for every floor or one per floor
+    /// (default the uniform rectangle's, `m (a^2 + b^2) / 12`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inertia: Option<OneOrMany<f64>>,
+    /// The two modes (from 1) the Rayleigh damping ratio is fixed on (default: the two lowest that move
+    /// mostly along x).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_modes: Option<[usize; 2]>,
+}
+
+/// `[[building.line]]`: a lateral load-resisting line (a frame or a wall) of a building in plan: its
+/// direction, where it stands, and its storeys (with the storey keys of a building in one line).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct LineDoc {
+    /// `x` or `y`: the direction it resists along.
+    pub direction: crate::structure::LineDirection,
+    /// Where it stands in the plan's frame, m: the ordinate y of a line along x, the abscissa x of one along
+    /// y.
+    pub at: f64,
+    /// Storey stiffnesses (initial) of the line, N/m: one for every storey or one per storey.
+    pub stiffnesses: OneOrMany<f64>,
+    /// `linear`, `bilinear` or `bouc-wen`: one for every storey or one per storey (default linear).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub storey_model: Option<OneOrMany<String>>,
+    /// Yield force of each inelastic storey of the line, N.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_forces: Option<OneOrMany<f64>>,
+    /// Post-yield stiffness ratio (dimensionless, default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub post_yield_ratio: Option<OneOrMany<f64>>,
+    /// Bouc–Wen shape parameters.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bouc_wen: Option<BoucWenShape>,
 }
 
 /// One value for every storey, or a list with one per storey.
@@ -340,11 +409,17 @@ with_contact_law! {
     pub struct ContactDoc {
         /// The two buildings' names.
         pub between: Vec<String>,
-        /// Gap at rest, m.
-        pub gap: f64,
-        /// Floor pairs `[floor of left, floor of right]`, from 1 (default: floors at the same height).
+        /// Gap at rest, m (for buildings in plan, their positions give it: leave it out).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub gap: Option<f64>,
+        /// Floor pairs `[floor of left, floor of right]`, from 1 (default: floors at the same height); for
+        /// buildings in plan, `[floor of the first of between, floor of the second]`.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pub floors: Option<Vec<Vec<usize>>>,
+        /// Buildings in plan: where along the façades the contact elements act, m (the site-frame
+        /// coordinate along them; default both ends of their overlap).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub points: Option<Vec<f64>>,
         /// A bumper on the joint's face.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pub bumper: Option<BumperDoc>,
@@ -362,13 +437,18 @@ with_contact_law! {
         pub name: String,
         /// The building it stands beside.
         pub facing: String,
-        /// `left` or `right` of that building.
+        /// `left` or `right` of that building (of a building in plan: its west or east façade; `south` and
+        /// `north` its façades of smallest and largest y).
         pub side: Side,
         /// Clear distance at rest, m.
         pub gap: f64,
         /// Floors that can strike it, from 1 (default `[1]`).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pub floors: Option<Vec<usize>>,
+        /// For a building in plan: where along its façade the contact elements act, m (the site-frame
+        /// coordinate along it; default its two corners).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub points: Option<Vec<f64>>,
         /// A bumper on its face.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pub bumper: Option<BumperDoc>,

@@ -11,9 +11,11 @@
 mod eigen;
 mod form;
 pub mod isolation;
+pub mod plan;
 
 pub use form::Form;
 pub use isolation::{Isolator, IsolatorKind, IsolatorModel};
+pub use plan::{Line, LineDirection, Plan, PlanDof, PlanSpec};
 
 use crate::element::StoreyLaw;
 use crate::error::check;
@@ -53,6 +55,8 @@ pub struct ShearBuilding {
     isolator: Option<Isolator>,
     /// Natural modes, computed once at construction.
     modes: Modes,
+    /// The plan of a building whose floors move in plan ([`ShearBuilding::in_plan`]).
+    plan: Option<Box<Plan>>,
 }
 
 /// Natural modes of a [`ShearBuilding`], lowest first.
@@ -270,7 +274,49 @@ impl ShearBuilding {
             storey_laws: vec![StoreyLaw::Linear; n_storeys],
             isolator: None,
             modes,
+            plan: None,
         })
+    }
+
+    /// A building whose floors move in plan ([`plan`]): floor masses (kg), storey heights (m), the damping
+    /// ratio of its Rayleigh damping, and its plan's lines and geometry (`spec`). Its stiffnesses, storey laws
+    /// and modes in one line are those of the lines along x summed per storey (a view for what treats the
+    /// building along x); the motion uses the plan ([`ShearBuilding::plan`]).
+    pub fn in_plan(
+        masses: Vec<f64>,
+        heights: Vec<f64>,
+        damping_ratio: f64,
+        spec: PlanSpec,
+    ) -> Result<Self, Error> {
+        let plan = Plan::new(&masses, spec, damping_ratio)?;
+        let n = masses.len();
+        let along_x: Vec<f64> = (0..n)
+            .map(|s| {
+                plan.lines()
+                    .iter()
+                    .filter(|l| l.direction == LineDirection::X)
+                    .map(|l| l.stiffnesses[s])
+                    .sum()
+            })
+            .collect();
+        // A plan with no line along x is refused by its modes (singular); the sums are then > 0.
+        let mut b = Self::new(masses, along_x, heights, damping_ratio)?;
+        b.plan = Some(Box::new(plan));
+        Ok(b)
+    }
+
+    /// The plan of a building whose floors move in plan.
+    pub fn plan(&self) -> Option<&Plan> {
+        self.plan.as_deref()
+    }
+
+    /// Degrees of freedom: one per floor, three (x, y, rotation) for a building in plan.
+    pub fn dofs(&self) -> usize {
+        if self.plan.is_some() {
+            3 * self.storeys()
+        } else {
+            self.storeys()
+        }
     }
 
     /// A building isolated at its base: the base slab (floor 1, `base_mass` kg) on `isolator` (storey 1),

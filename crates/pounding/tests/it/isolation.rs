@@ -22,6 +22,7 @@ fn wall(facing: &str, side: Side, gap: f64, contact: &ContactModel) -> WallSpec 
         side,
         gap,
         floors: None,
+        points: None,
         contact: contact.clone(),
         bumper: None,
         seat: None,
