@@ -59,7 +59,9 @@ pub(super) fn facing(a: &Plan, b: &Plan, names: (&str, &str)) -> Result<Facing, 
     // overlap of their extents (negative if apart).
     let along = |axis: usize| {
         let ((a0, a1), (b0, b1)) = (extent(a, axis), extent(b, axis));
-        let gap = (b0 - a1).max(a0 - b1);
+        // To the picometre: positions a user types (20.02 beside 20) give the gap they mean (0.02, not
+        // 0.019999999999999574), as a contact in one line is given it.
+        let gap = ((b0 - a1).max(a0 - b1) * 1e12).round() / 1e12;
         let overlap = a1.min(b1) - a0.max(b0);
         (gap, overlap, a1 <= b0, (a0.max(b0), a1.min(b1)))
     };

@@ -490,7 +490,7 @@ fn rayleigh_of(w: &[f64], zeta: f64) -> (f64, f64) {
 
 /// Natural modes of the shear building with these floor masses and storey stiffnesses (same length, at
 /// least 1, positive), and the number of Jacobi sweeps it took.
-fn solve_modes(masses: &[f64], stiffnesses: &[f64]) -> (Modes, usize) {
+pub(super) fn solve_modes(masses: &[f64], stiffnesses: &[f64]) -> (Modes, usize) {
     let n = masses.len();
     let s: Vec<f64> = masses.iter().map(|m| 1.0 / m.sqrt()).collect();
     let mut a = vec![0.0; n * n];

@@ -349,40 +349,49 @@ impl Plan {
         k
     }
 
-    /// The modes of `K phi = w^2 M phi` over the `3 n` degrees of freedom, lowest first, by Jacobi on
-    /// `M^-1/2 K M^-1/2`; refused if a mode has no stiffness (lines that cannot hold the floors in plan).
+    /// The modes of `K phi = w^2 M phi` over the `3 n` degrees of freedom, lowest first; refused if a mode has
+    /// no stiffness (lines that cannot hold the floors in plan). A plan whose motion along x is uncoupled
+    /// from its rotation (lines along x balanced about every mass centre) has the modes along x of the
+    /// building in one line with its lines' stiffnesses summed, computed the same way to the last digit; the
+    /// rest by Jacobi on `M^-1/2 K M^-1/2`.
     fn solve_modes(&self) -> Result<Modes, Error> {
-        let d = 3 * self.floors();
+        let n = self.floors();
+        let d = 3 * n;
         let m = self.dof_masses();
-        let s: Vec<f64> = m.iter().map(|x| 1.0 / x.sqrt()).collect();
         let k = self.stiffness_matrix();
-        let mut a: Vec<f64> = (0..d * d).map(|ij| k[ij] * s[ij / d] * s[ij % d]).collect();
-        let scale = (0..d).map(|i| a[i * d + i].abs()).fold(0.0f64, f64::max);
-        let e = eigen::symmetric(&mut a, d);
-        let mut order: Vec<usize> = (0..d).collect();
-        order.sort_by(|&i, &j| e.values[i].total_cmp(&e.values[j]));
-        if e.values[order[0]] <= 1e-10 * scale {
+        let scale = (0..d).map(|i| k[i * d + i] / m[i]).fold(0.0f64, f64::max);
+        let uncoupled = (0..n).all(|i| (2 * n..d).all(|j| k[i * d + j] == 0.0));
+        let mut modes: Vec<(f64, Vec<f64>)> = Vec::with_capacity(d);
+        if uncoupled {
+            let sums: Vec<f64> = (0..n)
+                .map(|s| {
+                    self.lines
+                        .iter()
+                        .filter(|l| l.direction == LineDirection::X)
+                        .map(|l| l.stiffnesses[s])
+                        .sum()
+                })
+                .collect();
+            let (x, _) = super::solve_modes(&self.masses, &sums);
+            for (w, phi) in x.omega.into_iter().zip(x.shapes) {
+                let mut full = vec![0.0; d];
+                full[..n].copy_from_slice(&phi);
+                modes.push((w, full));
+            }
+            modes.extend(block_modes(&k, &m, &(n..d).collect::<Vec<_>>()));
+        } else {
+            modes.extend(block_modes(&k, &m, &(0..d).collect::<Vec<_>>()));
+        }
+        // A stable sort: modes of equal frequency keep x before the rest.
+        modes.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if modes[0].0 * modes[0].0 <= 1e-10 * scale {
             return Err(Error::Choice {
                 name: "line",
                 value: "these lines".into(),
                 allowed: "lines along x and along y, not all through one point, that hold every floor in x, y and rotation (the stiffness in plan is singular)".into(),
             });
         }
-        let omega = order.iter().map(|&r| e.values[r].sqrt()).collect();
-        let shapes = order
-            .iter()
-            .map(|&r| {
-                let mut phi: Vec<f64> = (0..d).map(|i| e.vectors[i * d + r] * s[i]).collect();
-                // Sign: the component of largest magnitude positive.
-                let big = phi
-                    .iter()
-                    .fold(0.0f64, |acc, x| if x.abs() > acc.abs() { *x } else { acc });
-                if big < 0.0 {
-                    phi.iter_mut().for_each(|x| *x = -*x);
-                }
-                phi
-            })
-            .collect();
+        let (omega, shapes) = modes.into_iter().unzip();
         Ok(Modes { omega, shapes })
     }
 
@@ -468,6 +477,37 @@ impl Plan {
             })
             .collect()
     }
+}
+
+/// The modes of `K phi = w^2 M phi` restricted to the degrees of freedom `idx` (of the full `K`, row-major,
+/// and masses `m`): circular frequencies (rad/s, unsorted) and mass-normalised shapes over all degrees of
+/// freedom (zero outside `idx`), each with its component of largest magnitude positive.
+fn block_modes(k: &[f64], m: &[f64], idx: &[usize]) -> Vec<(f64, Vec<f64>)> {
+    let d = m.len();
+    let b = idx.len();
+    let s: Vec<f64> = idx.iter().map(|&i| 1.0 / m[i].sqrt()).collect();
+    let mut a: Vec<f64> = (0..b * b)
+        .map(|ij| {
+            let (p, q) = (ij / b, ij % b);
+            k[idx[p] * d + idx[q]] * s[p] * s[q]
+        })
+        .collect();
+    let e = eigen::symmetric(&mut a, b);
+    (0..b)
+        .map(|r| {
+            let mut phi = vec![0.0; d];
+            for (p, &i) in idx.iter().enumerate() {
+                phi[i] = e.vectors[p * b + r] * s[p];
+            }
+            let big = phi
+                .iter()
+                .fold(0.0f64, |acc, x| if x.abs() > acc.abs() { *x } else { acc });
+            if big < 0.0 {
+                phi.iter_mut().for_each(|x| *x = -*x);
+            }
+            (e.values[r].max(0.0).sqrt(), phi)
+        })
+        .collect()
 }
 
 /// An effective mass ratio above which a mode takes part in a direction (a symmetric plan's modes have

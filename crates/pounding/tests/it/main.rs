@@ -14,6 +14,7 @@ mod inelastic;
 mod integrated;
 mod isolation;
 mod paper;
+mod plan;
 mod reliability;
 mod restitution;
 mod separation;
