@@ -229,6 +229,12 @@ impl Ida {
         };
         let base_file = ScenarioFile::read(&base_path)?;
         let base_loaded = base_file.load()?;
+        if base_loaded.doc.ground_motion.y.is_some() {
+            return Err(err(
+                path,
+                "the base scenario has [ground_motion.y]: an IDA scales each record of its suite alone, which would pair every one with that same record along y; remove it (a record along an angle, ground_motion.angle, is scaled as one)",
+            ));
+        }
         let names: Vec<String> = base_loaded
             .scenario
             .buildings()

@@ -250,26 +250,36 @@ pub fn from_value(value: &Value, label: &str) -> Result<Loaded, (Option<String>,
         .ground_motion
         .spec()
         .map_err(|e| (Some(e.key), e.message))?;
-    let record = read_record(&spec)
-        .and_then(|r| r.scaled(spec.scale).map_err(RecordError::Value))
-        .map_err(|e| {
-            let msg = record_message(&spec, e);
-            (
-                Some("ground_motion".to_string()),
-                format!("[ground_motion] {msg}"),
-            )
-        })?;
-    build(doc, record, label, spec.source)
+    let load = |spec: &RecordSpec, at: &str| {
+        read_record(spec)
+            .and_then(|r| r.scaled(spec.scale).map_err(RecordError::Value))
+            .map_err(|e| {
+                let msg = record_message(spec, e);
+                (Some(at.to_string()), format!("[{at}] {msg}"))
+            })
+    };
+    let record = load(&spec, "ground_motion")?;
+    let y = match doc
+        .ground_motion
+        .spec_y()
+        .map_err(|e| (Some(e.key), e.message))?
+    {
+        Some(sy) => Some(load(&sy, "ground_motion.y")?),
+        None => None,
+    };
+    build(doc, (record, y), label, spec.source)
 }
 
-/// Validates `doc` under `record` (already loaded and scaled).
+/// Validates `doc` under `record` along x and its record along y, if it has one (already loaded and scaled).
 pub fn build(
     doc: ScenarioDoc,
-    record: Record,
+    (record, y): (Record, Option<Record>),
     label: &str,
     record_source: String,
 ) -> Result<Loaded, (Option<String>, String)> {
-    let scenario = doc.build(record).map_err(|e| (Some(e.key), e.message))?;
+    let scenario = doc
+        .build_with(record, y)
+        .map_err(|e| (Some(e.key), e.message))?;
     Ok(Loaded {
         doc,
         scenario,

@@ -29,6 +29,8 @@ struct Job {
     doc: ScenarioDoc,
     record: Arc<Record>,
     spec: RecordSpec,
+    /// The record along y, if any, unscaled, and what names it.
+    y: Option<(Arc<Record>, RecordSpec)>,
 }
 
 impl Prepared {
@@ -64,42 +66,74 @@ fn prepare_one(value: &Value, label: String, cache: &RecordCache) -> Prepared {
             }
         }
     };
-    let id = format!("{}|{:?}|{:?}", spec.source, spec.format, spec.units);
-    let loaded = {
-        let mut c = cache.lock().unwrap_or_else(|p| p.into_inner());
-        c.entry(id)
-            .or_insert_with(|| {
-                let r = input::read_record(&spec).map_err(|e| {
-                    format!(
-                        "ground_motion: [ground_motion] {}",
-                        input::record_message(&spec, e)
-                    )
-                })?;
-                let hash = format!("{:032x}", fnv1a_128(&bytes_of(r.accelerations(), r.dt())));
-                Ok((Arc::new(r), hash))
-            })
-            .clone()
+    let spec_y = match doc.ground_motion.spec_y() {
+        Ok(s) => s,
+        Err(e) => {
+            return Prepared {
+                key: key_of(&canonical),
+                label,
+                job: Err(dict_message(Some(e.key), e.message)),
+            }
+        }
     };
+    let loaded = cached(&spec, "ground_motion", cache).and_then(|x| {
+        let y = spec_y
+            .as_ref()
+            .map(|sy| cached(sy, "ground_motion.y", cache))
+            .transpose()?;
+        Ok((x, y))
+    });
     match loaded {
         Err(m) => Prepared {
             key: key_of(&canonical),
             label,
             job: Err(m),
         },
-        Ok((record, hash)) => {
+        Ok(((record, hash), y)) => {
             // A record file is known by its content, not by its path: the key holds wherever the study runs.
             if spec.is_file {
                 if let Some(f) = canonical.pointer_mut("/ground_motion/file") {
                     *f = Value::String(format!("fnv1a-128:{hash}"));
                 }
             }
+            if let (Some(sy), Some((_, hy))) = (&spec_y, &y) {
+                if sy.is_file {
+                    if let Some(f) = canonical.pointer_mut("/ground_motion/y/file") {
+                        *f = Value::String(format!("fnv1a-128:{hy}"));
+                    }
+                }
+            }
+            let y = y.zip(spec_y).map(|((r, _), s)| (r, s));
             Prepared {
                 key: key_of(&canonical),
                 label,
-                job: Ok(Job { doc, record, spec }),
+                job: Ok(Job {
+                    doc,
+                    record,
+                    spec,
+                    y,
+                }),
             }
         }
     }
+}
+
+/// The record `spec` names (at `at` in messages), read once per study: `(unscaled record, content hash)`.
+fn cached(
+    spec: &RecordSpec,
+    at: &str,
+    cache: &RecordCache,
+) -> Result<(Arc<Record>, String), String> {
+    let id = format!("{}|{:?}|{:?}", spec.source, spec.format, spec.units);
+    let mut c = cache.lock().unwrap_or_else(|p| p.into_inner());
+    c.entry(id)
+        .or_insert_with(|| {
+            let r = input::read_record(spec)
+                .map_err(|e| format!("{at}: [{at}] {}", input::record_message(spec, e)))?;
+            let hash = format!("{:032x}", fnv1a_128(&bytes_of(r.accelerations(), r.dt())));
+            Ok((Arc::new(r), hash))
+        })
+        .clone()
 }
 
 /// The bytes that identify a record: its time step and accelerations.
@@ -195,8 +229,23 @@ pub fn run_one(
         .clone()
         .scaled(job.spec.scale)
         .map_err(|e| format!("ground_motion.scale: {e}"))?;
-    let loaded: Loaded = input::build(job.doc.clone(), record, &p.label, job.spec.source.clone())
-        .map_err(|(k, m)| dict_message(k, m))?;
+    let y = job
+        .y
+        .as_ref()
+        .map(|(r, s)| {
+            (**r)
+                .clone()
+                .scaled(s.scale)
+                .map_err(|e| format!("ground_motion.y.scale: {e}"))
+        })
+        .transpose()?;
+    let loaded: Loaded = input::build(
+        job.doc.clone(),
+        (record, y),
+        &p.label,
+        job.spec.source.clone(),
+    )
+    .map_err(|(k, m)| dict_message(k, m))?;
     let results = loaded
         .scenario
         .run_with_options(options, &mut |_| {

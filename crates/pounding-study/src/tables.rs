@@ -93,6 +93,12 @@ pub struct ImpactRow {
     pub ended: bool,
     /// A resting contact (closing slower than the smallest impact velocity).
     pub resting: bool,
+    /// Between buildings in plan: the x of the impact's point at rest, m (blank in one line).
+    #[serde(default)]
+    pub point_x_m: Option<f64>,
+    /// Between buildings in plan: the y of the impact's point at rest, m (blank in one line).
+    #[serde(default)]
+    pub point_y_m: Option<f64>,
 }
 
 impl ImpactRow {
@@ -132,6 +138,8 @@ impl ImpactRow {
                     max_penetration_m: i.max_penetration,
                     ended: i.ended,
                     resting: i.resting,
+                    point_x_m: site.plan.as_ref().map(|p| p.points[i.level].0),
+                    point_y_m: site.plan.as_ref().map(|p| p.points[i.level].1),
                 }
             })
             .collect()
@@ -140,10 +148,16 @@ impl ImpactRow {
     /// The index of its site in `summary.sites`, and of its level.
     pub fn place(&self, summary: &RunSummary) -> Option<(usize, usize)> {
         let site = summary.sites.iter().position(|s| s.name == self.contact)?;
-        let level = summary.sites[site]
-            .levels
-            .iter()
-            .position(|l| l.left == self.floor_left && l.right == self.floor_right)?;
+        let st = &summary.sites[site];
+        // In plan, a floor pair has a level per point.
+        let point = |k: usize| match (&st.points, self.point_x_m, self.point_y_m) {
+            (Some(p), Some(x), Some(y)) => p[k] == [x, y],
+            _ => true,
+        };
+        let level = (0..st.levels.len()).position(|k| {
+            let l = st.levels[k];
+            l.left == self.floor_left && l.right == self.floor_right && point(k)
+        })?;
         Some((site, level))
     }
 }
@@ -299,6 +313,8 @@ impl Table for ImpactRow {
         "max_penetration_m",
         "ended",
         "resting",
+        "point_x_m",
+        "point_y_m",
     ];
 }
 
@@ -353,7 +369,13 @@ pub fn write_rows<T: Table>(w: impl Write, rows: &[T]) -> Result<(), TableError>
 pub fn read_rows<T: Table>(r: impl Read) -> Result<Vec<T>, TableError> {
     let mut rdr = csv::ReaderBuilder::new().has_headers(true).from_reader(r);
     let header = rdr.headers()?.clone();
-    if header.iter().ne(T::HEADER.iter().copied()) {
+    // A folder written before the last columns were added reads with them blank.
+    let older = header.len() < T::HEADER.len() && header.len() >= 2;
+    if header
+        .iter()
+        .ne(T::HEADER.iter().copied().take(header.len()))
+        || (!older && header.len() != T::HEADER.len())
+    {
         return Err(TableError::Invalid(format!(
             "{}: the header is not {}",
             T::FILE,
@@ -409,6 +431,22 @@ pub enum Column {
         /// Index of the storey.
         storey: usize,
     },
+    /// Ground acceleration along y, m/s^2.
+    GroundAccelerationY,
+    /// A floor in plan's mass centre along y, m.
+    DisplacementY {
+        /// Index of the building.
+        building: usize,
+        /// Index of the floor.
+        floor: usize,
+    },
+    /// A floor in plan's rotation, rad.
+    Rotation {
+        /// Index of the building.
+        building: usize,
+        /// Index of the floor.
+        floor: usize,
+    },
 }
 
 impl Column {
@@ -432,6 +470,16 @@ impl Column {
         for (building, b) in s.buildings.iter().enumerate() {
             out.extend(floors(b).map(|storey| Column::StoreyShear { building, storey }));
         }
+        // Buildings in plan and a ground along y: after the columns of a row in one line.
+        if s.record_y.is_some() {
+            out.push(Column::GroundAccelerationY);
+        }
+        for (building, b) in s.buildings.iter().enumerate() {
+            if b.plan.is_some() {
+                out.extend(floors(b).map(|floor| Column::DisplacementY { building, floor }));
+                out.extend(floors(b).map(|floor| Column::Rotation { building, floor }));
+            }
+        }
         out
     }
 
@@ -448,15 +496,21 @@ impl Column {
             Column::SiteForce { site, level } => {
                 let st = &s.sites[site];
                 let l = st.levels[level];
+                // In plan, the point along the façades too: `_y10` for y = 10 m.
+                let at = match (&st.normal, &st.points) {
+                    (Some(n), Some(p)) if n[0] != 0.0 => format!("_y{}", p[level][1]),
+                    (Some(_), Some(p)) => format!("_x{}", p[level][0]),
+                    _ => String::new(),
+                };
                 match st.place {
                     SitePlace::Contact { .. } => format!(
-                        "{}_floors{}-{}_force_N",
+                        "{}_floors{}-{}{at}_force_N",
                         st.name,
                         l.left.unwrap_or(0),
                         l.right.unwrap_or(0)
                     ),
                     SitePlace::Wall { .. } => format!(
-                        "{}_floor{}_force_N",
+                        "{}_floor{}{at}_force_N",
                         st.name,
                         l.left.or(l.right).unwrap_or(0)
                     ),
@@ -477,6 +531,17 @@ impl Column {
                 s.buildings[building].name,
                 storey + 1
             ),
+            Column::GroundAccelerationY => "ground_acceleration_y_m_per_s2".into(),
+            Column::DisplacementY { building, floor } => format!(
+                "{}_floor{}_displacement_y_m",
+                s.buildings[building].name,
+                floor + 1
+            ),
+            Column::Rotation { building, floor } => format!(
+                "{}_floor{}_rotation_rad",
+                s.buildings[building].name,
+                floor + 1
+            ),
         }
     }
 
@@ -492,6 +557,9 @@ impl Column {
                 &h.absolute_acceleration[building][floor]
             }
             Column::StoreyShear { building, storey } => &h.storey_shear[building][storey],
+            Column::GroundAccelerationY => &h.ground_acceleration_y,
+            Column::DisplacementY { building, floor } => &h.displacement_y[building][floor],
+            Column::Rotation { building, floor } => &h.rotation[building][floor],
         }
     }
 
@@ -507,6 +575,9 @@ impl Column {
                 &mut h.absolute_acceleration[building][floor]
             }
             Column::StoreyShear { building, storey } => &mut h.storey_shear[building][storey],
+            Column::GroundAccelerationY => &mut h.ground_acceleration_y,
+            Column::DisplacementY { building, floor } => &mut h.displacement_y[building][floor],
+            Column::Rotation { building, floor } => &mut h.rotation[building][floor],
         }
     }
 }
@@ -594,12 +665,21 @@ pub fn read_response(r: impl Read, s: &RunSummary) -> Result<Histories, TableErr
         (0..count).map(|i| vec![Vec::new(); n(i)]).collect()
     };
     let floors = |b: usize| s.buildings[b].storeys;
+    let plan_floors = |b: usize| {
+        if s.buildings[b].plan.is_some() {
+            s.buildings[b].storeys
+        } else {
+            0
+        }
+    };
     let mut h = Histories {
         displacement: per(&floors, s.buildings.len()),
         absolute_acceleration: per(&floors, s.buildings.len()),
         storey_shear: per(&floors, s.buildings.len()),
         site_force: per(&|i| s.sites[i].levels.len(), s.sites.len()),
         device_force: per(&|i| s.devices[i].floors.len(), s.devices.len()),
+        displacement_y: per(&plan_floors, s.buildings.len()),
+        rotation: per(&plan_floors, s.buildings.len()),
         ..Histories::default()
     };
     let mut record = csv::StringRecord::new();

@@ -81,6 +81,66 @@ pub struct BuildingSummary {
     /// Energy dissipated by the hysteresis of each inelastic storey, J.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub hysteretic_energy: Vec<f64>,
+    /// For a building in plan: its plan, lines and modes in plan, and its response along y, in rotation and
+    /// at its corners. The fields above then hold its mass centres' response along x; its periods, damping
+    /// ratios and mass ratios (along x) are its modes' in plan, its mode shapes their x components; a storey
+    /// is inelastic if one of its lines is, with the yield force of its lines along x summed, the largest
+    /// ductility of its lines and their hysteretic energy summed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plan: Option<super::PlanSummary>,
+}
+
+/// A storey law per storey of a building in plan, for its summary along x: the first inelastic law of its
+/// lines, with the yield forces of its lines along x summed (the storey's along x; those of its lines along
+/// y if none along x yields).
+fn plan_storey_laws(p: &pounding::structure::Plan) -> Vec<pounding::element::StoreyLaw> {
+    use pounding::element::StoreyLaw;
+    use pounding::structure::LineDirection;
+    (0..p.floors())
+        .map(|j| {
+            let inelastic = |d: Option<LineDirection>| {
+                p.lines()
+                    .iter()
+                    .filter(move |l| d.is_none_or(|d| l.direction == d))
+                    .map(move |l| l.laws[j])
+                    .filter(|law| law.is_inelastic())
+            };
+            let Some(first) = inelastic(None).next() else {
+                return StoreyLaw::Linear;
+            };
+            let along_x: f64 = inelastic(Some(LineDirection::X))
+                .filter_map(|l| l.yield_force())
+                .sum();
+            first.with_yield_force(if along_x > 0.0 {
+                along_x
+            } else {
+                first.yield_force().unwrap_or(0.0)
+            })
+        })
+        .collect()
+}
+
+/// The x components of each mode of plan `p`, over the largest translation or edge motion of the mode (its
+/// rotation times the floor's radius of gyration), so that a mode along y or in rotation has small x
+/// components, not a scale of its own.
+fn plan_shapes(p: &pounding::structure::Plan) -> Vec<Vec<f64>> {
+    let n = p.floors();
+    p.modes()
+        .shapes
+        .iter()
+        .map(|phi| {
+            let big = (0..n)
+                .map(|i| {
+                    let rg = (p.inertias()[i] / p.masses()[i]).sqrt();
+                    phi[i]
+                        .abs()
+                        .max(phi[n + i].abs())
+                        .max(rg * phi[2 * n + i].abs())
+                })
+                .fold(0.0f64, f64::max);
+            phi[..n].iter().map(|x| x / big).collect()
+        })
+        .collect()
 }
 
 impl BuildingSummary {
@@ -89,7 +149,14 @@ impl BuildingSummary {
         let st = &b.structure;
         let modes = st.modes();
         let part = modes.participation(st.masses());
-        let laws = st.storey_laws();
+        let plan = st
+            .plan()
+            .zip(resp.plan.as_ref())
+            .map(|(p, r)| super::PlanSummary::of(p, r));
+        let laws = match st.plan() {
+            None => st.storey_laws().to_vec(),
+            Some(p) => plan_storey_laws(p),
+        };
         let isolator = st.isolator().map(|iso| IsolatorSummary {
             model: iso.model.kind(),
             law: iso.model,
@@ -104,16 +171,31 @@ impl BuildingSummary {
         let inelastic: Vec<usize> = (0..st.storeys())
             .filter(|&j| laws[j].is_inelastic())
             .collect();
+        let (periods, modal_damping_ratios, mode_shapes, effective_modal_mass_ratios) =
+            match (st.plan(), &plan) {
+                (Some(p), Some(ps)) => (
+                    ps.modes.iter().map(|m| m.period).collect(),
+                    ps.modes.iter().map(|m| m.damping_ratio).collect(),
+                    plan_shapes(p),
+                    ps.modes.iter().map(|m| m.mass_ratio_x).collect(),
+                ),
+                _ => (
+                    modes.periods(),
+                    (0..modes.omega.len())
+                        .map(|r| st.damping_of_mode(r))
+                        .collect(),
+                    modes.shapes_normalised(),
+                    part.iter().map(|p| p.1 / st.total_mass()).collect(),
+                ),
+            };
         Self {
             name: b.name.clone(),
             storeys: st.storeys(),
             heights: st.heights().to_vec(),
-            periods: modes.periods(),
-            modal_damping_ratios: (0..modes.omega.len())
-                .map(|r| st.damping_of_mode(r))
-                .collect(),
-            mode_shapes: modes.shapes_normalised(),
-            effective_modal_mass_ratios: part.iter().map(|p| p.1 / st.total_mass()).collect(),
+            periods,
+            modal_damping_ratios,
+            mode_shapes,
+            effective_modal_mass_ratios,
             peak_displacement: resp.peak_displacement.clone(),
             time_of_peak_displacement: resp.time_of_peak_displacement.clone(),
             peak_drift: resp.peak_drift.clone(),
@@ -143,6 +225,7 @@ impl BuildingSummary {
                 .map(|&j| resp.hysteretic_energy[j])
                 .collect(),
             inelastic_storeys: inelastic.iter().map(|j| j + 1).collect(),
+            plan,
         }
     }
 

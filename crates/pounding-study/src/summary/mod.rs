@@ -6,11 +6,13 @@
 mod building;
 mod device;
 pub mod inside;
+mod plan;
 mod site;
 mod units;
 
 pub use building::{BuildingSummary, IsolatorSummary};
 pub use device::DeviceSummary;
+pub use plan::{LineSummary, PlanModeSummary, PlanSummary};
 pub use site::{
     BumperSummary, ContactLawSummary, DampingSummary, DeliveredE, LevelSummary, SitePlace,
     SiteSummary,
@@ -76,8 +78,13 @@ pub struct StatisticsSummary {
 pub struct RunSummary {
     /// Where the scenario came from (its file, or a study's run).
     pub scenario: String,
-    /// The record.
+    /// The record (along x).
     pub record: RecordSummary,
+    /// The record along y, when the ground shakes in two directions (`[ground_motion.y]`, or one record
+    /// along an angle: then the same source); the records as the analysis used them, on one time grid
+    /// and turned by the angle.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub record_y: Option<RecordSummary>,
     /// Analysed duration, s.
     pub duration: f64,
     /// Output interval of the histories, s.
@@ -133,6 +140,23 @@ impl RunSummary {
                 dt: rec.dt(),
                 pga: rec.peaks().pga,
             },
+            record_y: s.record_y().map(|r| {
+                let gm = &loaded.doc.ground_motion;
+                let (source, scale) = match &gm.y {
+                    Some(y) => (
+                        y.record.clone().or(y.file.clone()).unwrap_or_default(),
+                        y.scale,
+                    ),
+                    None => (loaded.record_source.clone(), gm.scale),
+                };
+                RecordSummary {
+                    source,
+                    scale,
+                    npts: r.npts(),
+                    dt: r.dt(),
+                    pga: r.peaks().pga,
+                }
+            }),
             duration: s.duration(),
             output_dt: s.output_dt(),
             tolerance: s.tolerance(),

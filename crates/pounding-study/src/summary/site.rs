@@ -202,6 +202,14 @@ pub struct SiteSummary {
     pub gap: f64,
     /// Its levels, each a contact element.
     pub levels: Vec<LevelSummary>,
+    /// Between buildings in plan: the unit normal of the façades (from the left building, or from the
+    /// building to the wall, along a positive axis), `[x, y]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal: Option<[f64; 2]>,
+    /// Between buildings in plan: each level's point on the left building's façade (the wall's building's)
+    /// at rest, `[x, y]` in the site's frame, m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub points: Option<Vec<[f64; 2]>>,
     /// Its law (behind the bumper, if there is one).
     #[serde(flatten)]
     pub law: ContactLawSummary,
@@ -253,6 +261,11 @@ impl SiteSummary {
             name: site.name.clone(),
             gap: site.gap,
             levels: site.levels.iter().map(|&l| l.into()).collect(),
+            normal: site.plan.as_ref().map(|p| [p.normal.0, p.normal.1]),
+            points: site
+                .plan
+                .as_ref()
+                .map(|p| p.points.iter().map(|q| [q.0, q.1]).collect()),
             law: ContactLawSummary::of(&site.contact),
             bumper: site.bumper.as_ref().map(BumperSummary::of),
             consumed: site.bumper.as_ref().map(|_| lr.consumed),

@@ -25,8 +25,27 @@ pub fn units() -> Map<String, Value> {
         "devices.law": "stiffness N/m, damping_coefficient N s/m (N (s/m)^velocity_exponent for fluid-viscous), slack m",
         "devices.peak_force": "N (elastic and viscous)",
     });
-    match v {
-        Value::Object(m) => m,
-        _ => unreachable!("a JSON object"),
+    // Buildings in plan and two ground components (a second object: one json! of all keys overflows the
+    // macro's recursion limit).
+    let plan = json!({
+        "record_y.dt": "s", "record_y.pga": "m/s^2",
+        "plan.size": "m (along x, along y)", "plan.position": "m (the corner of smallest x and y, in the site's frame)",
+        "plan.mass_centres": "m (in the plan's frame)", "plan.inertias": "kg m^2",
+        "plan.modes.period": "s", "plan.modes.mass_ratio_x": "effective modal mass along x / building mass",
+        "plan.modes.mass_ratio_rotation": "effective modal moment of inertia / sum of the floors'",
+        "plan.lines.at": "m (y of a line along x, x of a line along y, in the plan's frame)", "plan.lines.stiffnesses": "N/m",
+        "plan.lines.peak_drift": "m", "plan.lines.ductility": "peak drift / yield drift (0 for linear)", "plan.lines.hysteretic_energy": "J",
+        "plan.peak_displacement_y": "m", "plan.peak_rotation": "rad", "plan.peak_drift_y": "m", "plan.peak_twist": "rad",
+        "plan.peak_storey_shear_y": "N", "plan.peak_torque": "N m", "plan.peak_corner_x": "m (corners counterclockwise from the plan's corner of smallest x and y)",
+        "plan.peak_corner_y": "m", "plan.torsional_amplification_x": "largest corner peak / mass centre peak, along x",
+        "plan.residual_displacement_y": "m (signed)", "plan.residual_rotation": "rad (signed, counterclockwise)",
+        "sites.points": "m (each level's point on the left building's façade, in the site's frame)",
+    });
+    match (v, plan) {
+        (Value::Object(mut m), Value::Object(p)) => {
+            m.extend(p);
+            m
+        }
+        _ => unreachable!("JSON objects"),
     }
 }

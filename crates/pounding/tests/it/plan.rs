@@ -185,7 +185,12 @@ fn same(one: &Results, plan: &Results, tol: f64, what: &str) {
             a.v_i,
             c.v_i
         );
-        assert!(close(a.peak_force, c.peak_force, tol), "{what}: force {} vs {}", a.peak_force, c.peak_force);
+        assert!(
+            close(a.peak_force, c.peak_force, tol),
+            "{what}: force {} vs {}",
+            a.peak_force,
+            c.peak_force
+        );
         if let (Some(e1), Some(e2)) = (a.e_post, c.e_post) {
             assert!((e1 - e2).abs() < tol, "{what}: e {e1} vs {e2}");
         }

@@ -2,6 +2,7 @@
 //! response.csv, impacts.csv, impact-loops.csv and energy.csv in the output folder (the study crate's typed
 //! tables), and the figures and report made from them.
 
+mod plan;
 mod setup;
 mod tables;
 

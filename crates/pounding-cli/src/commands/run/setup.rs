@@ -26,6 +26,7 @@ pub fn print(loaded: &Loaded, file: &Path) {
         fmt_sig(p.pga / pounding::units::STANDARD_GRAVITY, 4),
         fmt_num(p.pga_time)
     );
+    super::plan::record_y(s, loaded.doc.ground_motion.angle);
     println!(
         "analysis  {} s, output every {} s, tolerance {:e}",
         fmt_num(s.duration()),
@@ -167,9 +168,12 @@ fn deck(b: &Building) {
     );
 }
 
-/// A building, its storey laws and its modes (a deck: [`deck`]).
+/// A building, its storey laws and its modes (a deck: [`deck`]; a building in plan: [`super::plan::building`]).
 fn building(b: &Building) {
     let st = &b.structure;
+    if let Some(p) = st.plan() {
+        return super::plan::building(b, p);
+    }
     if st.form() == Form::Deck {
         return deck(b);
     }
@@ -225,6 +229,11 @@ fn sites(s: &Scenario) {
     let decks = who(s) == "deck";
     for site in s.sites() {
         let law = contact_label(site.contact.spec(), site.contact.parameter());
+        if site.plan.is_some() {
+            super::plan::site(s, site, &law);
+            extras(&site.bumper, site.seat);
+            continue;
+        }
         match site.kind {
             SiteKind::Between { .. } => {
                 let floors: Vec<String> = site

@@ -10,6 +10,7 @@ use pounding_study::summary::inside::{inside, Meeting};
 /// Prints the results `r` of a run of `s`.
 pub fn print(s: &Scenario, r: &Results) {
     floors(s, r);
+    super::plan::peaks(s, r);
     inelastic(s, r);
     isolators(s, r);
     sites(s, r);

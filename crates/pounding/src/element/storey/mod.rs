@@ -142,6 +142,17 @@ impl StoreyLaw {
         }
     }
 
+    /// The same law with yield force `f` (N; a linear law stays linear).
+    pub fn with_yield_force(mut self, f: f64) -> Self {
+        match &mut self {
+            StoreyLaw::Linear => {}
+            StoreyLaw::Bilinear { yield_force, .. } | StoreyLaw::BoucWen { yield_force, .. } => {
+                *yield_force = f
+            }
+        }
+        self
+    }
+
     /// Whether the law dissipates energy by hysteresis.
     pub fn is_inelastic(&self) -> bool {
         self.yield_force().is_some()
