@@ -119,6 +119,7 @@ fn statistics(runs: &[RecordReport], target: Option<f64>) -> SuiteStats {
                     let fit = GapFit::of(&gaps).ok();
                     LevelStats {
                         floors: pair.levels[l].level.floors,
+                        point: pair.levels[l].level.point,
                         peak_left: stats(p, l, |x| x.peak_left),
                         peak_right: stats(p, l, |x| x.peak_right),
                         required_gap: stats(p, l, |x| x.required_gap),
@@ -209,6 +210,26 @@ pub fn report_with(
         _ => {}
     }
     let base = from_value(scenario, label)?;
+    // Codes and the white-noise model see buildings in one line; buildings in plan get the gap each contact
+    // point needed from their runs without contact (their corners, where the façades' closing peaks).
+    if base
+        .scenario
+        .buildings()
+        .iter()
+        .any(|b| b.structure.plan().is_some())
+    {
+        let key = match (&options.white_noise, &options.code) {
+            (Some(_), _) => Some("white_noise"),
+            (None, Some(_)) => Some("code"),
+            _ => None,
+        };
+        if let Some(key) = key {
+            return Err(refuse(
+                key,
+                format!("{key} is not allowed for buildings in plan yet: their separation comes from runs without contact, each contact point's largest closing (give records, or none for the scenario's own)"),
+            ));
+        }
+    }
     let code = codes::CodeInfo::of(&base.scenario, options.code.as_ref())?;
     if let Some(noise) = &options.white_noise {
         return noise::report(&base.scenario, noise, options.target_probability, code)

@@ -74,6 +74,9 @@ impl Stats {
 pub struct LevelStats {
     /// Floors (of the left building, of the right), from 1.
     pub floors: (usize, usize),
+    /// Between buildings in plan: the level's point on the façade, `(x, y)` in the site's frame, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub point: Option<(f64, f64)>,
     /// Peak displacement of the left floor.
     pub peak_left: Stats,
     /// Peak displacement of the right floor.

@@ -71,7 +71,7 @@ fn a_misspelt_key_gets_the_first_allowed_keys_and_their_count() {
     let msg = message(|v| v["ground_motion"]["scael"] = json!(1.0));
     assert_eq!(
         msg,
-        "ground_motion.scael: unknown field `scael` (did you mean `scale`?), expected one of `record`, `file`, `format`, `dt`, `units`, `scale`"
+        "ground_motion.scael: unknown field `scael` (did you mean `scale`?), expected one of `record`, `file`, `format`, `dt`, `units`, `scale`, `y`, `angle`"
     );
 }
 

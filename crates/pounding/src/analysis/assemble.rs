@@ -388,6 +388,18 @@ impl Scenario {
     pub fn with_device(mut self, d: DeviceSpec) -> Result<Self, Error> {
         d.law.law()?;
         let (ends, default_floors) = self.device_ends(&d.between)?;
+        let planned = |b: usize| self.buildings[b].structure.plan().is_some();
+        let in_plan = match ends {
+            DeviceEnds::Buildings { left, right } => planned(left) || planned(right),
+            DeviceEnds::Wall { site } => planned(self.site_building(&self.sites[site])),
+        };
+        if in_plan {
+            return Err(choice(
+                "between",
+                format!("[{:?}, {:?}]", d.between[0], d.between[1]),
+                "buildings in one line: devices on buildings in plan are not modelled yet".into(),
+            ));
+        }
         let storeys = |b: usize| self.buildings[b].structure.storeys();
         let (n_left, n_right) = match ends {
             DeviceEnds::Buildings { left, right } => (storeys(left), storeys(right)),

@@ -6,7 +6,7 @@ use super::model::{ContactRef, Model};
 use super::{Impact, ImpactLoop, Layer, MAX_LOOP_POINTS};
 use crate::element::{ContactPiece, ElementLaw, Engagement, Notice};
 use crate::engine::{EventInfo, Observer, Segment, System};
-use crate::integrate::{Hermite, PeakTracker};
+use crate::integrate::{hermite_peak, Hermite, PeakTracker};
 
 /// The impact a contact element is in (or has just been released from).
 struct Tracker {
@@ -119,6 +119,9 @@ pub(super) struct Impacts {
     pub max_closing: Vec<f64>,
     /// Largest opening (the closing's opposite) of each contact element so far, m (0 at rest).
     pub max_opening: Vec<f64>,
+    /// Largest |displacement| of each contact element's two ends along it so far, m: a floor's, or a point's
+    /// of a floor in plan along the normal (0 for the ground).
+    pub end_peaks: Vec<[f64; 2]>,
     /// The site (floor pair or wall floor) of each contact element, numbered in order: a bumper's layer and
     /// the hard law behind it share one.
     pub pair: Vec<usize>,
@@ -155,6 +158,7 @@ impl Impacts {
             loops: Vec::new(),
             max_closing: vec![0.0; m.contacts.len()],
             max_opening: vec![0.0; m.contacts.len()],
+            end_peaks: vec![[0.0; 2]; m.contacts.len()],
             pair,
             pair_peak: vec![0.0; pairs],
             pair_sum: vec![0.0; pairs],
@@ -257,6 +261,13 @@ impl Observer for Impacts {
                 sys.deformation(c.element, seg.y1),
             );
             let p = Hermite::new(xa, xb, va, vb, h);
+            let el = &sys.elements()[c.element];
+            let n = sys.layout().dofs();
+            for (peak, end) in self.end_peaks[k].iter_mut().zip([el.a, el.b]) {
+                let (ua, ub) = (end.value(seg.y0, 0), end.value(seg.y1, 0));
+                let (wa, wb) = (end.value(seg.y0, n), end.value(seg.y1, n));
+                *peak = peak.max(hermite_peak(ua, ub, wa, wb, h).1);
+            }
             let (hi, lo) = (&mut self.max_closing[k], &mut self.max_opening[k]);
             *hi = hi.max(xb);
             *lo = lo.max(-xb);

@@ -136,6 +136,9 @@ pub struct SiteResponse {
     pub max_opening: Vec<f64>,
     /// Whether the largest opening exceeded the seat ([`super::ContactSite::seat`]; `None` without one).
     pub unseated: Option<bool>,
+    /// Largest |displacement| of each level's two ends along the contact, m: `[left, right]` (a floor's;
+    /// a point's along the normal for a floor in plan; 0 on a wall's side).
+    pub peak_ends: Vec<[f64; 2]>,
 }
 
 /// Peaks of one device, per floor pair ([`super::Device::floors`] order).

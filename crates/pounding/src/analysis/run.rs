@@ -465,6 +465,7 @@ fn site_totals(
             .sum(),
         max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
         max_closing: per(&rec.impacts.max_closing),
+        peak_ends: first.iter().map(|&k| rec.impacts.end_peaks[k]).collect(),
         unseated: s.sites()[site]
             .seat
             .map(|seat| max_opening.iter().any(|&o| o > seat)),

@@ -47,6 +47,10 @@ pub fn cqc_correlation(w_l: f64, z_l: f64, w_r: f64, z_r: f64) -> f64 {
 pub struct Level {
     /// Floors (of the left building, of the right), from 1.
     pub floors: (usize, usize),
+    /// Between buildings in plan: the level's point on the façade at rest, `(x, y)` in the site's frame, m
+    /// (its peaks are those of the point along the façades' normal).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub point: Option<(f64, f64)>,
     /// The contact's gap at rest, m (what the scenario gives the site).
     pub gap: f64,
     /// Peak displacement of the left building's floor, m.
@@ -122,23 +126,40 @@ pub fn separation_with(
             return None;
         };
         let (sl, sr) = (&b[left].structure, &b[right].structure);
-        let (wl, wr) = (sl.modes().omega[0], sr.modes().omega[0]);
-        let rho = cqc_correlation(wl, sl.damping_of_mode(0), wr, sr.damping_of_mode(0));
-        let aligned = free.aligned_floors(left);
+        // Buildings in plan: their first modes along the façades' normal, the peaks of the contact's points.
+        let first = |st: &crate::structure::ShearBuilding| match (st.plan(), &site.plan) {
+            (Some(p), Some(sp)) => {
+                let (wx, wy, _) = p.first_modes();
+                let w = if sp.normal.0 != 0.0 { wx } else { wy };
+                let (a0, a1) = p.rayleigh();
+                (w, a0 / (2.0 * w) + a1 * w / 2.0)
+            }
+            _ => (st.modes().omega[0], st.damping_of_mode(0)),
+        };
+        let ((wl, zl), (wr, zr)) = (first(sl), first(sr));
+        let rho = cqc_correlation(wl, zl, wr, zr);
+        let aligned = free.aligned_floor_pairs(left, right);
         let levels = site
             .levels
             .iter()
             .zip(&lr.max_closing)
-            .map(|(level, &closing)| {
+            .enumerate()
+            .map(|(k, (level, &closing))| {
                 let (i, j) = (level.left.unwrap_or(1), level.right.unwrap_or(1));
-                let pl = r.buildings[left].peak_displacement[i - 1];
-                let pr = r.buildings[right].peak_displacement[j - 1];
+                let (pl, pr) = match site.plan {
+                    Some(_) => (lr.peak_ends[k][0], lr.peak_ends[k][1]),
+                    None => (
+                        r.buildings[left].peak_displacement[i - 1],
+                        r.buildings[right].peak_displacement[j - 1],
+                    ),
+                };
                 let factor = match aligned_factor {
                     Some(f) if aligned.contains(&(i, j)) => f,
                     _ => 1.0,
                 };
                 Level {
                     floors: (i, j),
+                    point: site.plan.as_ref().map(|p| p.points[k]),
                     gap: site.gap,
                     peak_left: pl,
                     peak_right: pr,

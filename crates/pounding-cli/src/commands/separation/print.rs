@@ -1,6 +1,6 @@
 //! The separation report as tables on the terminal: lengths in mm (separation.json holds m).
 
-use crate::output::fmt_sig;
+use crate::output::{fmt_num, fmt_sig};
 use pounding_study::separation::codes::CodeInfo;
 use pounding_study::separation::{PairReport, SeparationReport, Stats};
 
@@ -49,7 +49,7 @@ pub fn report(v: &SeparationReport) {
                     for l in &p.levels {
                         println!(
                             "{:<20} {:>3}-{:<3} {:>12.2}  {:>13.2}  {:>15.2}  {:>8.2}  {:>8.2}  {:>8.2}",
-                            p.between.join("|"),
+                            at(&p.between, l.point),
                             l.floors.0,
                             l.floors.1,
                             MM * pick(&l.peak_left),
@@ -164,7 +164,7 @@ fn table(pairs: &[PairReport]) {
             let x = &l.level;
             println!(
                 "{:<20} {:>3}-{:<3} {:>12.2}  {:>13.2}  {:>15.2}  {:>8.2}  {:>8.2}  {:>8.2}  {:.4}  {:>11}",
-                p.between.join("|"),
+                at(&p.between, x.point),
                 x.floors.0,
                 x.floors.1,
                 MM * x.peak_left,
@@ -197,4 +197,13 @@ fn codes(c: Option<&CodeInfo>) {
             .map_or(String::new(), |s| format!(" under {s}")),
         c.clause
     );
+}
+
+/// A pair's name, with the point of a level between buildings in plan: `a|b (20, 6)`.
+fn at(between: &[String], point: Option<(f64, f64)>) -> String {
+    let name = between.join("|");
+    match point {
+        Some((x, y)) => format!("{name} ({}, {})", fmt_num(x), fmt_num(y)),
+        None => name,
+    }
 }
