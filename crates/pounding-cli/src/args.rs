@@ -295,7 +295,7 @@ pub struct StudyRuns {
 
 #[derive(Args, Debug)]
 #[command(
-    after_help = "Files in --out: scenario.toml, summary.json, response.csv, impacts.csv, impact-loops.csv, energy.csv. With --plots: record.svg, displacement.svg, energy.svg; envelopes.svg and hysteresis.svg (storeys above any bearings: not for decks alone), hysteresis-storeys.svg (two or more inelastic storeys), isolators.svg (isolated buildings, decks on bearings), contact-force.svg and relative-displacement.svg (contacts or walls), impact-loops.svg (an impact happened), impact-restitution.svg (an impact ended), device-force.svg (devices). With --report: report.html. See docs/scenarios.md and docs/figures.md."
+    after_help = "Files in --out: scenario.toml, summary.json, response.csv, impacts.csv, impact-loops.csv, energy.csv. With --plots: record.svg, displacement.svg, energy.svg; envelopes.svg and hysteresis.svg (storeys above any bearings: not for decks alone), hysteresis-storeys.svg (two or more inelastic storeys), isolators.svg (isolated buildings, decks on bearings), contact-force.svg and relative-displacement.svg (contacts or walls), impact-loops.svg (an impact happened), impact-restitution.svg (an impact ended), device-force.svg (devices), plan.svg and corner-orbit.svg (buildings in plan). With --report: report.html. See docs/scenarios.md and docs/figures.md."
 )]
 pub struct RunArgs {
     /// Scenario file (TOML): ground motion, buildings left to right, contacts. See examples/.

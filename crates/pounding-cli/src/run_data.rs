@@ -40,6 +40,10 @@ pub struct BuildingData {
     pub storey_shear: Vec<Vec<f64>>,
     /// Elevation of each floor above the ground (floor 1 first), m.
     pub elevations: Option<Vec<f64>>,
+    /// A building in plan: each floor's mass centre along y, m, at [`RunData::t`] (empty in one line).
+    pub floors_y: Vec<Vec<f64>>,
+    /// A building in plan: each floor's rotation, rad, at [`RunData::t`] (empty in one line).
+    pub rotation: Vec<Vec<f64>>,
 }
 
 /// One contact element (a level) of a site.
@@ -106,6 +110,8 @@ pub struct ImpactData {
     pub consumed: bool,
     /// Which law of its site it is of: `direct`, a bumper's layer, or the hard law behind a consumed one.
     pub layer: pounding::analysis::Layer,
+    /// Its level in the site ([`ContactData::elements`]).
+    pub level: usize,
 }
 
 /// Everything a run wrote, read back.
@@ -165,7 +171,7 @@ impl RunData {
         let impacts = impact_rows
             .iter()
             .map(|r| {
-                let (contact, _) = r.place(&summary).ok_or_else(|| {
+                let (contact, level) = r.place(&summary).ok_or_else(|| {
                     bad(
                         dir,
                         format!(
@@ -188,6 +194,7 @@ impl RunData {
                     max_penetration: r.max_penetration_m,
                     consumed: r.layer == pounding::analysis::Layer::Consumed,
                     layer: r.layer,
+                    level,
                 })
             })
             .collect::<Result<Vec<_>, CliError>>()?;
@@ -239,12 +246,17 @@ impl RunData {
             .iter()
             .zip(h.displacement)
             .zip(h.storey_shear)
-            .map(|((b, floors), storey_shear)| BuildingData {
-                name: b.name.clone(),
-                floors,
-                storey_shear,
-                elevations: Some(b.elevations()),
-            })
+            .zip(h.displacement_y.into_iter().zip(h.rotation))
+            .map(
+                |(((b, floors), storey_shear), (floors_y, rotation))| BuildingData {
+                    name: b.name.clone(),
+                    floors,
+                    storey_shear,
+                    elevations: Some(b.elevations()),
+                    floors_y,
+                    rotation,
+                },
+            )
             .collect();
         let index = |name: &str| summary.buildings.iter().position(|b| b.name == name);
         let contacts = summary

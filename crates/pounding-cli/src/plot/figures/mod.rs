@@ -4,6 +4,7 @@
 mod common;
 mod contacts;
 mod impact;
+mod plan;
 mod response;
 mod storeys;
 
@@ -31,6 +32,8 @@ pub fn run(d: &RunData) -> Vec<Figure> {
     figs.extend(restitution);
     figs.extend(closing);
     figs.extend(devices(d));
+    figs.extend(plan::plan_view(d));
+    figs.extend(plan::corner_orbit(d));
     figs.push(energy(d));
     figs
 }
