@@ -136,6 +136,9 @@ fn impacts<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<'p
         "resting",
         rows.iter().map(|i| i.resting).collect::<Vec<_>>(),
     )?;
+    // Between buildings in plan, the point at rest; NaN in one line.
+    d.set_item("point_x_m", num(|i| i.point_x_m.unwrap_or(f64::NAN)))?;
+    d.set_item("point_y_m", num(|i| i.point_y_m.unwrap_or(f64::NAN)))?;
     Ok(d)
 }
 
@@ -162,6 +165,23 @@ fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<
         }
         d.set_item(key, g)?;
     }
+    // Buildings in plan: their mass centres along y and their rotations; the ground along y.
+    for (key, group) in [
+        ("displacement_y", &h.displacement_y),
+        ("rotation", &h.rotation),
+    ] {
+        let g = PyDict::new(py);
+        for (b, cols) in s.buildings().iter().zip(group) {
+            if b.structure.plan().is_some() {
+                g.set_item(&b.name, matrix(py, cols, n)?)?;
+            }
+        }
+        d.set_item(key, g)?;
+    }
+    d.set_item(
+        "ground_acceleration_y",
+        bytes(py, h.ground_acceleration_y.iter().copied()),
+    )?;
     // Every site alike (contacts and walls): its force per level, and its levels as (left, right) floors,
     // None on a wall's side.
     let (f, levels) = (PyDict::new(py), PyDict::new(py));

@@ -797,3 +797,30 @@ def test_separation_probability_codes_and_risk_match_the_command_line(tmp_path):
         pounding.separation(base, white_noise=0.01)
     with pytest.raises(pounding.InputError, match="cd is required"):
         pounding.separation(base, code={"name": "asce7-22"})
+
+
+def test_buildings_in_plan_run_as_on_the_command_line(tmp_path):
+    """A scenario of buildings in plan (two ground components, a contact from the façades) as a file and as a
+    dict: the command line's summary, its impacts' points, and the histories of y and rotation."""
+    path = ROOT / "examples" / "plan-eccentric.toml"
+    o = cli("run", str(path), "--out", str(tmp_path / "out"), "-q", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = json.loads(o.stdout)
+    scenario = pounding.load_scenario(path)
+    r = pounding.run(scenario)
+    assert without_label(r.summary) == without_label(expected)
+    plan = r.summary["buildings"][0]["plan"]
+    assert len(plan["modes"]) == 3 * r.summary["buildings"][0]["storeys"]
+    assert r.summary["record_y"]["dt"] == r.summary["record"]["dt"]
+    h = r.histories
+    n = h.time.shape[0]
+    assert h.displacement_y["eccentric"].shape == (n, 4) and h.rotation["neighbour"].shape == (n, 3)
+    assert h.ground_acceleration_y.shape == (n,)
+    # The largest sampled rotation is at most the located peak.
+    top = np.abs(h.rotation["eccentric"][:, 3]).max()
+    assert 0 < top <= plan["peak_rotation"][3] * (1 + 1e-12)
+    # Each impact's point is one of its site's points.
+    points = {tuple(p) for p in r.summary["sites"][0]["points"]}
+    assert len(r.impacts["time_s"]) > 0
+    for x, y in zip(r.impacts["point_x_m"], r.impacts["point_y_m"]):
+        assert (x, y) in points

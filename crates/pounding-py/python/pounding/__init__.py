@@ -157,7 +157,10 @@ class Histories:
       contacts between neighbours (floor pairs) and for the walls (the floor facing the wall) alone;
     - ``device_force`` (N, positive pushing apart): for each device by name, samples x floor pairs, in the
       order of ``device_floors``;
-    - ``energy`` (J): ``input``, ``kinetic``, ``strain``, ``structural_damping``, ``hysteretic``, ``contact``.
+    - ``energy`` (J): ``input``, ``kinetic``, ``strain``, ``structural_damping``, ``hysteretic``, ``contact``;
+    - buildings in plan: ``displacement_y`` (m) and ``rotation`` (rad, counterclockwise) of each floor's mass
+      centre, for each building in plan by name (samples x floors; ``displacement`` and the others then hold
+      its mass centres along x), and ``ground_acceleration_y`` (m/s^2; empty unless the ground shakes along y).
     """
 
     time: np.ndarray
@@ -174,6 +177,9 @@ class Histories:
     device_force: Dict[str, np.ndarray]
     device_floors: Dict[str, List[tuple]]
     energy: Dict[str, np.ndarray]
+    displacement_y: Dict[str, np.ndarray]
+    rotation: Dict[str, np.ndarray]
+    ground_acceleration_y: np.ndarray
 
 
 def _histories(h: Dict[str, Any], sites: List[Dict[str, Any]]) -> Histories:
@@ -197,6 +203,9 @@ def _histories(h: Dict[str, Any], sites: List[Dict[str, Any]]) -> Histories:
         device_force={k: _array(v) for k, v in h["device_force"].items()},
         device_floors={k: [tuple(p) for p in v] for k, v in h["device_floors"].items()},
         energy={k: np.frombuffer(v, dtype="<f8") for k, v in h["energy"].items()},
+        displacement_y={k: _array(v) for k, v in h["displacement_y"].items()},
+        rotation={k: _array(v) for k, v in h["rotation"].items()},
+        ground_acceleration_y=np.frombuffer(h["ground_acceleration_y"], dtype="<f8"),
     )
 
 
@@ -207,7 +216,8 @@ class Result:
     wall's side), ``layer`` (``direct``, ``bumper``, or ``consumed``: the hard law behind a consumed bumper),
     ``v_i_m_per_s``, ``e_asked`` (the e its law was built to deliver between free bodies: the contact's e, or
     its table or damping constant at v_i; NaN for an elastic law), ``e_post`` (NaN where an impact gave none), ``peak_force_N``, ``time_of_peak_force_s``,
-    ``duration_s``, ``dissipated_energy_J``, ``max_penetration_m``, ``ended``, ``resting``) and
+    ``duration_s``, ``dissipated_energy_J``, ``max_penetration_m``, ``ended``, ``resting``, ``point_x_m`` and
+    ``point_y_m`` (between buildings in plan, the impact's point at rest; NaN in one line)) and
     ``histories`` (a :class:`Histories`, or None for a run without them)."""
 
     def __init__(self, raw: Dict[str, Any]):

@@ -1,4 +1,5 @@
 //! Integration tests of `pounding-study`: one test binary, one module per subject.
 
 mod messages;
+mod plan;
 mod schemas;
