@@ -53,8 +53,9 @@ pub(super) struct Model<'a> {
     pub per_storey: Vec<usize>,
     /// The storey under each degree of freedom.
     pub storeys: Vec<StoreyRef>,
-    /// The displacements of the corners of every floor in plan, building by building, floor by floor, corner
-    /// by corner (counterclockwise from the plan's `(x_min, y_min)`), along x then along y.
+    /// The displacements of the corners of every floor in plan, building by building, floor by floor: along
+    /// x those of the edges at `y_min` and `y_max`, along y those at `x_min` and `x_max` (the corners of an
+    /// edge move alike along it).
     pub corners: Vec<Point>,
     /// The elements of the lines of every building in plan, building by building, storey by storey.
     pub lines: Vec<usize>,
@@ -162,12 +163,14 @@ impl<'a> Model<'a> {
                     let first = parts.elements.len();
                     parts.in_plan(plan);
                     lines.extend(first..parts.elements.len());
+                    // Two corners on an edge along x move alike along x (so do two on an edge along y,
+                    // along y): the bottom and top edges along x, the left and right edges along y.
+                    let [c0, _, c2, _] = plan.corners();
                     for floor in 1..=plan.floors() {
-                        for c in plan.corners() {
-                            for n in [(1.0, 0.0), (0.0, 1.0)] {
-                                corners.push(plan.point(floor, offset, c, n));
-                            }
-                        }
+                        corners.push(plan.point(floor, offset, c0, (1.0, 0.0)));
+                        corners.push(plan.point(floor, offset, c2, (1.0, 0.0)));
+                        corners.push(plan.point(floor, offset, c0, (0.0, 1.0)));
+                        corners.push(plan.point(floor, offset, c2, (0.0, 1.0)));
                     }
                 }
                 None => {

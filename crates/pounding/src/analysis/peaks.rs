@@ -50,6 +50,12 @@ pub(super) struct Peaks {
     states: Vec<f64>,
     /// Each storey element's deformation on the step (room for the storey with the most).
     curves: Vec<Hermite>,
+    /// The elements of the storeys and lines, each once, and each element's deformation and rate at the
+    /// step's two ends `[x0, v0, x1, v1]` (read once per step: a line of a plan serves two storeys).
+    used: Vec<usize>,
+    ends: Vec<[f64; 4]>,
+    /// Each of those elements' force (of its law) at the step's end, N.
+    forces: Vec<f64>,
 }
 
 impl Peaks {
@@ -73,6 +79,19 @@ impl Peaks {
             corner: vec![Peak::default(); m.corners.len()],
             states: room(m),
             curves: vec![Hermite::new(0.0, 0.0, 0.0, 0.0, 1.0); most],
+            used: {
+                let mut u: Vec<usize> = m
+                    .storeys
+                    .iter()
+                    .flat_map(|s| s.elements.iter().map(|&(e, _)| e))
+                    .chain(m.lines.iter().copied())
+                    .collect();
+                u.sort_unstable();
+                u.dedup();
+                u
+            },
+            ends: vec![[0.0; 4]; m.system.elements().len()],
+            forces: vec![0.0; m.system.elements().len()],
         }
     }
 
@@ -102,6 +121,8 @@ impl Peaks {
             storeys,
             curves,
             states: room,
+            ends,
+            forces,
             ..
         } = self;
         let st = &storeys[i];
@@ -112,9 +133,9 @@ impl Peaks {
         let peak_drift = hermite_peak(xa, xb, va, vb, h).1;
         let mut end = 0.0;
         for (k, &(e, c)) in st.elements.iter().enumerate() {
-            let ((pa, qa), (pb, qb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
+            let [pa, qa, pb, qb] = ends[e];
             curves[k] = Hermite::new(pa, pb, qa, qb, h);
-            end += c * sys.elements()[e].force(pb, qb, &y1[l.block(e)]);
+            end += c * forces[e];
         }
         let mut shear = end.abs();
         for s in curve.extrema() {
@@ -146,13 +167,18 @@ impl Observer for Peaks {
         let (y0, y1) = (seg.y0, seg.y1);
         let h = seg.t1 - seg.t0;
         let n = l.dofs();
+        for &e in &self.used {
+            let ((xa, va), (xb, vb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
+            self.ends[e] = [xa, va, xb, vb];
+            self.forces[e] = sys.elements()[e].force(xb, vb, &y1[l.block(e)]);
+        }
         for i in 0..n {
             let (s, u) = hermite_peak(y0[l.u(i)], y1[l.u(i)], y0[l.v(i)], y1[l.v(i)], h);
             self.displacement[i].offer(u, seg.t0 + s * h);
             self.storey(seg, i);
         }
         for (k, &e) in self.lines.iter().enumerate() {
-            let ((xa, va), (xb, vb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
+            let [xa, va, xb, vb] = self.ends[e];
             self.line_drift[k] = self.line_drift[k].max(hermite_peak(xa, xb, va, vb, h).1);
         }
         for (p, peak) in self.corners.iter().zip(&mut self.corner) {

@@ -317,7 +317,7 @@ fn building_responses(
             };
             let plan = st.plan().map(|p| {
                 let pr = plan_response(model, peaks, y, (b, p), corner, &line_at, &hysteretic);
-                corner += 8 * n;
+                corner += 4 * n;
                 pr
             });
             let ductility = match &plan {
@@ -373,12 +373,12 @@ fn plan_response(
     let at = |d: PlanDof| (1..=n).map(move |f| o + p.dof(f, d));
     let peak = |d: PlanDof, v: &[f64]| at(d).map(|i| v[i]).collect::<Vec<f64>>();
     let disp: Vec<f64> = values(&peaks.displacement);
+    // Per floor: along x the edges at y_min and y_max, along y those at x_min and x_max (Model::corners);
+    // corners counterclockwise from (x_min, y_min).
     let corners: Vec<[(f64, f64); 4]> = (0..n)
         .map(|f| {
-            std::array::from_fn(|c| {
-                let k = corner + 8 * f + 2 * c;
-                (peaks.corner[k].value, peaks.corner[k + 1].value)
-            })
+            let e = |j: usize| peaks.corner[corner + 4 * f + j].value;
+            [(e(0), e(2)), (e(0), e(3)), (e(1), e(3)), (e(1), e(2))]
         })
         .collect();
     let ratio = |c: f64, m: f64| (m > 0.0).then_some(c / m);

@@ -28,10 +28,24 @@ pub struct Point {
 impl Point {
     /// The point of `terms` `(degree of freedom, coefficient)`, at most three (the rest are dropped).
     pub fn new(terms: &[(usize, f64)]) -> Self {
-        let mut t = [(0, 0.0); 3];
+        // Unused slots repeat the first degree of freedom with weight 0, so that a value reads all three
+        // without a branch.
+        let first = terms.first().map_or(0, |t| t.0);
+        let mut t = [(first, 0.0); 3];
         let len = terms.len().min(3);
         t[..len].copy_from_slice(&terms[..len]);
         Self { terms: t, len }
+    }
+
+    /// `sum c_k y[offset + i_k]`: the point's displacement (or velocity) in `y`, all three slots read (a
+    /// point of no terms reads 0).
+    #[inline(always)]
+    pub fn value(&self, y: &[f64], offset: usize) -> f64 {
+        if self.len == 0 {
+            return 0.0;
+        }
+        let [(i0, c0), (i1, c1), (i2, c2)] = self.terms;
+        c0 * y[offset + i0] + c1 * y[offset + i1] + c2 * y[offset + i2]
     }
 
     /// Its terms.
@@ -68,7 +82,7 @@ impl End {
         match self {
             End::Ground => 0.0,
             End::Dof(i) => y[offset + i],
-            End::Point(p) => p.terms().iter().map(|&(i, c)| c * y[offset + i]).sum(),
+            End::Point(p) => p.value(y, offset),
         }
     }
 }

@@ -224,7 +224,7 @@ impl<'a> System<'a> {
     }
 
     /// Deformation `x = u_a - u_b` (m) and its rate (m/s) of element `e` in state `y`.
-    #[inline]
+    #[inline(always)]
     pub fn deformation(&self, e: usize, y: &[f64]) -> (f64, f64) {
         let el = &self.elements[e];
         let n = self.layout.dofs();
@@ -244,13 +244,18 @@ impl<'a> System<'a> {
         let n = self.layout.dofs();
         match (el.a, el.b) {
             (End::Point(_), _) | (_, End::Point(_)) => {
-                let shift = |p: crate::element::Point| -> Vec<(usize, f64)> {
-                    p.terms().iter().map(|&(i, c)| (n + i, c)).collect()
+                // The velocities' terms: the same weights, shifted past the displacements (no allocation).
+                let shift = |p: crate::element::Point| {
+                    let mut t = [(0, 0.0); 3];
+                    for (s, &(i, c)) in t.iter_mut().zip(p.terms()) {
+                        *s = (n + i, c);
+                    }
+                    crate::element::Point::new(&t[..p.terms().len()])
                 };
                 let (ta, tb) = (el.a.terms(), el.b.terms());
                 (
                     dense.combination(ta.terms()) - dense.combination(tb.terms()),
-                    dense.combination(&shift(ta)) - dense.combination(&shift(tb)),
+                    dense.combination(shift(ta).terms()) - dense.combination(shift(tb).terms()),
                 )
             }
             _ => {
