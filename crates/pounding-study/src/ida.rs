@@ -317,8 +317,14 @@ impl Ida {
                         format!("[intensity] damping = {damping} is not allowed: 0 <= damping < 1"),
                     ));
                 }
+                // A building in plan: its fundamental along x, the record's direction (an IDA's suite is
+                // along x, or along an angle from it).
+                let period = match b.structure.plan() {
+                    Some(p) => 2.0 * std::f64::consts::PI / p.fundamental_x(),
+                    None => b.structure.modes().periods()[0],
+                };
                 Measure::Sa {
-                    period: b.structure.modes().periods()[0],
+                    period,
                     building,
                     damping,
                 }

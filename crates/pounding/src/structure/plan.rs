@@ -414,6 +414,12 @@ impl Plan {
         }
     }
 
+    /// The circular frequency (rad/s) of the lowest mode that moves mostly along x (the lowest mode if none
+    /// does): the fundamental of the building along x.
+    pub fn fundamental_x(&self) -> f64 {
+        self.modes.omega[self.x_modes().0 - 1]
+    }
+
     /// The floor masses, kg.
     pub fn masses(&self) -> &[f64] {
         &self.masses
