@@ -7,6 +7,7 @@
 //! ([`summary`]), the tables ([`tables`]), the figures and the impacts.
 
 mod markup;
+mod plan;
 mod summary;
 mod tables;
 

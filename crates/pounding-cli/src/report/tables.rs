@@ -12,6 +12,10 @@ use pounding_study::summary::{
 pub fn modes(h: &mut String, s: &RunSummary) {
     h.push_str("\n<h2 id=\"modes\">Modal properties</h2>");
     for (k, b) in s.buildings.iter().enumerate() {
+        if let Some(p) = &b.plan {
+            super::plan::modes(h, k, b, p);
+            continue;
+        }
         let rows: Vec<Vec<String>> = b
             .periods
             .iter()
@@ -110,6 +114,9 @@ pub fn response(h: &mut String, s: &RunSummary) {
         match b.form() {
             Form::Deck => bearings(h, k, b),
             _ => storeys(h, k, b),
+        }
+        if let Some(p) = &b.plan {
+            super::plan::response(h, k, b, p);
         }
     }
 }
