@@ -450,3 +450,117 @@ fn two_eccentric_buildings_pounding_in_plan_balance_their_energy() {
     assert_eq!(along, vec![4.0, 12.0]);
     assert!(r.buildings[0].plan.as_ref().unwrap().peak_rotation[2] > 0.0);
 }
+
+/// A wall beside a building in plan, struck on the line of its mass centre, is the wall beside the building
+/// in one line: on the east and west (shaken along x: to the last digit) and on the north and south (the same
+/// building turned a quarter, shaken along y: to the tolerance, since its x components then count in the
+/// error norm).
+#[test]
+fn walls_beside_a_building_in_plan_are_the_walls_of_the_building_in_one_line() {
+    use pounding::analysis::{Side, WallSpec};
+    let rec = Record::el_centro_1940();
+    let zero = Record::new("zero", rec.dt(), rec.t0(), vec![0.0; rec.npts()]).unwrap();
+    let wall = |side: Side, points: Option<Vec<f64>>| WallSpec {
+        name: format!("wall-{}", side.name()),
+        facing: "A".into(),
+        side,
+        gap: 0.015625,
+        floors: Some(vec![2]),
+        points,
+        contact: contact(Model::Papi),
+        bumper: None,
+        seat: None,
+    };
+    let k = [3.0e8, 2.0e8];
+    let line_building =
+        ShearBuilding::new(vec![4.0e5, 3.0e5], k.to_vec(), vec![3.0; 2], 0.05).unwrap();
+    // Along x: one line along x through the middle; along y (turned): one line along y through it.
+    let planned = |along_y: bool| {
+        let l = |direction, at, part: f64| Line {
+            direction,
+            at,
+            stiffnesses: k.iter().map(|k| k * part).collect(),
+            laws: vec![StoreyLaw::Linear; 2],
+        };
+        let (main, other) = if along_y {
+            (LineDirection::Y, LineDirection::X)
+        } else {
+            (LineDirection::X, LineDirection::Y)
+        };
+        let mut spec = PlanSpec {
+            size: (10.0, 10.0),
+            origin: (0.0, 0.0),
+            centres: None,
+            inertias: None,
+            lines: vec![l(main, 5.0, 1.0), l(other, 0.0, 0.7), l(other, 10.0, 0.7)],
+            damping_modes: None,
+        };
+        if along_y {
+            // Damped on its two modes along y, as the building in one line on its two.
+            let p = Plan::new(&[4.0e5, 3.0e5], spec.clone(), 0.05).unwrap();
+            let y: Vec<usize> = (0..6).filter(|&r| p.participation()[r].1 > 1e-9).collect();
+            spec.damping_modes = Some((y[0] + 1, y[1] + 1));
+        }
+        ShearBuilding::in_plan(vec![4.0e5, 3.0e5], vec![3.0; 2], 0.05, spec).unwrap()
+    };
+    let one = |st: ShearBuilding| {
+        vec![Building {
+            name: "A".into(),
+            structure: st,
+        }]
+    };
+    for (line_side, plan_side, along_y) in [
+        (Side::Right, Side::Right, false),
+        (Side::Left, Side::Left, false),
+        (Side::Right, Side::North, true),
+        (Side::Left, Side::South, true),
+    ] {
+        let r1 = Scenario::new(one(line_building.clone()), rec.clone())
+            .unwrap()
+            .with_duration(5.0)
+            .unwrap()
+            .with_wall(wall(line_side, None))
+            .unwrap()
+            .run()
+            .unwrap();
+        let (x, y) = if along_y {
+            (&zero, &rec)
+        } else {
+            (&rec, &zero)
+        };
+        let mut s = Scenario::new(one(planned(along_y)), x.clone())
+            .unwrap()
+            .with_duration(5.0)
+            .unwrap();
+        if along_y {
+            s = s.with_ground_y(y.clone()).unwrap();
+        }
+        let r2 = s
+            .with_wall(wall(plan_side, Some(vec![5.0])))
+            .unwrap()
+            .run()
+            .unwrap();
+        let what = format!("{} wall", plan_side.name());
+        assert!(!r1.impacts.is_empty(), "{what}: the floor strikes it");
+        assert_eq!(r1.impacts.len(), r2.impacts.len(), "{what}: impacts");
+        let tol = if along_y { 1e-6 } else { 1e-12 };
+        let turned = |r: &Results| match along_y {
+            false => r.buildings[0].peak_displacement.clone(),
+            true => r.buildings[0]
+                .plan
+                .as_ref()
+                .unwrap()
+                .peak_displacement_y
+                .clone(),
+        };
+        for (a, b) in r1.buildings[0].peak_displacement.iter().zip(turned(&r2)) {
+            assert!(close(*a, b, tol), "{what}: {a} vs {b}");
+        }
+        for (a, b) in r1.impacts.iter().zip(&r2.impacts) {
+            assert!(
+                close(a.v_i, b.v_i, tol) && close(a.peak_force, b.peak_force, tol),
+                "{what}"
+            );
+        }
+    }
+}
