@@ -202,6 +202,18 @@ fn inelastic(s: &pounding::analysis::Scenario) -> Vec<String> {
         .collect()
 }
 
+/// A base scenario of one ground component (or one along an angle): an IDA scales each record of its suite
+/// alone.
+fn one_component(path: &Path, base: &crate::input::Loaded) -> Result<(), InputError> {
+    if base.doc.ground_motion.y.is_some() {
+        return Err(err(
+            path,
+            "the base scenario has [ground_motion.y]: an IDA scales each record of its suite alone, which would pair every one with that same record along y; remove it (a record along an angle, ground_motion.angle, is scaled as one)",
+        ));
+    }
+    Ok(())
+}
+
 fn err(path: &Path, msg: impl std::fmt::Display) -> InputError {
     InputError::new(format!("{}: {msg}", path.display()))
 }
@@ -229,12 +241,7 @@ impl Ida {
         };
         let base_file = ScenarioFile::read(&base_path)?;
         let base_loaded = base_file.load()?;
-        if base_loaded.doc.ground_motion.y.is_some() {
-            return Err(err(
-                path,
-                "the base scenario has [ground_motion.y]: an IDA scales each record of its suite alone, which would pair every one with that same record along y; remove it (a record along an angle, ground_motion.angle, is scaled as one)",
-            ));
-        }
+        one_component(path, &base_loaded)?;
         let names: Vec<String> = base_loaded
             .scenario
             .buildings()
