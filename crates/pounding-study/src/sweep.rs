@@ -56,17 +56,11 @@ fn prepare_one(value: &Value, label: String, cache: &RecordCache) -> Prepared {
     };
     // The key is the document with its defaults written out, so `gap = 1` and `gap = 1.0` are one run.
     let mut canonical = serde_json::to_value(&doc).unwrap_or(Value::Null);
-    let spec = match doc.ground_motion.spec() {
-        Ok(s) => s,
-        Err(e) => {
-            return Prepared {
-                key: key_of(&canonical),
-                label,
-                job: Err(dict_message(Some(e.key), e.message)),
-            }
-        }
-    };
-    let spec_y = match doc.ground_motion.spec_y() {
+    let specs = doc
+        .ground_motion
+        .spec()
+        .and_then(|x| Ok((x, doc.ground_motion.spec_y()?)));
+    let (spec, spec_y) = match specs {
         Ok(s) => s,
         Err(e) => {
             return Prepared {
