@@ -564,3 +564,32 @@ fn walls_beside_a_building_in_plan_are_the_walls_of_the_building_in_one_line() {
         }
     }
 }
+
+/// The separation of a symmetric pair in plan, at a point on the line of the mass centres, is that of the
+/// pair in one line: the same peaks, required gap and rules.
+#[test]
+fn the_separation_of_a_symmetric_pair_in_plan_is_that_of_the_pair_in_one_line() {
+    use pounding::analysis::RunOptions;
+    let (one, plan) = pair(Model::Papi, false);
+    let opts = RunOptions::summary_only();
+    let (a, b) = (
+        pounding::separation::separation(&one, None, &opts).unwrap(),
+        pounding::separation::separation(&plan, None, &opts).unwrap(),
+    );
+    let (la, lb) = (&a[0].levels, &b[0].levels);
+    assert_eq!(la.len(), lb.len());
+    for (x, y) in la.iter().zip(lb) {
+        assert_eq!(y.point, Some((20.0, 6.0)));
+        for (p, q) in [
+            (x.peak_left, y.peak_left),
+            (x.peak_right, y.peak_right),
+            (x.required_gap, y.required_gap),
+            (x.srss, y.srss),
+            (x.ddc, y.ddc),
+            (x.rho, y.rho),
+        ] {
+            assert!(close(p, q, 1e-12), "{p} vs {q}");
+        }
+        assert!(x.required_gap > 0.0 && y.required_gap <= y.peak_left + y.peak_right);
+    }
+}
