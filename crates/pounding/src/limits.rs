@@ -12,6 +12,9 @@ pub const MAX_BUILDINGS: usize = 50;
 /// and 0.55 ms per integration step.
 pub const MAX_FLOORS: usize = 2000;
 
+/// Largest number of load-resisting lines of a building in plan.
+pub const MAX_LINES: usize = 100;
+
 /// Largest number of samples of a ground-motion record (80 MB of accelerations).
 pub const MAX_RECORD_SAMPLES: usize = 10_000_000;
 
@@ -32,7 +35,8 @@ pub const MAX_HISTORY_VALUES: usize = 10_000_000;
 pub const MAX_WORK: f64 = 5e7;
 
 /// Checks the size of a row from the number of floors of each building, before any building is analysed:
-/// 1 to [`MAX_BUILDINGS`] buildings with at most [`MAX_FLOORS`] floors in all.
+/// 1 to [`MAX_BUILDINGS`] buildings with at most [`MAX_FLOORS`] floors in all (the caller counts a floor in
+/// plan three times: its x, y and rotation).
 pub fn check_row(floors: &[usize]) -> Result<(), crate::Error> {
     let total: usize = floors.iter().sum();
     if floors.is_empty() || floors.len() > MAX_BUILDINGS {
@@ -46,7 +50,7 @@ pub fn check_row(floors: &[usize]) -> Result<(), crate::Error> {
         return Err(crate::Error::Choice {
             name: "building",
             value: format!("{total} floors in {} buildings", floors.len()),
-            allowed: "at most 2000 floors in a row, all buildings together (limits::MAX_FLOORS)"
+            allowed: "at most 2000 floors in a row, all buildings together, a floor in plan counting three (limits::MAX_FLOORS)"
                 .into(),
         });
     }

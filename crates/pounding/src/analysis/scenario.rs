@@ -83,7 +83,7 @@ impl Scenario {
     /// A scenario with the buildings (left to right; at least one, unique names) under `record`, for the
     /// record's duration, output every [`DEFAULT_OUTPUT_DT`], at [`DEFAULT_TOLERANCE`].
     pub fn new(buildings: Vec<Building>, record: Record) -> Result<Self, Error> {
-        let floors: Vec<usize> = buildings.iter().map(|b| b.structure.storeys()).collect();
+        let floors: Vec<usize> = buildings.iter().map(|b| b.structure.dofs()).collect();
         crate::limits::check_row(&floors)?;
         for (i, b) in buildings.iter().enumerate() {
             if buildings[..i].iter().any(|o| o.name == b.name) {

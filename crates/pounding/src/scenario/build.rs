@@ -206,7 +206,11 @@ impl ScenarioDoc {
             ));
         }
         // The size of the row, before any building's modes are computed.
-        let floors: Vec<usize> = self.building.iter().map(|b| b.masses.len()).collect();
+        let floors: Vec<usize> = self
+            .building
+            .iter()
+            .map(|b| b.masses.len() * if b.plan.is_some() { 3 } else { 1 })
+            .collect();
         crate::limits::check_row(&floors).map_err(|e| lib("building.0", "", e))?;
         let mut buildings = Vec::new();
         for (i, b) in self.building.iter().enumerate() {

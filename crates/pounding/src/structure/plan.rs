@@ -105,8 +105,14 @@ impl Plan {
         } = spec;
         let n = masses.len();
         let (a, b) = size;
-        check("plan.size", a, a > 0.0, "a plan a x b with a, b > 0 (m)")?;
-        check("plan.size", b, b > 0.0, "a plan a x b with a, b > 0 (m)")?;
+        for side in [a, b] {
+            check(
+                "plan.size",
+                side,
+                side > 0.0 && side.is_finite(),
+                "a plan a x b with finite a, b > 0 (m)",
+            )?;
+        }
         check(
             "plan.position",
             origin.0,
@@ -522,6 +528,13 @@ const PARTICIPATES: f64 = 1e-9;
 
 /// The lines checked: at least one, each inside the plan, one stiffness and law per storey, stiffnesses > 0.
 fn check_lines(lines: &[Line], storeys: usize, (a, b): (f64, f64)) -> Result<(), Error> {
+    if lines.len() > crate::limits::MAX_LINES {
+        return Err(Error::Choice {
+            name: "line",
+            value: format!("{} lines", lines.len()),
+            allowed: "at most 100 load-resisting lines per building (limits::MAX_LINES)".into(),
+        });
+    }
     if lines.is_empty() {
         return Err(Error::Choice {
             name: "line",
@@ -688,6 +701,19 @@ mod tests {
         .unwrap_err()
         .to_string();
         assert!(e.contains("singular"), "{e}");
+        // Infinite stiffnesses, and more lines than a plan may have.
+        let mut stiff = line(LineDirection::X, 0.0);
+        stiff.stiffnesses = vec![f64::INFINITY];
+        let e = make(vec![stiff]).unwrap_err().to_string();
+        assert!(
+            e.starts_with("line.stiffnesses = inf is not allowed"),
+            "{e}"
+        );
+        let many = (0..=crate::limits::MAX_LINES)
+            .map(|k| line(LineDirection::X, k as f64 * 0.05))
+            .collect();
+        let e = make(many).unwrap_err().to_string();
+        assert!(e.starts_with("line = 101 lines is not allowed"), "{e}");
         // Lines through one point cannot hold the rotation.
         let e = make(vec![
             line(LineDirection::X, 4.0),
