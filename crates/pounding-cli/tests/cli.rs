@@ -4188,3 +4188,66 @@ fn no_clamped_hunt_crossley_impact_delivers_more_than_one_over_chi() {
         }
     }
 }
+
+/// Buildings in plan as a user runs them: a record along y read from a file beside the scenario (from
+/// another folder), the columns of y and rotation, the contact points in the impacts and the force columns,
+/// the figures of the plan.
+#[test]
+fn buildings_in_plan_run_with_their_columns_points_and_figures() {
+    let dir = tmp("plan");
+    // The record along y: 8 s of a 1.5 m/s^2 sine, as two columns in m/s^2.
+    let mut rec = String::from("# units = \"m/s2\"\n");
+    for k in 0..400 {
+        let t = 0.02 * (k + 1) as f64;
+        rec += &format!("{t} {}\n", 0.5 * (3.0 * (7.0 * t).sin()));
+    }
+    std::fs::write(dir.join("along-y.txt"), rec).unwrap();
+    let text = std::fs::read_to_string(example("plan-eccentric.toml"))
+        .unwrap()
+        .replace(
+            "record = \"synthetic-1\"             # along y: a synthetic motion (20 s at 0.01 s), on one grid with x",
+            "file = \"along-y.txt\"",
+        );
+    assert!(text.contains("file = \"along-y.txt\""));
+    std::fs::write(dir.join("plan.toml"), text).unwrap();
+    let out = dir.join("out");
+    // From the repository's folder, not the scenario's: the record along y is found beside the scenario.
+    let o = pounding(&[
+        "run",
+        dir.join("plan.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+        "--plots",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let plan = &summary["buildings"][0]["plan"];
+    assert_eq!(plan["modes"].as_array().unwrap().len(), 12);
+    let pga_y = f(&summary["record_y"], "pga");
+    assert!(pga_y > 1.49 && pga_y <= 1.5, "{pga_y}");
+    let header = std::fs::read_to_string(out.join("response.csv")).unwrap();
+    let header = header.lines().next().unwrap();
+    for col in [
+        "ground_acceleration_y_m_per_s2",
+        "eccentric_floor4_displacement_y_m",
+        "neighbour_floor3_rotation_rad",
+        "eccentric|neighbour_floors1-1_y6_force_N",
+        "eccentric|neighbour_floors3-3_y16_force_N",
+    ] {
+        assert!(header.split(',').any(|c| c == col), "{col} in {header}");
+    }
+    let impacts = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    let mut lines = impacts.lines();
+    assert!(lines.next().unwrap().ends_with("point_x_m,point_y_m"));
+    for row in lines {
+        assert!(
+            row.ends_with(",24.0,6.0") || row.ends_with(",24.0,16.0"),
+            "{row}"
+        );
+    }
+    for fig in ["plan.svg", "corner-orbit.svg"] {
+        assert!(out.join(fig).is_file(), "{fig}");
+    }
+}

@@ -232,12 +232,18 @@ impl ScenarioFile {
     }
 }
 
-/// A relative `ground_motion.file` is relative to `base`: rewritten so that the value runs from anywhere.
+/// Where a scenario names record files: `ground_motion.file`, and `ground_motion.y.file` (the record along y).
+pub const RECORD_FILES: [&str; 2] = ["/ground_motion/file", "/ground_motion/y/file"];
+
+/// A relative `ground_motion.file` (or `ground_motion.y.file`) is relative to `base`: rewritten so that the
+/// value runs from anywhere.
 pub fn resolve_record_file(value: &mut Value, base: &Path) {
-    if let Some(Value::String(f)) = value.pointer_mut("/ground_motion/file") {
-        let p = Path::new(f.as_str());
-        if p.is_relative() {
-            *f = base.join(p).to_string_lossy().into_owned();
+    for at in RECORD_FILES {
+        if let Some(Value::String(f)) = value.pointer_mut(at) {
+            let p = Path::new(f.as_str());
+            if p.is_relative() {
+                *f = base.join(p).to_string_lossy().into_owned();
+            }
         }
     }
 }
