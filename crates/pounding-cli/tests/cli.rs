@@ -4252,3 +4252,45 @@ fn buildings_in_plan_run_with_their_columns_points_and_figures() {
         assert!(out.join(fig).is_file(), "{fig}");
     }
 }
+
+/// Buildings on soil as a user runs them: the foundation in the summary and the columns, the periods on the
+/// soil longer than the fixed base's, and a foundation given both springs and soil refused naming the key.
+#[test]
+fn buildings_on_soil_report_their_foundation() {
+    let dir = tmp("soil");
+    let out = dir.join("out");
+    let o = pounding(&[
+        "run",
+        &example("soil-pair.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    for b in summary["buildings"].as_array().unwrap() {
+        let found = &b["foundation"];
+        let (t_soil, t_fixed) = (
+            found["flexible_periods"][0].as_f64().unwrap(),
+            b["periods"][0].as_f64().unwrap(),
+        );
+        assert!(t_soil > t_fixed, "{t_soil} vs {t_fixed}");
+        assert!(f(found, "peak_sway") > 0.0 && f(found, "peak_rocking") > 0.0);
+    }
+    let header = std::fs::read_to_string(out.join("response.csv")).unwrap();
+    assert!(header
+        .lines()
+        .next()
+        .unwrap()
+        .ends_with("flexible_foundation_sway_m,flexible_foundation_rocking_rad"));
+    let text = std::fs::read_to_string(example("soil-pair.toml"))
+        .unwrap()
+        .replacen("vs = 150.0", "vs = 150.0\nkx = 1e9", 1);
+    let msg = refused_scenario(&dir, &text);
+    assert!(
+        msg.contains("building.0.foundation.kx")
+            || msg.contains("the springs given (kx, ktheta, cx, ctheta) or the soil"),
+        "{msg}"
+    );
+}

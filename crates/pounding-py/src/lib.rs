@@ -184,6 +184,14 @@ fn histories<'py>(py: Python<'py>, s: &Scenario, r: &Results) -> PyResult<Bound<
         "ground_acceleration_y",
         bytes(py, h.ground_acceleration_y.iter().copied()),
     )?;
+    // Buildings on a foundation: its sway and rocking (samples x 2).
+    let g = PyDict::new(py);
+    for (b, cols) in s.buildings().iter().zip(&h.foundation) {
+        if b.structure.foundation().is_some() {
+            g.set_item(&b.name, matrix(py, cols, n)?)?;
+        }
+    }
+    d.set_item("foundation", g)?;
     // Every site alike (contacts and walls): its force per level, and its levels as (left, right) floors,
     // None on a wall's side.
     let (f, levels) = (PyDict::new(py), PyDict::new(py));

@@ -447,6 +447,13 @@ pub enum Column {
         /// Index of the floor.
         floor: usize,
     },
+    /// A foundation's sway (`part` 0, m) or rocking (`part` 1, rad).
+    Foundation {
+        /// Index of the building.
+        building: usize,
+        /// 0: sway, 1: rocking.
+        part: usize,
+    },
 }
 
 impl Column {
@@ -478,6 +485,11 @@ impl Column {
             if b.plan.is_some() {
                 out.extend(floors(b).map(|floor| Column::DisplacementY { building, floor }));
                 out.extend(floors(b).map(|floor| Column::Rotation { building, floor }));
+            }
+        }
+        for (building, b) in s.buildings.iter().enumerate() {
+            if b.foundation.is_some() {
+                out.extend((0..2).map(|part| Column::Foundation { building, part }));
             }
         }
         out
@@ -542,6 +554,11 @@ impl Column {
                 s.buildings[building].name,
                 floor + 1
             ),
+            Column::Foundation { building, part } => format!(
+                "{}_foundation_{}",
+                s.buildings[building].name,
+                ["sway_m", "rocking_rad"][part]
+            ),
         }
     }
 
@@ -560,6 +577,7 @@ impl Column {
             Column::GroundAccelerationY => &h.ground_acceleration_y,
             Column::DisplacementY { building, floor } => &h.displacement_y[building][floor],
             Column::Rotation { building, floor } => &h.rotation[building][floor],
+            Column::Foundation { building, part } => &h.foundation[building][part],
         }
     }
 
@@ -578,6 +596,7 @@ impl Column {
             Column::GroundAccelerationY => &mut h.ground_acceleration_y,
             Column::DisplacementY { building, floor } => &mut h.displacement_y[building][floor],
             Column::Rotation { building, floor } => &mut h.rotation[building][floor],
+            Column::Foundation { building, part } => &mut h.foundation[building][part],
         }
     }
 }
@@ -680,6 +699,10 @@ pub fn read_response(r: impl Read, s: &RunSummary) -> Result<Histories, TableErr
         device_force: per(&|i| s.devices[i].floors.len(), s.devices.len()),
         displacement_y: per(&plan_floors, s.buildings.len()),
         rotation: per(&plan_floors, s.buildings.len()),
+        foundation: per(
+            &|b| 2 * usize::from(s.buildings[b].foundation.is_some()),
+            s.buildings.len(),
+        ),
         ..Histories::default()
     };
     let mut record = csv::StringRecord::new();

@@ -160,7 +160,8 @@ class Histories:
     - ``energy`` (J): ``input``, ``kinetic``, ``strain``, ``structural_damping``, ``hysteretic``, ``contact``;
     - buildings in plan: ``displacement_y`` (m) and ``rotation`` (rad, counterclockwise) of each floor's mass
       centre, for each building in plan by name (samples x floors; ``displacement`` and the others then hold
-      its mass centres along x), and ``ground_acceleration_y`` (m/s^2; empty unless the ground shakes along y).
+      its mass centres along x), and ``ground_acceleration_y`` (m/s^2; empty unless the ground shakes along y);
+    - buildings on a foundation: ``foundation``, for each by name, samples x 2: its sway (m) and rocking (rad).
     """
 
     time: np.ndarray
@@ -180,6 +181,7 @@ class Histories:
     displacement_y: Dict[str, np.ndarray]
     rotation: Dict[str, np.ndarray]
     ground_acceleration_y: np.ndarray
+    foundation: Dict[str, np.ndarray]
 
 
 def _histories(h: Dict[str, Any], sites: List[Dict[str, Any]]) -> Histories:
@@ -206,6 +208,7 @@ def _histories(h: Dict[str, Any], sites: List[Dict[str, Any]]) -> Histories:
         displacement_y={k: _array(v) for k, v in h["displacement_y"].items()},
         rotation={k: _array(v) for k, v in h["rotation"].items()},
         ground_acceleration_y=np.frombuffer(h["ground_acceleration_y"], dtype="<f8"),
+        foundation={k: _array(v) for k, v in h["foundation"].items()},
     )
 
 

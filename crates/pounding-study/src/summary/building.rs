@@ -88,6 +88,90 @@ pub struct BuildingSummary {
     /// ductility of its lines and their hysteretic energy summed.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plan: Option<super::PlanSummary>,
+    /// For a building on a foundation over soil springs: the foundation, the modes on it and its response
+    /// (the fields above are then its floors' displacements relative to the free field, rocking included, and
+    /// its storeys' drifts without it; its periods are the fixed-base ones its damping is fixed on).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub foundation: Option<FoundationSummary>,
+}
+
+/// A building's foundation on the soil, the modes on it and its response.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct FoundationSummary {
+    /// Mass, kg.
+    pub mass: f64,
+    /// Moment of inertia about the rocking axis (a trapped soil mass included), kg m^2.
+    pub inertia: f64,
+    /// Sway stiffness, N/m.
+    pub kx: f64,
+    /// Rocking stiffness, N m/rad.
+    pub ktheta: f64,
+    /// Sway dashpot, N s/m.
+    pub cx: f64,
+    /// Rocking dashpot, N m s/rad.
+    pub ctheta: f64,
+    /// The periods on the foundation (floors, sway and rocking together), s, lowest mode first.
+    pub flexible_periods: Vec<f64>,
+    /// Each of those modes' damping ratio `phi^T C phi / 2 w` (the soil's dashpots and the building's
+    /// Rayleigh damping; the damping is not classical, so this is an estimate), dimensionless.
+    pub flexible_damping_ratios: Vec<f64>,
+    /// Largest |sway| of the foundation relative to the free-field ground, m.
+    pub peak_sway: f64,
+    /// Largest |rocking|, rad.
+    pub peak_rocking: f64,
+    /// Largest |force| of the sway spring, N.
+    pub peak_soil_force: f64,
+    /// Largest |moment| of the rocking spring, N m.
+    pub peak_soil_moment: f64,
+    /// Sway at the end of the analysis, m (signed).
+    pub residual_sway: f64,
+    /// Rocking at the end of the analysis, rad (signed).
+    pub residual_rocking: f64,
+}
+
+impl FoundationSummary {
+    fn of(
+        st: &pounding::structure::ShearBuilding,
+        r: &pounding::analysis::FoundationResponse,
+    ) -> Option<Self> {
+        let (f, modes) = (st.foundation()?, st.flexible_modes()?);
+        let (a0, a1) = st.rayleigh();
+        let n = st.storeys();
+        let z = st.elevations();
+        // phi^T C phi: the storeys' a1 k and the floors' a0 m on the drift (rocking left out), the soil's dashpots.
+        let damping = |phi: &[f64], w: f64| {
+            let mut c = f.cx * phi[n] * phi[n] + f.ctheta * phi[n + 1] * phi[n + 1];
+            for j in 0..n {
+                let below = if j == 0 { phi[n] } else { phi[j - 1] };
+                let d = phi[j] - below - st.heights()[j] * phi[n + 1];
+                c += a1 * st.stiffnesses()[j] * d * d;
+                let rel = phi[j] - z[j] * phi[n + 1] - phi[n];
+                c += a0 * st.masses()[j] * rel * rel;
+            }
+            c / (2.0 * w)
+        };
+        Some(Self {
+            mass: f.mass,
+            inertia: f.inertia,
+            kx: f.kx,
+            ktheta: f.ktheta,
+            cx: f.cx,
+            ctheta: f.ctheta,
+            flexible_periods: modes.periods(),
+            flexible_damping_ratios: modes
+                .shapes
+                .iter()
+                .zip(&modes.omega)
+                .map(|(phi, &w)| damping(phi, w))
+                .collect(),
+            peak_sway: r.peak_sway,
+            peak_rocking: r.peak_rocking,
+            peak_soil_force: r.peak_soil_force,
+            peak_soil_moment: r.peak_soil_moment,
+            residual_sway: r.residual_sway,
+            residual_rocking: r.residual_rocking,
+        })
+    }
 }
 
 /// A storey law per storey of a building in plan, for its summary along x: the first inelastic law of its
@@ -226,6 +310,10 @@ impl BuildingSummary {
                 .collect(),
             inelastic_storeys: inelastic.iter().map(|j| j + 1).collect(),
             plan,
+            foundation: resp
+                .foundation
+                .as_ref()
+                .and_then(|r| FoundationSummary::of(st, r)),
         }
     }
 

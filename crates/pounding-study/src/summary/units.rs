@@ -39,6 +39,11 @@ pub fn units() -> Map<String, Value> {
         "plan.peak_storey_shear_y": "N", "plan.peak_torque": "N m", "plan.peak_corner_x": "m (corners counterclockwise from the plan's corner of smallest x and y)",
         "plan.peak_corner_y": "m", "plan.torsional_amplification_x": "largest corner peak / mass centre peak, along x",
         "plan.residual_displacement_y": "m (signed)", "plan.residual_rotation": "rad (signed, counterclockwise)",
+        "foundation.mass": "kg", "foundation.inertia": "kg m^2", "foundation.kx": "N/m", "foundation.ktheta": "N m/rad",
+        "foundation.cx": "N s/m", "foundation.ctheta": "N m s/rad", "foundation.flexible_periods": "s (on the foundation)",
+        "foundation.flexible_damping_ratios": "phi^T C phi / 2w (an estimate: the damping is not classical)",
+        "foundation.peak_sway": "m", "foundation.peak_rocking": "rad", "foundation.peak_soil_force": "N",
+        "foundation.peak_soil_moment": "N m", "foundation.residual_sway": "m (signed)", "foundation.residual_rocking": "rad (signed)",
         "sites.points": "m (each level's point on the left building's façade, in the site's frame)",
     });
     match (v, plan) {

@@ -7,6 +7,17 @@ use super::Histories;
 use crate::engine::{Observer, Segment};
 use crate::integrate::OdeSystem;
 
+/// How many columns of each kind, per building, site or device: storeys (floors), floors in plan (0 in one
+/// line), foundation columns (2 on a foundation, else 0), levels per site, pairs per device.
+#[derive(Clone, Copy)]
+pub(super) struct Counts<'a> {
+    pub storeys: &'a [usize],
+    pub plans: &'a [usize],
+    pub grounded: &'a [usize],
+    pub sites: &'a [usize],
+    pub devices: &'a [usize],
+}
+
 /// Histories at the output interval.
 pub(super) struct HistoryRecorder {
     pub hist: Histories,
@@ -24,16 +35,16 @@ pub(super) struct HistoryRecorder {
 }
 
 impl HistoryRecorder {
-    /// Samples at `k dt` (the last one at `t_end`), `n_out` of them. `storeys` per building, levels per
-    /// site, pairs per device.
-    pub fn new(
-        m: &Model,
-        (storeys, plans, sites, devices): (&[usize], &[usize], &[usize], &[usize]),
-        n_out: usize,
-        dt: f64,
-        t_end: f64,
-    ) -> Self {
+    /// Samples at `k dt` (the last one at `t_end`), `n_out` of them, with the columns `counts` says.
+    pub fn new(m: &Model, counts: &Counts<'_>, n_out: usize, dt: f64, t_end: f64) -> Self {
         let dim = m.system.layout().dim();
+        let Counts {
+            storeys,
+            plans,
+            grounded,
+            sites,
+            devices,
+        } = *counts;
         let per = |counts: &[usize]| -> Vec<Vec<Vec<f64>>> {
             counts
                 .iter()
@@ -49,6 +60,7 @@ impl HistoryRecorder {
                 displacement: per(storeys),
                 displacement_y: per(plans),
                 rotation: per(plans),
+                foundation: per(grounded),
                 absolute_acceleration: per(storeys),
                 storey_shear: per(storeys),
                 site_force: per(sites),
@@ -106,6 +118,12 @@ impl Observer for HistoryRecorder {
                             .map(|&(e, c)| c * sys.element_force(e, &self.ys))
                             .sum(),
                     );
+                }
+                // A foundation's sway and rocking follow its building's floors.
+                if let [sway, rocking] = &mut h.foundation[b][..] {
+                    let n = h.displacement[b].len();
+                    sway.push(self.ys[l.u(o + n)]);
+                    rocking.push(self.ys[l.u(o + n + 1)]);
                 }
                 if let Some(n) = *plan {
                     for (f, col) in h.displacement_y[b].iter_mut().enumerate() {

@@ -42,8 +42,8 @@ pub use assemble::NO_CONTACT_GAP;
 pub use devices::{Device, DeviceEnds, DeviceSpec};
 pub use plausibility::{PLAUSIBLE_PERIOD, PLAUSIBLE_PGA_G};
 pub use results::{
-    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Impact, ImpactLoop, LineResponse,
-    PlanResponse, Results, SiteResponse, Statistics, MAX_LOOP_POINTS,
+    BuildingResponse, DeviceResponse, EnergyBalance, FoundationResponse, Histories, Impact,
+    ImpactLoop, LineResponse, PlanResponse, Results, SiteResponse, Statistics, MAX_LOOP_POINTS,
 };
 pub use run::{Progress, RunOptions};
 pub use scenario::{

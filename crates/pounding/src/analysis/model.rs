@@ -38,7 +38,22 @@ pub(super) struct DeviceRef {
 #[derive(Clone, Debug, Default)]
 pub(super) struct StoreyRef {
     pub below: Option<usize>,
+    /// On a foundation: its rocking and the storey's height, whose product the rigid rotation adds to the
+    /// floors' difference (the drift leaves it out).
+    pub tilt: Option<(usize, f64)>,
     pub elements: Vec<(usize, f64)>,
+}
+
+impl StoreyRef {
+    /// The drift of the storey under degree of freedom `i` in `y` (displacements at `off`, or velocities).
+    #[inline]
+    pub fn drift(&self, i: usize, y: &[f64], off: usize) -> f64 {
+        let d = y[off + i] - self.below.map_or(0.0, |b| y[off + b]);
+        match self.tilt {
+            None => d,
+            Some((t, h)) => d - h * y[off + t],
+        }
+    }
 }
 
 /// The system and the map from buildings, storeys and contacts to its degrees of freedom and elements.
@@ -72,8 +87,9 @@ struct Parts {
     dofs: Vec<Dof>,
     elements: Vec<Element>,
     storeys: Vec<StoreyRef>,
-    /// Dashpots of the mass-proportional damping of isolated superstructures, relative to the base slab.
-    base_dashpots: Vec<(usize, usize, f64)>,
+    /// Dashpots of the mass-proportional damping of isolated superstructures (and of buildings on a
+    /// foundation), relative to the base slab (the base's rigid motion).
+    base_dashpots: Vec<(End, End, f64)>,
 }
 
 impl Parts {
@@ -89,6 +105,7 @@ impl Parts {
             };
             self.storeys.push(StoreyRef {
                 below: j.checked_sub(1).map(|b| offset + b),
+                tilt: None,
                 elements: vec![(self.elements.len(), 1.0)],
             });
             // Rayleigh damping on the initial stiffness (OpenSees' betaKinit); an isolator's own.
@@ -100,8 +117,67 @@ impl Parts {
             .extend(st.masses().iter().map(|&mass| Dof::x(mass, a0_dof)));
         if let (Some(base), true) = (base, a0 > 0.0) {
             for (i, &m) in st.masses().iter().enumerate().filter(|(i, _)| *i != base) {
-                self.base_dashpots.push((offset + i, offset + base, a0 * m));
+                self.base_dashpots
+                    .push((End::Dof(offset + i), End::Dof(offset + base), a0 * m));
             }
+        }
+    }
+
+    /// A building on a foundation: its floors' displacements (relative to the free-field ground, rocking
+    /// included), then the foundation's sway and rocking; each storey deforms by its floors' difference less
+    /// its height times the rocking; the fixed-base Rayleigh damping, its mass-proportional part relative to
+    /// the base's rigid motion; the soil's springs and dashpots under the foundation.
+    fn on_foundation(
+        &mut self,
+        st: &crate::structure::ShearBuilding,
+        f: &crate::structure::Foundation,
+    ) {
+        let (a0, a1) = st.rayleigh();
+        let offset = self.dofs.len();
+        let n = st.storeys();
+        let (uf, th) = (offset + n, offset + n + 1);
+        let z = st.elevations();
+        // A floor's point: its displacement less the rigid rotation's at its elevation.
+        let point = |i: usize| End::Point(Point::new(&[(offset + i, 1.0), (th, -z[i])]));
+        for (j, (&k, law)) in st.stiffnesses().iter().zip(st.storey_laws()).enumerate() {
+            let bottom = if j == 0 { End::Dof(uf) } else { point(j - 1) };
+            self.storeys.push(StoreyRef {
+                below: Some(if j == 0 { uf } else { offset + j - 1 }),
+                tilt: Some((th, st.heights()[j])),
+                elements: vec![(self.elements.len(), 1.0)],
+            });
+            self.elements
+                .push(Element::new(point(j), bottom, law.law(k)).with_dashpot(a1 * k));
+        }
+        self.dofs
+            .extend(st.masses().iter().map(|&mass| Dof::x(mass, 0.0)));
+        self.dofs.push(Dof::x(f.mass, 0.0));
+        self.dofs.push(Dof {
+            mass: f.inertia,
+            a0: 0.0,
+            axis: Axis::Rotation,
+        });
+        if a0 > 0.0 {
+            for (i, &m) in st.masses().iter().enumerate() {
+                self.base_dashpots.push((point(i), End::Dof(uf), a0 * m));
+            }
+        }
+        // The soil: sway and rocking, each "storey" of its own degree of freedom (its force, the base shear
+        // and the overturning moment the soil takes).
+        for (dof, k, c) in [(uf, f.kx, f.cx), (th, f.ktheta, f.ctheta)] {
+            self.storeys.push(StoreyRef {
+                below: None,
+                tilt: None,
+                elements: vec![(self.elements.len(), 1.0)],
+            });
+            self.elements.push(
+                Element::new(
+                    End::Dof(dof),
+                    End::Ground,
+                    crate::element::StoreyLaw::Linear.law(k),
+                )
+                .with_dashpot(c),
+            );
         }
     }
 
@@ -175,7 +251,10 @@ impl<'a> Model<'a> {
                 }
                 None => {
                     per_storey.push(1);
-                    parts.in_line(st);
+                    match st.foundation() {
+                        Some(f) => parts.on_foundation(st, f),
+                        None => parts.in_line(st),
+                    }
                 }
             }
         }
@@ -185,8 +264,8 @@ impl<'a> Model<'a> {
             storeys,
             base_dashpots,
         } = parts;
-        for (i, b, c) in base_dashpots {
-            elements.push(Element::new(End::Dof(i), End::Dof(b), Dashpot::new(c)));
+        for (a, b, c) in base_dashpots {
+            elements.push(Element::new(a, b, Dashpot::new(c)));
         }
         let contacts = contact_elements(s, &offsets, &mut elements);
         let devices = device_elements(s, &offsets, &mut elements);
@@ -275,6 +354,31 @@ impl<'a> Model<'a> {
                     w_max = omega.iter().copied().fold(w_max, f64::max);
                     for i in offset..offset + omega.len() {
                         scale(i, reach(pga, omega[0]));
+                    }
+                    // On a foundation: its sway and rocking under the building's weight times the peak
+                    // ground acceleration (the base shear and overturning moment the soil takes, statically),
+                    // at most what moves a floor or the roof as much as the floors move: the soil's dashpots
+                    // dissipate through these motions, so they are held as closely as the floors' (the
+                    // energy balance of a pair on soft soil went from 2.5e-6 to 2.3e-7).
+                    if let (Some(flex), Some(f)) =
+                        (b.structure.flexible_modes(), b.structure.foundation())
+                    {
+                        w_max = flex.omega.iter().copied().fold(w_max, f64::max);
+                        let n = omega.len();
+                        let (u, _) = reach(pga, omega[0]);
+                        let z = b.structure.elevations();
+                        let m = b.structure.masses();
+                        let shear: f64 = m.iter().sum::<f64>() * pga;
+                        let moment: f64 = m.iter().zip(&z).map(|(m, z)| m * z).sum::<f64>() * pga;
+                        let w1 = flex.omega[0].max(w_floor);
+                        // Not below 1e-2 of the floors': on stiff soil the foundation barely moves, and
+                        // holding its motion to the tolerance would only resolve a mode that carries nothing.
+                        let (uz, top) = (1e-2 * u, z[n - 1]);
+                        scale(offset + n, ((shear / f.kx).clamp(uz, u), w1));
+                        scale(
+                            offset + n + 1,
+                            ((moment / f.ktheta).clamp(uz / top, u / top), w1),
+                        );
                     }
                 }
                 Some(p) => {

@@ -126,7 +126,7 @@ impl Peaks {
             ..
         } = self;
         let st = &storeys[i];
-        let drift = |y: &[f64], off: usize| y[off + i] - st.below.map_or(0.0, |b| y[off + b]);
+        let drift = |y: &[f64], off: usize| st.drift(i, y, off);
         let n = l.dofs();
         let (xa, xb, va, vb) = (drift(y0, 0), drift(y1, 0), drift(y0, n), drift(y1, n));
         let curve = Hermite::new(xa, xb, va, vb, h);

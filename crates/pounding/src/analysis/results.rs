@@ -69,6 +69,26 @@ pub struct BuildingResponse {
     /// centres along x (the drift and shear along x: the sum of its lines' along x), with each storey's
     /// largest ductility of any line and the hysteretic energy of all its lines.
     pub plan: Option<PlanResponse>,
+    /// For a building on a foundation, its sway and rocking (the floors' displacements above include the
+    /// rocking's `z theta`; the drifts leave it out).
+    pub foundation: Option<FoundationResponse>,
+}
+
+/// The response of a building's foundation on the soil.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FoundationResponse {
+    /// Largest |sway| of the foundation relative to the free-field ground, m.
+    pub peak_sway: f64,
+    /// Largest |rocking| of the foundation, rad.
+    pub peak_rocking: f64,
+    /// Largest |force| of the sway spring (the soil's share of the base shear, without its dashpot), N.
+    pub peak_soil_force: f64,
+    /// Largest |moment| of the rocking spring (without its dashpot), N m.
+    pub peak_soil_moment: f64,
+    /// Sway at the end of the analysis, m (signed).
+    pub residual_sway: f64,
+    /// Rocking at the end of the analysis, rad (signed).
+    pub residual_rocking: f64,
 }
 
 /// The response of a building in plan beyond its mass centres' along x ([`BuildingResponse`]).
@@ -181,6 +201,9 @@ pub struct Histories {
     /// `rotation[building][floor][sample]`: a floor in plan's rotation about the vertical axis,
     /// counterclockwise, rad (no floors for a building in one line).
     pub rotation: Vec<Vec<Vec<f64>>>,
+    /// `foundation[building]`: a building on a foundation's sway (m) and rocking (rad) at each sample,
+    /// `[sway, rocking]` (empty for a building fixed at its base).
+    pub foundation: Vec<Vec<Vec<f64>>>,
     /// `absolute_acceleration[building][floor][sample]`, `u'' + a_g`, m/s^2 (of a floor in plan, its mass
     /// centre's along x).
     pub absolute_acceleration: Vec<Vec<Vec<f64>>>,
@@ -287,6 +310,7 @@ impl Results {
             &h.displacement,
             &h.displacement_y,
             &h.rotation,
+            &h.foundation,
             &h.absolute_acceleration,
             &h.storey_shear,
             &h.site_force,

@@ -6,8 +6,8 @@ use super::model::Model;
 use super::peaks::{DevicePeaks, Peak, Peaks};
 use super::recorders::Recorders;
 use super::{
-    BuildingResponse, DeviceResponse, EnergyBalance, Histories, Layer, LineResponse, PlanResponse,
-    Results, Scenario, SiteResponse, Statistics,
+    BuildingResponse, DeviceResponse, EnergyBalance, FoundationResponse, Histories, Layer,
+    LineResponse, PlanResponse, Results, Scenario, SiteResponse, Statistics,
 };
 use crate::engine::{self, Outcome, Settings};
 use crate::Error;
@@ -134,10 +134,13 @@ fn budget(s: &Scenario, dim: usize, max_work: f64) -> Result<usize, Error> {
     let w_max = s
         .buildings()
         .iter()
-        .flat_map(|b| match b.structure.plan() {
-            Some(p) => p.modes().omega.iter().copied(),
-            None => b.structure.modes().omega.iter().copied(),
-        })
+        .flat_map(
+            |b| match (b.structure.plan(), b.structure.flexible_modes()) {
+                (Some(p), _) => p.modes().omega.iter().copied(),
+                (None, Some(m)) => m.omega.iter().copied(),
+                (None, None) => b.structure.modes().omega.iter().copied(),
+            },
+        )
         .fold(0.0, f64::max);
     if w_max * t_end / 3.0 > budget as f64 {
         return Err(Error::StepBudget {
@@ -183,11 +186,22 @@ fn run(
             .iter()
             .map(|b| b.structure.plan().map_or(0, |p| p.floors()))
             .collect();
+        let grounded: Vec<usize> = s
+            .buildings()
+            .iter()
+            .map(|b| 2 * usize::from(b.structure.foundation().is_some()))
+            .collect();
         let sites: Vec<usize> = s.sites().iter().map(|l| l.levels.len()).collect();
         let devices: Vec<usize> = s.devices().iter().map(|d| d.floors.len()).collect();
         HistoryRecorder::new(
             &model,
-            (&storeys, &plans, &sites, &devices),
+            &super::histories::Counts {
+                storeys: &storeys,
+                plans: &plans,
+                grounded: &grounded,
+                sites: &sites,
+                devices: &devices,
+            },
             s.output_samples(),
             s.output_dt(),
             t_end,
@@ -309,7 +323,7 @@ fn building_responses(
             let o = model.offsets[b];
             let n = st.storeys();
             let r = o..o + n;
-            let drift_at = |i: usize| y[l.u(i)] - model.storeys[i].below.map_or(0.0, |k| y[l.u(k)]);
+            let drift_at = |i: usize| model.storeys[i].drift(i, y, 0);
             let elements = |j: usize| model.storey_elements(b, j);
             let hysteretic = |e: usize| {
                 let (x, _) = sys.deformation(e, y);
@@ -350,6 +364,18 @@ fn building_responses(
                 ductility,
                 hysteretic_energy: (0..n).map(|j| elements(j).map(hysteretic).sum()).collect(),
                 plan,
+                foundation: st.foundation().map(|_| {
+                    // The foundation's sway and rocking follow the floors (Model: on_foundation).
+                    let (uf, th) = (o + n, o + n + 1);
+                    FoundationResponse {
+                        peak_sway: peaks.displacement[uf].value,
+                        peak_rocking: peaks.displacement[th].value,
+                        peak_soil_force: peaks.shear[uf],
+                        peak_soil_moment: peaks.shear[th],
+                        residual_sway: y[l.u(uf)],
+                        residual_rocking: y[l.u(th)],
+                    }
+                }),
             }
         })
         .collect()

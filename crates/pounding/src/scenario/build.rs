@@ -279,6 +279,12 @@ impl ScenarioDoc {
             }
             .and_then(|s| s.with_storey_laws(laws))
             .map_err(|e| lib(&at, &what, e))?;
+            let structure = match &b.foundation {
+                None => structure,
+                Some(f) => structure
+                    .with_foundation(foundation(&at, &what, f)?)
+                    .map_err(|e| lib(&at, &what, e))?,
+            };
             buildings.push(Building {
                 name: b.name.clone(),
                 structure,
@@ -357,6 +363,9 @@ fn building_in_plan(
     if b.isolator.is_some() {
         return Err(err("isolator", "an isolator under a building in plan is not modelled yet: give the isolated building in one line".into()));
     }
+    if b.foundation.is_some() {
+        return Err(err("foundation", "a foundation under a building in plan is not modelled yet: give the building on soil in one line".into()));
+    }
     let n = b.masses.len();
     let per = |key: &str, len: usize| {
         err(
@@ -407,6 +416,64 @@ fn building_in_plan(
             lib(at, what, e)
         },
     )
+}
+
+/// The foundation of a building entry at `at`: its springs given, or from the soil and its shape.
+fn foundation(
+    at: &str,
+    what: &str,
+    f: &super::FoundationDoc,
+) -> Result<crate::structure::Foundation, SchemaError> {
+    use crate::structure::{Foundation, Shape, Soil};
+    let key = format!("{at}.foundation");
+    let err =
+        |k: &str, msg: String| SchemaError::new(format!("{key}.{k}"), format!("{what}: {msg}"));
+    let given = [f.kx, f.ktheta, f.cx, f.ctheta].iter().any(Option::is_some);
+    let soil_keys = [f.vs, f.density, f.poisson, f.radius]
+        .iter()
+        .any(Option::is_some)
+        || f.size.is_some();
+    let soil = match (given, soil_keys) {
+        (true, true) => {
+            return Err(err(
+                "kx",
+                "the springs given (kx, ktheta, cx, ctheta) or the soil (vs, density, poisson, radius or size), not both".into(),
+            ))
+        }
+        (true, false) => {
+            let need = |k: &str, v: Option<f64>, unit: &str| {
+                v.ok_or_else(|| err(k, format!("{k} ({unit}) is required with the springs given")))
+            };
+            Soil::Given {
+                kx: need("kx", f.kx, "N/m")?,
+                ktheta: need("ktheta", f.ktheta, "N m/rad")?,
+                cx: f.cx.unwrap_or(0.0),
+                ctheta: f.ctheta.unwrap_or(0.0),
+            }
+        }
+        (false, _) => {
+            let vs = f.vs.ok_or_else(|| {
+                err("vs", "vs (the soil's shear-wave velocity, m/s) is required, or the springs given (kx, ktheta, cx, ctheta)".into())
+            })?;
+            let shape = match (f.radius, f.size) {
+                (Some(r), None) => Shape::Disk(r),
+                (None, Some([a, b])) => Shape::Rectangle(a, b),
+                _ => {
+                    return Err(err(
+                        "radius",
+                        "the foundation's radius (m) or its size [a, b] (m), one of them".into(),
+                    ))
+                }
+            };
+            Soil::HalfSpace {
+                vs,
+                density: f.density.unwrap_or(1800.0),
+                poisson: f.poisson.unwrap_or(0.33),
+                shape,
+            }
+        }
+    };
+    Foundation::new(f.mass, f.inertia, soil).map_err(|e| lib(at, what, e))
 }
 
 /// The storey keys of a building entry or of one of its lines.

@@ -177,6 +177,51 @@ pub struct BuildingDoc {
     /// `[[building.line]]`: the lateral load-resisting lines of a building in plan.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub line: Vec<LineDoc>,
+    /// `[building.foundation]`: the building stands on a foundation over soil springs and dashpots
+    /// (soil–structure interaction) instead of a fixed base.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub foundation: Option<FoundationDoc>,
+}
+
+/// `[building.foundation]`: a rigid foundation (its mass and moment of inertia) on sway and rocking springs
+/// and dashpots, given directly (`kx`, `ktheta`, `cx`, `ctheta`) or from the soil (`vs`, `density`, `poisson`)
+/// and the foundation's shape (`radius`, or `size`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct FoundationDoc {
+    /// The foundation's mass, kg (> 0).
+    pub mass: f64,
+    /// Its moment of inertia about the rocking axis, kg m^2 (default from its shape: `m r^2 / 4`, `m a^2 / 12`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inertia: Option<f64>,
+    /// Sway stiffness, N/m (with the other three: the springs given directly).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kx: Option<f64>,
+    /// Rocking stiffness, N m/rad.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ktheta: Option<f64>,
+    /// Sway dashpot, N s/m (default 0 with the springs given).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cx: Option<f64>,
+    /// Rocking dashpot, N m s/rad (default 0 with the springs given).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ctheta: Option<f64>,
+    /// The soil's shear-wave velocity, m/s (the springs and dashpots of a half-space).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vs: Option<f64>,
+    /// The soil's density, kg/m^3 (default 1800).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub density: Option<f64>,
+    /// The soil's Poisson's ratio (default 0.33).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub poisson: Option<f64>,
+    /// A circular foundation's radius, m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    /// `[a, b]`: a rectangular foundation's sides, m, `a` along the motion.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<[f64; 2]>,
 }
 
 /// `[building.plan]`: a rectangular plan, its place in the site's frame, its floors' mass centres and

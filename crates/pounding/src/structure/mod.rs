@@ -10,10 +10,12 @@
 
 mod eigen;
 mod form;
+pub mod foundation;
 pub mod isolation;
 pub mod plan;
 
 pub use form::Form;
+pub use foundation::{Foundation, HalfSpace, Shape, Soil};
 pub use isolation::{Isolator, IsolatorKind, IsolatorModel};
 pub use plan::{Line, LineDirection, Plan, PlanDof, PlanSpec};
 
@@ -57,6 +59,8 @@ pub struct ShearBuilding {
     modes: Modes,
     /// The plan of a building whose floors move in plan ([`ShearBuilding::in_plan`]).
     plan: Option<Box<Plan>>,
+    /// The foundation on the soil, and the modes on it ([`ShearBuilding::with_foundation`]).
+    foundation: Option<Box<(Foundation, Modes)>>,
 }
 
 /// Natural modes of a [`ShearBuilding`], lowest first.
@@ -275,6 +279,7 @@ impl ShearBuilding {
             isolator: None,
             modes,
             plan: None,
+            foundation: None,
         })
     }
 
@@ -310,13 +315,63 @@ impl ShearBuilding {
         self.plan.as_deref()
     }
 
-    /// Degrees of freedom: one per floor, three (x, y, rotation) for a building in plan.
+    /// Degrees of freedom: one per floor, three (x, y, rotation) for a building in plan; two more (the
+    /// foundation's sway and rocking) on a foundation.
     pub fn dofs(&self) -> usize {
         if self.plan.is_some() {
             3 * self.storeys()
         } else {
-            self.storeys()
+            self.storeys() + 2 * usize::from(self.foundation.is_some())
         }
+    }
+
+    /// The same building on `foundation` (soil–structure interaction, [`foundation`]): its floors then move
+    /// with the foundation's sway and rocking (a floor at elevation `z` by `z theta`) besides their storeys'
+    /// drifts; Rayleigh damping stays that of the fixed-base building, its mass-proportional part acting
+    /// relative to the rigid motion of the base (as over an isolator), and the soil's dashpots damp the
+    /// foundation. Refused for a building in plan or on an isolator, and for a foundation without mass or
+    /// moment of inertia (a run needs both).
+    pub fn with_foundation(mut self, foundation: Foundation) -> Result<Self, Error> {
+        let refuse = |why: &str| Error::Choice {
+            name: "foundation",
+            value: "[building.foundation]".into(),
+            allowed: why.into(),
+        };
+        if self.plan.is_some() {
+            return Err(refuse(
+                "a building in one line: a foundation under a building in plan is not modelled yet",
+            ));
+        }
+        if self.isolator.is_some() {
+            return Err(refuse("a building without an isolator: an isolated building on soil springs is not modelled yet"));
+        }
+        check(
+            "foundation.mass",
+            foundation.mass,
+            foundation.mass > 0.0,
+            "mass > 0 (kg) for a time history (a massless foundation has no equation of motion: give the mat's mass)",
+        )?;
+        check(
+            "foundation.inertia",
+            foundation.inertia,
+            foundation.inertia > 0.0,
+            "moment of inertia > 0 (kg m^2) for a time history",
+        )?;
+        let (omega, shapes) =
+            foundation::flexible_modes(&self.masses, &self.stiffnesses, &self.heights, &foundation);
+        self.foundation = Some(Box::new((foundation, Modes { omega, shapes })));
+        Ok(self)
+    }
+
+    /// The foundation a building stands on, if it is not fixed at its base.
+    pub fn foundation(&self) -> Option<&Foundation> {
+        self.foundation.as_deref().map(|f| &f.0)
+    }
+
+    /// The modes on the foundation (floors, then the foundation's sway and rocking; [`foundation::flexible_modes`]),
+    /// if there is one.
+    pub fn flexible_modes(&self) -> Option<&Modes> {
+        self.foundation.as_deref().map(|f| &f.1)
     }
 
     /// A building isolated at its base: the base slab (floor 1, `base_mass` kg) on `isolator` (storey 1),

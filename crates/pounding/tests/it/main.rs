@@ -18,6 +18,7 @@ mod plan;
 mod reliability;
 mod restitution;
 mod separation;
+mod soil;
 
 use pounding::contact::{ContactModel, Damping, ForceLaw, Model, Tension};
 use pounding::impact::{simulate, ImpactOptions, ImpactResult, ImpactSetup};

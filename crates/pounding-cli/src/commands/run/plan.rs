@@ -187,3 +187,71 @@ pub fn peaks(s: &Scenario, r: &Results) {
         );
     }
 }
+
+/// A building's foundation on the soil: its springs and dashpots, and the periods on it.
+pub fn foundation(b: &Building) {
+    let st = &b.structure;
+    let (Some(f), Some(modes)) = (st.foundation(), st.flexible_modes()) else {
+        return;
+    };
+    let source = match f.soil {
+        pounding::structure::Soil::Given { .. } => "springs given".to_string(),
+        pounding::structure::Soil::HalfSpace {
+            vs,
+            density,
+            poisson,
+            ..
+        } => format!(
+            "half-space V_s {} m/s, rho {} kg/m^3, nu {} (Gazetas; Wolf's cones)",
+            fmt_num(vs),
+            fmt_num(density),
+            fmt_num(poisson)
+        ),
+    };
+    println!(
+        "  on a foundation of {} kg, J {} kg m^2; {source}: K_x {} N/m, K_theta {} N m/rad, C_x {} N s/m, C_theta {} N m s/rad",
+        fmt_num(f.mass),
+        fmt_sig(f.inertia, 4),
+        fmt_sig(f.kx, 4),
+        fmt_sig(f.ktheta, 4),
+        fmt_sig(f.cx, 4),
+        fmt_sig(f.ctheta, 4)
+    );
+    let periods: Vec<String> = modes
+        .periods()
+        .iter()
+        .take(4)
+        .map(|t| format!("{t:.4}"))
+        .collect();
+    println!(
+        "  periods on the foundation (s): {} (fixed base: {:.4})",
+        periods.join(", "),
+        st.modes().periods()[0]
+    );
+}
+
+/// Each foundation's sway and rocking.
+pub fn foundations(s: &Scenario, r: &Results) {
+    let rows: Vec<_> = s
+        .buildings()
+        .iter()
+        .zip(&r.buildings)
+        .filter_map(|(b, resp)| resp.foundation.as_ref().map(|f| (b, f)))
+        .collect();
+    if rows.is_empty() {
+        return;
+    }
+    println!("\nfoundations (floors above move with their rocking; drifts leave it out)\n");
+    println!("building    sway_mm  rocking_mrad  soil_force_MN  soil_moment_MNm  residual_sway_mm");
+    for (b, f) in rows {
+        println!(
+            "{:<10}  {:>7}  {:>12}  {:>13}  {:>15}  {:>16}",
+            b.name,
+            fmt_table(1e3 * f.peak_sway, 4),
+            fmt_table(1e3 * f.peak_rocking, 4),
+            fmt_table(1e-6 * f.peak_soil_force, 4),
+            fmt_table(1e-6 * f.peak_soil_moment, 4),
+            fmt_table(1e3 * f.residual_sway, 4)
+        );
+    }
+}

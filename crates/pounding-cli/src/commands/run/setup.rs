@@ -174,9 +174,20 @@ fn building(b: &Building) {
     if let Some(p) = st.plan() {
         return super::plan::building(b, p);
     }
+    if st.foundation().is_some() {
+        // The fixed-base modes below fix the damping; the foundation line gives the periods on the soil.
+        building_modes(b);
+        return super::plan::foundation(b);
+    }
     if st.form() == Form::Deck {
         return deck(b);
     }
+    building_modes(b);
+}
+
+/// A building in one line: its storey laws and its (fixed-base) modes.
+fn building_modes(b: &Building) {
+    let st = &b.structure;
     let modes = st.modes();
     let part = modes.participation(st.masses());
     let m_tot = st.total_mass();

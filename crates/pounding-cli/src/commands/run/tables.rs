@@ -11,6 +11,7 @@ use pounding_study::summary::inside::{inside, Meeting};
 pub fn print(s: &Scenario, r: &Results) {
     floors(s, r);
     super::plan::peaks(s, r);
+    super::plan::foundations(s, r);
     inelastic(s, r);
     isolators(s, r);
     sites(s, r);

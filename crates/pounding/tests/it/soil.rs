@@ -1,0 +1,190 @@
+//! Buildings on soil springs (soil–structure interaction): a storey on a foundation over the half-space against
+//! an independent integration of its three equations, stiff soil against the fixed base, and the energy of a
+//! pounding pair on soil.
+
+use pounding::analysis::{Building, Scenario};
+use pounding::contact::{ContactModel, Model};
+use pounding::ground_motion::Record;
+use pounding::structure::{Foundation, Shape, ShearBuilding, Soil};
+
+const M: f64 = 5.0e5;
+const H: f64 = 10.0;
+
+fn storey(t: f64) -> ShearBuilding {
+    let k = M * (2.0 * std::f64::consts::PI / t).powi(2);
+    ShearBuilding::new(vec![M], vec![k], vec![H], 0.05).unwrap()
+}
+
+fn on_soil(vs: f64, m_f: f64) -> ShearBuilding {
+    let soil = Soil::HalfSpace {
+        vs,
+        density: 1800.0,
+        poisson: 0.33,
+        shape: Shape::Disk(8.0),
+    };
+    storey(0.5)
+        .with_foundation(Foundation::new(m_f, None, soil).unwrap())
+        .unwrap()
+}
+
+/// Peaks of |w| (floor, relative to the free field) and |d| (the storey's drift, rocking left out) of the
+/// storey on its foundation, by classical RK4 at a fixed step of 2e-6 s: the equations written out,
+/// `m w'' = -m a_g - F`, `m_f u'' = -m_f a_g + F - K_x u - C_x u'`, `J theta'' = h F - K_t theta - C_t theta'`,
+/// `F = k d + (a1 k + a0 m) d'`, `d = w - u - h theta` (Rayleigh of the fixed base, its mass part on the drift).
+fn reference(b: &ShearBuilding, rec: &Record, t_end: f64) -> (f64, f64) {
+    let f = b.foundation().unwrap();
+    let k = b.stiffnesses()[0];
+    let (a0, a1) = b.rayleigh();
+    let c = a1 * k + a0 * M;
+    let rhs = |t: f64, y: &[f64; 6]| -> [f64; 6] {
+        let ag = rec.at(t);
+        let [w, u, th, wv, uv, tv] = *y;
+        let (d, dv) = (w - u - H * th, wv - uv - H * tv);
+        let force = k * d + c * dv;
+        [
+            wv,
+            uv,
+            tv,
+            -ag - force / M,
+            -ag + (force - f.kx * u - f.cx * uv) / f.mass,
+            (H * force - f.ktheta * th - f.ctheta * tv) / f.inertia,
+        ]
+    };
+    let h = 2e-6;
+    let mut y = [0.0; 6];
+    let (mut pw, mut pd) = (0.0f64, 0.0f64);
+    let steps = (t_end / h).round() as usize;
+    for s in 0..steps {
+        let t = s as f64 * h;
+        let k1 = rhs(t, &y);
+        let add = |y: &[f64; 6], k: &[f64; 6], a: f64| -> [f64; 6] {
+            std::array::from_fn(|i| y[i] + a * k[i])
+        };
+        let k2 = rhs(t + h / 2.0, &add(&y, &k1, h / 2.0));
+        let k3 = rhs(t + h / 2.0, &add(&y, &k2, h / 2.0));
+        let k4 = rhs(t + h, &add(&y, &k3, h));
+        y = std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
+        pw = pw.max(y[0].abs());
+        pd = pd.max((y[0] - y[1] - H * y[2]).abs());
+    }
+    (pw, pd)
+}
+
+#[test]
+fn a_storey_on_soil_is_its_three_equations() {
+    let rec = Record::el_centro_1940();
+    let t_end = 4.0;
+    for vs in [100.0, 250.0] {
+        let b = on_soil(vs, 2.0e5);
+        let (pw, pd) = reference(&b, &rec, t_end);
+        for (tol, within) in [(1e-7, 2e-5), (1e-10, 1e-7)] {
+            let s = Scenario::new(
+                vec![Building {
+                    name: "A".into(),
+                    structure: b.clone(),
+                }],
+                rec.clone(),
+            )
+            .unwrap()
+            .with_duration(t_end)
+            .unwrap()
+            .with_tolerance(tol)
+            .unwrap();
+            let r = s.run().unwrap();
+            let resp = &r.buildings[0];
+            let (w, d) = (resp.peak_displacement[0], resp.peak_drift[0]);
+            assert!(
+                (w / pw - 1.0).abs() < within,
+                "V_s {vs}, tol {tol}: w {w} vs {pw}"
+            );
+            assert!(
+                (d / pd - 1.0).abs() < within,
+                "V_s {vs}, tol {tol}: d {d} vs {pd}"
+            );
+            let f = resp.foundation.as_ref().unwrap();
+            assert!(f.peak_sway > 0.0 && f.peak_rocking > 0.0);
+            assert!(
+                r.energy.relative_error < 1e-6,
+                "{}",
+                r.energy.relative_error
+            );
+        }
+    }
+}
+
+/// On stiff soil (V_s = 3e4 m/s: a period 1.00005 times the fixed base's) the storey is the fixed-base one:
+/// peaks within 1e-5 at the default tolerance, and within the physical difference at 1e-10.
+#[test]
+fn stiff_soil_is_the_fixed_base() {
+    let rec = Record::el_centro_1940();
+    let run = |b: ShearBuilding, tol: f64| {
+        Scenario::new(
+            vec![Building {
+                name: "A".into(),
+                structure: b,
+            }],
+            rec.clone(),
+        )
+        .unwrap()
+        .with_duration(4.0)
+        .unwrap()
+        .with_tolerance(tol)
+        .unwrap()
+        .run()
+        .unwrap()
+    };
+    let soil = on_soil(3.0e4, 5.0e5);
+    let flex = soil.flexible_modes().unwrap().omega[0];
+    let fixed = storey(0.5).modes().omega[0];
+    assert!((fixed / flex - 1.0).abs() < 1e-4, "{}", fixed / flex);
+    for tol in [1e-7, 1e-10] {
+        let (a, b) = (run(storey(0.5), tol), run(soil.clone(), tol));
+        let (x, y) = (a.buildings[0].peak_drift[0], b.buildings[0].peak_drift[0]);
+        assert!((x / y - 1.0).abs() < 1e-5, "tol {tol}: {x} vs {y}");
+    }
+}
+
+/// Two buildings on soft soil pounding: the energy balances to 1e-6, the soil's dashpots dissipating.
+#[test]
+fn a_pair_on_soil_pounding_balances_its_energy() {
+    let rec = Record::el_centro_1940();
+    let b = |name: &str, t: f64, vs: f64| {
+        let soil = Soil::HalfSpace {
+            vs,
+            density: 1800.0,
+            poisson: 0.4,
+            shape: Shape::Rectangle(12.0, 10.0),
+        };
+        let k = M * (2.0 * std::f64::consts::PI / t).powi(2);
+        let st = ShearBuilding::new(vec![M, M], vec![k, 0.8 * k], vec![3.5, 3.0], 0.05)
+            .unwrap()
+            .with_foundation(Foundation::new(4.0e5, None, soil).unwrap())
+            .unwrap();
+        Building {
+            name: name.into(),
+            structure: st,
+        }
+    };
+    let s = Scenario::new(vec![b("A", 0.4, 150.0), b("B", 0.8, 250.0)], rec)
+        .unwrap()
+        .with_duration(8.0)
+        .unwrap()
+        .with_link(
+            "A",
+            "B",
+            0.01,
+            &ContactModel::new(Model::Hertzdamp, 2.0e10, 0.65).unwrap(),
+            None,
+        )
+        .unwrap();
+    let r = s.run().unwrap();
+    assert!(!r.impacts.is_empty());
+    assert!(
+        r.energy.relative_error < 1e-6,
+        "{}",
+        r.energy.relative_error
+    );
+    // nu = 0.4 > 1/3: the rocking dashpot uses 2 V_s and a trapped inertia joins the foundation's.
+    let f = s.buildings()[0].structure.foundation().unwrap();
+    assert!(f.inertia > 4.0e5 * 12.0 * 12.0 / 12.0);
+}
