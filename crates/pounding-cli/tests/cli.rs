@@ -4294,3 +4294,52 @@ fn buildings_on_soil_report_their_foundation() {
         "{msg}"
     );
 }
+
+/// Supports of their own as a user gives them: wave passage from a distance and an apparent velocity, a
+/// support with a record file of its own beside the scenario, and an unknown support named with the allowed.
+#[test]
+fn supports_of_their_own_run_and_name_their_keys() {
+    let dir = tmp("supports");
+    let out = dir.join("out");
+    let o = pounding(&[
+        "run",
+        &example("wave-passage.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let sup = &summary["supports"][0];
+    assert!((f(sup, "delay") - 40.0 / 500.0).abs() < 1e-15);
+    assert_eq!(sup["structures"], serde_json::json!(["farther"]));
+    // A record of its own, in a file beside the scenario, run from another folder.
+    let mut rec = String::from("# units = \"m/s2\"\n");
+    for k in 0..500 {
+        let t = 0.01 * (k + 1) as f64;
+        rec += &format!("{t} {}\n", 2.0 * (9.0 * t).sin());
+    }
+    std::fs::write(dir.join("own.txt"), rec).unwrap();
+    let text = std::fs::read_to_string(example("wave-passage.toml"))
+        .unwrap()
+        .replace("distance = 40.0                      # m along the wave's path\napparent_velocity = 500.0            # m/s", "file = \"own.txt\"");
+    assert!(text.contains("file = \"own.txt\""));
+    std::fs::write(dir.join("own.toml"), &text).unwrap();
+    let o = pounding(&[
+        "run",
+        dir.join("own.toml").to_str().unwrap(),
+        "--out",
+        dir.join("out2").to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let msg = refused_scenario(
+        &dir,
+        &text.replace("support = \"far\"", "support = \"nowhere\""),
+    );
+    assert!(
+        msg.contains("support = \"nowhere\" is not allowed") && msg.contains("\"far\""),
+        "{msg}"
+    );
+}

@@ -63,8 +63,8 @@ fn short(s: &str) -> String {
 fn load_scenario(path: &str) -> PyResult<String> {
     let file = ScenarioFile::read(Path::new(path)).map_err(|e| input_err(e.0))?;
     let mut value = file.value;
-    for at in pounding_study::input::RECORD_FILES {
-        if let Some(Value::String(f)) = value.pointer_mut(at) {
+    for at in pounding_study::input::record_files(&value) {
+        if let Some(Value::String(f)) = value.pointer_mut(&at) {
             if let Ok(abs) = std::path::absolute(f.as_str()) {
                 *f = abs.to_string_lossy().into_owned();
             }

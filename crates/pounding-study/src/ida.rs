@@ -205,6 +205,12 @@ fn inelastic(s: &pounding::analysis::Scenario) -> Vec<String> {
 /// A base scenario of one ground component (or one along an angle): an IDA scales each record of its suite
 /// alone.
 fn one_component(path: &Path, base: &crate::input::Loaded) -> Result<(), InputError> {
+    if base.doc.support.iter().any(|s| s.own().is_some()) {
+        return Err(err(
+            path,
+            "the base scenario has a [[support]] with a record of its own: an IDA scales each record of its suite, and would leave that one as it is; give the support a delay (wave passage) instead",
+        ));
+    }
     if base.doc.ground_motion.y.is_some() {
         return Err(err(
             path,

@@ -232,14 +232,28 @@ impl ScenarioFile {
     }
 }
 
-/// Where a scenario names record files: `ground_motion.file`, and `ground_motion.y.file` (the record along y).
+/// Where a scenario names record files: `ground_motion.file`, and `ground_motion.y.file` (the record along y);
+/// each `[[support]]`'s `file` too ([`record_files`]).
 pub const RECORD_FILES: [&str; 2] = ["/ground_motion/file", "/ground_motion/y/file"];
 
-/// A relative `ground_motion.file` (or `ground_motion.y.file`) is relative to `base`: rewritten so that the
-/// value runs from anywhere.
+/// The JSON pointers of every record file a scenario may name: [`RECORD_FILES`] and each support's.
+pub fn record_files(value: &Value) -> Vec<String> {
+    let supports = value
+        .pointer("/support")
+        .and_then(Value::as_array)
+        .map_or(0, Vec::len);
+    RECORD_FILES
+        .iter()
+        .map(|s| s.to_string())
+        .chain((0..supports).map(|i| format!("/support/{i}/file")))
+        .collect()
+}
+
+/// A relative record file (`ground_motion.file`, `ground_motion.y.file`, a support's `file`) is relative to
+/// `base`: rewritten so that the value runs from anywhere.
 pub fn resolve_record_file(value: &mut Value, base: &Path) {
-    for at in RECORD_FILES {
-        if let Some(Value::String(f)) = value.pointer_mut(at) {
+    for at in record_files(value) {
+        if let Some(Value::String(f)) = value.pointer_mut(&at) {
             let p = Path::new(f.as_str());
             if p.is_relative() {
                 *f = base.join(p).to_string_lossy().into_owned();
@@ -273,18 +287,30 @@ pub fn from_value(value: &Value, label: &str) -> Result<Loaded, (Option<String>,
         Some(sy) => Some(load(&sy, "ground_motion.y")?),
         None => None,
     };
-    build(doc, (record, y), label, spec.source)
+    let mut supports = Vec::new();
+    for (i, sp) in doc
+        .support_specs()
+        .map_err(|e| (Some(e.key), e.message))?
+        .iter()
+        .enumerate()
+    {
+        if let Some(sp) = sp {
+            supports.push(load(sp, &format!("support.{i}"))?);
+        }
+    }
+    build(doc, (record, y, supports), label, spec.source)
 }
 
-/// Validates `doc` under `record` along x and its record along y, if it has one (already loaded and scaled).
+/// Validates `doc` under `record` along x, its record along y and its supports' own records, if it has them
+/// (already loaded and scaled).
 pub fn build(
     doc: ScenarioDoc,
-    (record, y): (Record, Option<Record>),
+    (record, y, supports): (Record, Option<Record>, Vec<Record>),
     label: &str,
     record_source: String,
 ) -> Result<Loaded, (Option<String>, String)> {
     let scenario = doc
-        .build_with(record, y)
+        .build_full(record, y, supports)
         .map_err(|e| (Some(e.key), e.message))?;
     Ok(Loaded {
         doc,

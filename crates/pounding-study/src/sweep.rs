@@ -31,6 +31,8 @@ struct Job {
     spec: RecordSpec,
     /// The record along y, if any, unscaled, and what names it.
     y: Option<(Arc<Record>, RecordSpec)>,
+    /// The supports' own records, unscaled, and what names them.
+    supports: Vec<(Arc<Record>, RecordSpec)>,
 }
 
 impl Prepared {
@@ -56,11 +58,17 @@ fn prepare_one(value: &Value, label: String, cache: &RecordCache) -> Prepared {
     };
     // The key is the document with its defaults written out, so `gap = 1` and `gap = 1.0` are one run.
     let mut canonical = serde_json::to_value(&doc).unwrap_or(Value::Null);
-    let specs = doc
-        .ground_motion
-        .spec()
-        .and_then(|x| Ok((x, doc.ground_motion.spec_y()?)));
-    let (spec, spec_y) = match specs {
+    let specs = doc.ground_motion.spec().and_then(|x| {
+        Ok((
+            x,
+            doc.ground_motion.spec_y()?,
+            doc.support_specs()?
+                .into_iter()
+                .flatten()
+                .collect::<Vec<_>>(),
+        ))
+    });
+    let (spec, spec_y, spec_supports) = match specs {
         Ok(s) => s,
         Err(e) => {
             return Prepared {
@@ -75,7 +83,11 @@ fn prepare_one(value: &Value, label: String, cache: &RecordCache) -> Prepared {
             .as_ref()
             .map(|sy| cached(sy, "ground_motion.y", cache))
             .transpose()?;
-        Ok((x, y))
+        let supports = spec_supports
+            .iter()
+            .map(|sp| cached(sp, "support", cache))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok((x, y, supports))
     });
     match loaded {
         Err(m) => Prepared {
@@ -83,7 +95,7 @@ fn prepare_one(value: &Value, label: String, cache: &RecordCache) -> Prepared {
             label,
             job: Err(m),
         },
-        Ok(((record, hash), y)) => {
+        Ok(((record, hash), y, supports)) => {
             // A record file is known by its content, not by its path: the key holds wherever the study runs.
             if spec.is_file {
                 if let Some(f) = canonical.pointer_mut("/ground_motion/file") {
@@ -97,7 +109,25 @@ fn prepare_one(value: &Value, label: String, cache: &RecordCache) -> Prepared {
                     }
                 }
             }
+            // Supports' files by content too.
+            let mut k = 0;
+            for (i, sp) in doc.support.iter().enumerate() {
+                if sp.file.is_some() {
+                    if let (Some(f), Some((_, h))) = (
+                        canonical.pointer_mut(&format!("/support/{i}/file")),
+                        supports.get(k),
+                    ) {
+                        *f = Value::String(format!("fnv1a-128:{h}"));
+                    }
+                }
+                k += usize::from(sp.own().is_some());
+            }
             let y = y.zip(spec_y).map(|((r, _), s)| (r, s));
+            let supports = supports
+                .into_iter()
+                .zip(spec_supports)
+                .map(|((r, _), s)| (r, s))
+                .collect();
             Prepared {
                 key: key_of(&canonical),
                 label,
@@ -106,6 +136,7 @@ fn prepare_one(value: &Value, label: String, cache: &RecordCache) -> Prepared {
                     record,
                     spec,
                     y,
+                    supports,
                 }),
             }
         }
@@ -233,9 +264,19 @@ pub fn run_one(
                 .map_err(|e| format!("ground_motion.y.scale: {e}"))
         })
         .transpose()?;
+    let supports = job
+        .supports
+        .iter()
+        .map(|(r, s)| {
+            (**r)
+                .clone()
+                .scaled(s.scale)
+                .map_err(|e| format!("support.scale: {e}"))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
     let loaded: Loaded = input::build(
         job.doc.clone(),
-        (record, y),
+        (record, y, supports),
         &p.label,
         job.spec.source.clone(),
     )

@@ -12,6 +12,9 @@ pub const MAX_BUILDINGS: usize = 50;
 /// and 0.55 ms per integration step.
 pub const MAX_FLOORS: usize = 2000;
 
+/// Largest number of supports of their own (multi-support excitation).
+pub const MAX_SUPPORTS: usize = 16;
+
 /// Largest number of load-resisting lines of a building in plan.
 pub const MAX_LINES: usize = 100;
 

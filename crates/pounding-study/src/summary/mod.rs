@@ -42,6 +42,22 @@ pub struct RecordSummary {
     pub pga: f64,
 }
 
+/// A support of its own and what stands on it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct SupportSummary {
+    /// Its name.
+    pub name: String,
+    /// How much later than the scenario's record its motion arrives, s (with a record of its own: that
+    /// record's delay).
+    pub delay: f64,
+    /// Whether it has a record of its own (else the scenario's, delayed).
+    pub own_record: bool,
+    /// Its peak ground acceleration, m/s^2.
+    pub pga: f64,
+    /// The buildings and walls on it.
+    pub structures: Vec<String>,
+}
+
 /// The energies at the end of the analysis, J.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct EnergySummary {
@@ -85,6 +101,9 @@ pub struct RunSummary {
     /// and turned by the angle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub record_y: Option<RecordSummary>,
+    /// Supports of their own (multi-support excitation), with the structures on them.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub supports: Vec<SupportSummary>,
     /// Analysed duration, s.
     pub duration: f64,
     /// Output interval of the histories, s.
@@ -157,6 +176,30 @@ impl RunSummary {
                     pga: r.peaks().pga,
                 }
             }),
+            supports: s
+                .supports()
+                .iter()
+                .enumerate()
+                .map(|(k, (name, r))| SupportSummary {
+                    name: name.clone(),
+                    delay: r.delay(),
+                    own_record: loaded.doc.support.get(k).is_some_and(|d| d.own().is_some()),
+                    pga: r.peaks().pga,
+                    structures: s
+                        .buildings()
+                        .iter()
+                        .zip(s.building_supports())
+                        .filter(|(_, &b)| b == k + 1)
+                        .map(|(b, _)| b.name.clone())
+                        .chain(
+                            s.sites()
+                                .iter()
+                                .filter(|w| w.is_wall() && w.support == k + 1)
+                                .map(|w| w.name.clone()),
+                        )
+                        .collect(),
+                })
+                .collect(),
             duration: s.duration(),
             output_dt: s.output_dt(),
             tolerance: s.tolerance(),

@@ -39,16 +39,21 @@ pub fn units() -> Map<String, Value> {
         "plan.peak_storey_shear_y": "N", "plan.peak_torque": "N m", "plan.peak_corner_x": "m (corners counterclockwise from the plan's corner of smallest x and y)",
         "plan.peak_corner_y": "m", "plan.torsional_amplification_x": "largest corner peak / mass centre peak, along x",
         "plan.residual_displacement_y": "m (signed)", "plan.residual_rotation": "rad (signed, counterclockwise)",
+        "sites.points": "m (each level's point on the left building's façade, in the site's frame)",
+    });
+    // Soil and supports (issue 27).
+    let ground = json!({
         "foundation.mass": "kg", "foundation.inertia": "kg m^2", "foundation.kx": "N/m", "foundation.ktheta": "N m/rad",
         "foundation.cx": "N s/m", "foundation.ctheta": "N m s/rad", "foundation.flexible_periods": "s (on the foundation)",
         "foundation.flexible_damping_ratios": "phi^T C phi / 2w (an estimate: the damping is not classical)",
         "foundation.peak_sway": "m", "foundation.peak_rocking": "rad", "foundation.peak_soil_force": "N",
         "foundation.peak_soil_moment": "N m", "foundation.residual_sway": "m (signed)", "foundation.residual_rocking": "rad (signed)",
-        "sites.points": "m (each level's point on the left building's façade, in the site's frame)",
+        "supports.delay": "s (after the scenario's record)", "supports.pga": "m/s^2",
     });
-    match (v, plan) {
-        (Value::Object(mut m), Value::Object(p)) => {
+    match (v, plan, ground) {
+        (Value::Object(mut m), Value::Object(p), Value::Object(g)) => {
             m.extend(p);
+            m.extend(g);
             m
         }
         _ => unreachable!("JSON objects"),

@@ -168,6 +168,7 @@ impl Scenario {
             seat: None,
             active: true,
             plan: None,
+            support: 0,
         });
         Ok(self)
     }
@@ -328,6 +329,7 @@ impl Scenario {
             seat: w.seat,
             active: true,
             plan,
+            support: 0,
         });
         Ok(self)
     }
@@ -498,6 +500,7 @@ impl Scenario {
                     seat: None,
                     active: false,
                     plan: None,
+                    support: 0,
                 });
             }
         }

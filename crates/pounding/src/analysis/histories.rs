@@ -108,7 +108,13 @@ impl Observer for HistoryRecorder {
                     col.push(self.ys[l.u(o + f)]);
                 }
                 for (f, col) in h.absolute_acceleration[b].iter_mut().enumerate() {
-                    col.push(self.rate[l.v(o + f)] + ag);
+                    // A building on a support of its own is shaken by that support's record.
+                    let a = if sys.sourced(o + f) {
+                        sys.ground_at(o + f, t)
+                    } else {
+                        ag
+                    };
+                    col.push(self.rate[l.v(o + f)] + a);
                 }
                 for (j, col) in h.storey_shear[b].iter_mut().enumerate() {
                     let st = &self.storeys[o + j];

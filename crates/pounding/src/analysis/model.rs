@@ -94,7 +94,7 @@ struct Parts {
 
 impl Parts {
     /// A building in one line: one degree of freedom per floor, one storey element per storey.
-    fn in_line(&mut self, st: &crate::structure::ShearBuilding) {
+    fn in_line(&mut self, st: &crate::structure::ShearBuilding, axis: Axis) {
         let (c, a0, base) = st.damping_layout();
         let offset = self.dofs.len();
         for (j, (&k, law)) in st.stiffnesses().iter().zip(st.storey_laws()).enumerate() {
@@ -113,8 +113,11 @@ impl Parts {
                 .push(Element::new(End::Dof(offset + j), bottom, law.law(k)).with_dashpot(c[j]));
         }
         let a0_dof = if base.is_some() { 0.0 } else { a0 };
-        self.dofs
-            .extend(st.masses().iter().map(|&mass| Dof::x(mass, a0_dof)));
+        self.dofs.extend(st.masses().iter().map(|&mass| Dof {
+            mass,
+            a0: a0_dof,
+            axis,
+        }));
         if let (Some(base), true) = (base, a0 > 0.0) {
             for (i, &m) in st.masses().iter().enumerate().filter(|(i, _)| *i != base) {
                 self.base_dashpots
@@ -131,6 +134,7 @@ impl Parts {
         &mut self,
         st: &crate::structure::ShearBuilding,
         f: &crate::structure::Foundation,
+        axis: Axis,
     ) {
         let (a0, a1) = st.rayleigh();
         let offset = self.dofs.len();
@@ -149,9 +153,16 @@ impl Parts {
             self.elements
                 .push(Element::new(point(j), bottom, law.law(k)).with_dashpot(a1 * k));
         }
-        self.dofs
-            .extend(st.masses().iter().map(|&mass| Dof::x(mass, 0.0)));
-        self.dofs.push(Dof::x(f.mass, 0.0));
+        self.dofs.extend(st.masses().iter().map(|&mass| Dof {
+            mass,
+            a0: 0.0,
+            axis,
+        }));
+        self.dofs.push(Dof {
+            mass: f.mass,
+            a0: 0.0,
+            axis,
+        });
         self.dofs.push(Dof {
             mass: f.inertia,
             a0: 0.0,
@@ -228,8 +239,16 @@ impl<'a> Model<'a> {
         let mut per_storey = Vec::new();
         let mut corners = Vec::new();
         let mut lines = Vec::new();
-        for b in s.buildings() {
+        // Multi-support excitation: each building shaken by its support's record, each support's
+        // displacement a driven degree of freedom after the buildings' (for elements between supports).
+        let multi = s.multi_support();
+        for (bi, b) in s.buildings().iter().enumerate() {
             let st = &b.structure;
+            let axis = if multi {
+                Axis::On(s.building_supports()[bi])
+            } else {
+                Axis::X
+            };
             let offset = parts.dofs.len();
             offsets.push(offset);
             first_storey.push(parts.elements.len());
@@ -252,10 +271,24 @@ impl<'a> Model<'a> {
                 None => {
                     per_storey.push(1);
                     match st.foundation() {
-                        Some(f) => parts.on_foundation(st, f),
-                        None => parts.in_line(st),
+                        Some(f) => parts.on_foundation(st, f, axis),
+                        None => parts.in_line(st, axis),
                     }
                 }
+            }
+        }
+        let supports = Supports {
+            base: multi.then_some(parts.dofs.len()),
+            building: s.building_supports().to_vec(),
+        };
+        if multi {
+            for k in 0..=s.supports().len() {
+                parts.dofs.push(Dof {
+                    mass: 1.0,
+                    a0: 0.0,
+                    axis: Axis::Driven(k),
+                });
+                parts.storeys.push(StoreyRef::default());
             }
         }
         let Parts {
@@ -267,8 +300,8 @@ impl<'a> Model<'a> {
         for (a, b, c) in base_dashpots {
             elements.push(Element::new(a, b, Dashpot::new(c)));
         }
-        let contacts = contact_elements(s, &offsets, &mut elements);
-        let devices = device_elements(s, &offsets, &mut elements);
+        let contacts = contact_elements(s, &offsets, &supports, &mut elements);
+        let devices = device_elements(s, &offsets, &supports, &mut elements);
         Self {
             system: System::new(&dofs, elements, s.ground()),
             offsets,
@@ -400,6 +433,19 @@ impl<'a> Model<'a> {
                 }
             }
         }
+        // Driven supports: their displacement and velocity as their records' (after a baseline correction,
+        // a scale, not a bound).
+        if let crate::engine::Ground::Many(rs) = sys.ground() {
+            for i in 0..n {
+                if let crate::engine::Axis::Driven(k) = sys.axis(i) {
+                    let p = rs[k].peaks();
+                    let (u, v) = (p.pgd.max(1e-6), p.pgv.max(1e-6));
+                    (u_scale[i], v_scale[i]) = (u, v);
+                    atol[l.u(i)] = rtol * u;
+                    atol[l.v(i)] = rtol * v;
+                }
+            }
+        }
         atol[l.input()] = rtol * e_scale;
         atol[l.damping()] = rtol * e_scale;
         for (e, el) in sys.elements().iter().enumerate() {
@@ -437,12 +483,13 @@ impl<'a> Model<'a> {
 fn contact_elements(
     s: &Scenario,
     offsets: &[usize],
+    supports: &Supports,
     elements: &mut Vec<Element>,
 ) -> Vec<ContactRef> {
     let mut contacts = Vec::new();
     for (si, site) in s.sites().iter().enumerate() {
         for li in 0..site.levels.len() {
-            let ends = site_ends(s, site, li, offsets);
+            let ends = supports.site(site, site_ends(s, site, li, offsets));
             let m_eff = s.effective_mass(site, li);
             let mut push = |layer, gap, contact: &crate::contact::PreparedContact| {
                 contacts.push(ContactRef {
@@ -469,16 +516,21 @@ fn contact_elements(
 }
 
 /// The elements of every device, floor pair by floor pair (devices join buildings in one line).
-fn device_elements(s: &Scenario, offsets: &[usize], elements: &mut Vec<Element>) -> Vec<DeviceRef> {
+fn device_elements(
+    s: &Scenario,
+    offsets: &[usize],
+    supports: &Supports,
+    elements: &mut Vec<Element>,
+) -> Vec<DeviceRef> {
     let mut devices = Vec::new();
     for (di, d) in s.devices().iter().enumerate() {
         for &(fa, fb) in &d.floors {
             let ends = match d.ends {
-                DeviceEnds::Buildings { left, right } => (
-                    End::Dof(offsets[left] + fa - 1),
-                    End::Dof(offsets[right] + fb - 1),
+                DeviceEnds::Buildings { left, right } => supports.join(
+                    (End::Dof(offsets[left] + fa - 1), supports.building[left]),
+                    (End::Dof(offsets[right] + fb - 1), supports.building[right]),
                 ),
-                DeviceEnds::Wall { site } => {
+                DeviceEnds::Wall { site } => supports.site(&s.sites()[site], {
                     let floor = |b: usize| End::Dof(offsets[b] + fa - 1);
                     match s.sites()[site].kind {
                         SiteKind::Wall { building, side } if side.negative() => {
@@ -489,7 +541,7 @@ fn device_elements(s: &Scenario, offsets: &[usize], elements: &mut Vec<Element>)
                             (floor(building), End::Ground)
                         }
                     }
-                }
+                }),
             };
             devices.push(DeviceRef {
                 element: elements.len(),
@@ -504,6 +556,58 @@ fn device_elements(s: &Scenario, offsets: &[usize], elements: &mut Vec<Element>)
         }
     }
     devices
+}
+
+/// The supports' displacements, for elements between structures on different supports: support `k`'s is
+/// degree of freedom `base + k` (with supports that differ; `None` otherwise).
+struct Supports {
+    base: Option<usize>,
+    building: Vec<usize>,
+}
+
+impl Supports {
+    /// An end that moves with support `k` as well: a floor's displacement relative to its support plus the
+    /// support's, the ground of support `k` its displacement.
+    fn moved(&self, end: End, k: usize) -> End {
+        let Some(base) = self.base else { return end };
+        let g = base + k;
+        match end {
+            End::Ground => End::Dof(g),
+            End::Dof(i) => End::Point(Point::new(&[(i, 1.0), (g, 1.0)])),
+            End::Point(p) => {
+                let mut t = p.terms().to_vec();
+                t.push((g, 1.0));
+                // Points of floors in plan (three terms) stand on the scenario's ground only.
+                End::Point(Point::new(&t))
+            }
+        }
+    }
+
+    /// The ends `a` (on support `sa`) and `b` (on `sb`): as they are on one support, each with its support's
+    /// displacement otherwise.
+    fn join(&self, (a, sa): (End, usize), (b, sb): (End, usize)) -> (End, End) {
+        if sa == sb {
+            (a, b)
+        } else {
+            (self.moved(a, sa), self.moved(b, sb))
+        }
+    }
+
+    /// The ends of an element of `site`: between two buildings on their supports, or a building and its wall
+    /// on the wall's.
+    fn site(&self, site: &ContactSite, (a, b): (End, End)) -> (End, End) {
+        match site.kind {
+            SiteKind::Between { left, right } => {
+                self.join((a, self.building[left]), (b, self.building[right]))
+            }
+            SiteKind::Wall { building, side } if side.negative() => {
+                self.join((a, site.support), (b, self.building[building]))
+            }
+            SiteKind::Wall { building, .. } => {
+                self.join((a, self.building[building]), (b, site.support))
+            }
+        }
+    }
 }
 
 /// The ends of a site's contact element at level `level` (an index in its levels): the left floor and the

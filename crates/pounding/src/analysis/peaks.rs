@@ -101,7 +101,9 @@ impl Peaks {
         for (i, p) in self.acceleration.iter_mut().enumerate() {
             let (px, py) = sys.pull(i);
             // Written so that a floor in one line adds exactly the ground's acceleration.
-            let ag = if py == 0.0 {
+            let ag = if sys.sourced(i) {
+                sys.ground_at(i, t)
+            } else if py == 0.0 {
                 px * gx
             } else {
                 px * gx + py * gy

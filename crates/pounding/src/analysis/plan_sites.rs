@@ -156,6 +156,7 @@ impl Scenario {
             bumper: None,
             seat: None,
             active,
+            support: 0,
             plan: Some(SitePlan {
                 normal: f.normal,
                 points,

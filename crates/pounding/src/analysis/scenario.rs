@@ -63,6 +63,14 @@ pub struct Scenario {
     pub(super) record: Record,
     /// The record along y, on the x record's time grid ([`Scenario::with_ground_y`]).
     pub(super) record_y: Option<Record>,
+    /// Supports of their own (multi-support excitation, [`Scenario::with_support`]): name and record; support
+    /// 0 is the scenario's record, unnamed.
+    pub(super) supports: Vec<(String, Record)>,
+    /// The support of each building (0: the scenario's record).
+    pub(super) building_support: Vec<usize>,
+    /// The scenario's record, then each support's: what the engine's ground is given for multi-support
+    /// excitation (empty without supports).
+    pub(super) many: Vec<Record>,
     pub(super) duration: f64,
     pub(super) output_dt: f64,
     pub(super) tolerance: f64,
@@ -95,12 +103,16 @@ impl Scenario {
             }
         }
         let duration = record.duration();
+        let n = buildings.len();
         Ok(Self {
             buildings,
             sites: Vec::new(),
             devices: Vec::new(),
+            building_support: vec![0; n],
             record,
             record_y: None,
+            supports: Vec::new(),
+            many: Vec::new(),
             duration,
             output_dt: DEFAULT_OUTPUT_DT,
             tolerance: DEFAULT_TOLERANCE,
@@ -271,10 +283,120 @@ impl Scenario {
     }
     /// The ground as the engine moves it: the record along x, or both records.
     pub fn ground(&self) -> crate::engine::Ground<'_> {
+        if self.multi_support() {
+            return crate::engine::Ground::Many(&self.many);
+        }
         match &self.record_y {
             Some(y) => crate::engine::Ground::Plane { x: &self.record, y },
             None => crate::engine::Ground::Record(&self.record),
         }
+    }
+
+    /// Adds a support of its own called `name` (multi-support excitation), shaken by `record` (its own, or the
+    /// scenario's delayed, [`Record::delayed`]): structures put on it ([`Scenario::on_support`]) are shaken by
+    /// it, and a contact or wall between structures on different supports closes by their displacements'
+    /// difference as well (each support's displacement integrated from rest). Buildings in one line only.
+    pub fn with_support(mut self, name: &str, record: Record) -> Result<Self, Error> {
+        if self.supports.iter().any(|(n, _)| n == name) || name.is_empty() {
+            return Err(Error::Choice {
+                name: "support",
+                value: format!("{name:?}"),
+                allowed: "a name used by one support only".into(),
+            });
+        }
+        if self.supports.len() >= crate::limits::MAX_SUPPORTS {
+            return Err(Error::Choice {
+                name: "support",
+                value: format!("{} supports", self.supports.len() + 1),
+                allowed: "at most 16 supports of their own (limits::MAX_SUPPORTS)".into(),
+            });
+        }
+        if self.record_y.is_some() {
+            return Err(Error::Choice {
+                name: "support",
+                value: format!("{name:?}"),
+                allowed: "one ground component: supports of their own shake along x, and this scenario has a record along y".into(),
+            });
+        }
+        self.supports.push((name.to_string(), record));
+        self.many = self.support_records();
+        Ok(self)
+    }
+
+    /// Puts building `building` (by name) on the support called `support`.
+    pub fn with_building_on(mut self, building: &str, support: &str) -> Result<Self, Error> {
+        let b = self.building_index(building)?;
+        if self.buildings[b].structure.plan().is_some() {
+            return Err(Error::Choice {
+                name: "support",
+                value: format!("{support:?}"),
+                allowed: "the scenario's ground under a building in plan: supports of their own are for buildings in one line".into(),
+            });
+        }
+        self.building_support[b] = self.support_index(support)?;
+        Ok(self)
+    }
+
+    /// Puts the wall called `wall` on the support called `support` (it moves with that support's ground).
+    pub fn with_wall_on(mut self, wall: &str, support: &str) -> Result<Self, Error> {
+        let k = self.support_index(support)?;
+        let site = self
+            .sites
+            .iter_mut()
+            .find(|s| s.is_wall() && s.name == wall)
+            .ok_or_else(|| Error::Choice {
+                name: "wall",
+                value: format!("{wall:?}"),
+                allowed: "the name of a wall".into(),
+            })?;
+        site.support = k;
+        Ok(self)
+    }
+
+    /// The index of the support called `name` (from 1; 0 is the scenario's record).
+    pub(super) fn support_index(&self, name: &str) -> Result<usize, Error> {
+        self.supports
+            .iter()
+            .position(|(n, _)| n == name)
+            .map(|k| k + 1)
+            .ok_or_else(|| Error::Choice {
+                name: "support",
+                value: format!("{name:?}"),
+                allowed: if self.supports.is_empty() {
+                    "the name of a [[support]] (there are none)".into()
+                } else {
+                    format!(
+                        "one of the supports: {}",
+                        self.supports
+                            .iter()
+                            .map(|(n, _)| format!("{n:?}"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    )
+                },
+            })
+    }
+
+    /// The supports of their own, name and record, in order (support `k + 1`).
+    pub fn supports(&self) -> &[(String, Record)] {
+        &self.supports
+    }
+    /// The support of each building: 0 for the scenario's record, `k + 1` for [`Scenario::supports`]`[k]`.
+    pub fn building_supports(&self) -> &[usize] {
+        &self.building_support
+    }
+    /// Every record that shakes a support, the scenario's first (index 0): what [`crate::engine::Ground::Many`]
+    /// is given.
+    pub fn support_records(&self) -> Vec<Record> {
+        std::iter::once(self.record.clone())
+            .chain(self.supports.iter().map(|(_, r)| r.clone()))
+            .collect()
+    }
+    /// Whether supports differ: a structure stands on a support whose record is not the scenario's (a run of
+    /// identical supports is the uniform excitation exactly).
+    pub fn multi_support(&self) -> bool {
+        let on = |k: usize| k > 0 && self.supports[k - 1].1 != self.record;
+        self.building_support.iter().any(|&k| on(k)) || self.sites.iter().any(|s| on(s.support))
     }
 
     /// Shakes the ground along y as well, with `y` (the record along x stays [`Scenario::record`]). The two
@@ -283,6 +405,13 @@ impl Scenario {
     /// acceleration is 0 after its last sample). Refused if the steps have no common divisor of at least a
     /// hundredth of the smaller step, or if the first samples are not a whole number of common steps apart.
     pub fn with_ground_y(mut self, y: Record) -> Result<Self, Error> {
+        if !self.supports.is_empty() {
+            return Err(Error::Choice {
+                name: "y",
+                value: "a record along y".into(),
+                allowed: "a scenario without supports of their own (they shake along x)".into(),
+            });
+        }
         let (x, y) = crate::ground_motion::on_one_grid(&self.record, &y)?;
         // A duration left at the record's follows the longer of the two.
         if self.duration == self.record.duration() {

@@ -154,6 +154,9 @@ pub struct ContactSite {
     pub active: bool,
     /// For buildings in plan: the direction the contact elements act along and the point of each level.
     pub plan: Option<SitePlan>,
+    /// A wall's support (0: the scenario's record; `k + 1`: [`super::Scenario::supports`]`[k]`); 0 between
+    /// buildings (each moves with its own).
+    pub support: usize,
 }
 
 /// Where the contact elements of a site between buildings in plan act: along the normal of the facing

@@ -2,6 +2,7 @@
 
 use super::{EventInfo, Ground, Observer, Segment, System};
 use crate::element::Event;
+use crate::ground_motion::Record;
 use crate::integrate::{brent_root, golden_max, OdeSystem, Stepper, Tolerance};
 use crate::Error;
 
@@ -114,6 +115,91 @@ fn earliest_event(
     first
 }
 
+/// The kinks of the ground motion: every sample of its records, where a record arrives late the start of its
+/// ramp, and the end of each record (its acceleration jumps to 0 there).
+enum Kinks<'a> {
+    /// One time grid (one record, or two on one grid): the next sample is `first + k dt`.
+    Grid {
+        first: f64,
+        dt: f64,
+        count: usize,
+        k: usize,
+        ends: [Option<f64>; 2],
+    },
+    /// Records on grids of their own (supports): the earliest next kink of any.
+    Many(&'a [Record]),
+    /// No record.
+    None,
+}
+
+impl<'a> Kinks<'a> {
+    fn of(ground: Ground<'a>) -> Self {
+        match ground {
+            Ground::Record(r) => Kinks::Grid {
+                first: r.t0(),
+                dt: r.dt(),
+                count: r.npts(),
+                k: 0,
+                ends: [Some(r.duration()), None],
+            },
+            // Two components share one grid (their own lengths): both samples and both ends are kinks.
+            Ground::Plane { x, y } => Kinks::Grid {
+                first: x.t0(),
+                dt: x.dt(),
+                count: x.npts().max(y.npts()),
+                k: 0,
+                ends: [Some(x.duration()), Some(y.duration())],
+            },
+            Ground::Many(rs) => Kinks::Many(rs),
+            Ground::Constant(_) => Kinks::None,
+        }
+    }
+
+    /// The first kink after `t`, if any.
+    fn next_after(&mut self, t: f64) -> Option<f64> {
+        match self {
+            Kinks::Grid {
+                first,
+                dt,
+                count,
+                k,
+                ..
+            } => {
+                let at = |k: usize| *first + k as f64 * *dt;
+                while *k < *count && at(*k) <= t {
+                    *k += 1;
+                }
+                (*k < *count).then(|| at(*k))
+            }
+            Kinks::Many(rs) => rs
+                .iter()
+                .filter_map(|r| {
+                    if r.delay() > t {
+                        return Some(r.delay());
+                    }
+                    let (first, dt) = (r.t0(), r.dt());
+                    let mut k = ((t - first) / dt).floor().max(-1.0) as i64 + 1;
+                    while k >= 0 && first + k as f64 * dt <= t {
+                        k += 1;
+                    }
+                    let k = k.max(0) as usize;
+                    (k < r.npts()).then_some(first + k as f64 * dt)
+                })
+                .reduce(f64::min),
+            Kinks::None => None,
+        }
+    }
+
+    /// Whether a record ends at `t` (its acceleration jumps to 0).
+    fn ends_at(&self, t: f64) -> bool {
+        match self {
+            Kinks::Grid { ends, .. } => ends.contains(&Some(t)),
+            Kinks::Many(rs) => rs.iter().any(|r| r.duration() == t),
+            Kinks::None => false,
+        }
+    }
+}
+
 /// Runs `sys` from `(t0, y0)` to `settings.t_end`, or until an element stops it, telling `observer` every
 /// segment and event. Steps end at every sample of a record (its acceleration has a kink there) and restart
 /// where the record ends (its acceleration jumps to 0) and at every event.
@@ -135,19 +221,7 @@ pub fn run(
     dp.reset(sys, t_start, &y0, settings.h0);
     let t_end = settings.t_end;
     // Kinks of the ground motion: the samples of a record, and its end.
-    // Two components share one grid (their own lengths): both samples and both ends are kinks.
-    let (bp_first, bp_dt, bp_count, motion_end) = match sys.ground() {
-        Ground::Record(r) => (r.t0(), r.dt(), r.npts(), [Some(r.duration()), None]),
-        Ground::Plane { x, y } => (
-            x.t0(),
-            x.dt(),
-            x.npts().max(y.npts()),
-            [Some(x.duration()), Some(y.duration())],
-        ),
-        Ground::Constant(_) => (0.0, 1.0, 0, [None, None]),
-    };
-    let breakpoint = |k: usize| bp_first + k as f64 * bp_dt;
-    let mut k_bp = 0usize;
+    let mut kinks = Kinks::of(sys.ground());
     let mut t0 = t_start;
     let mut events = 0usize;
     // Events applied in a row without time advancing: a state that keeps firing is a bug or a model that
@@ -162,14 +236,7 @@ pub fn run(
     let mut states = vec![0.0; most];
     let mut ending = Ending::Time;
     while t0 < t_end {
-        while k_bp < bp_count && breakpoint(k_bp) <= t0 {
-            k_bp += 1;
-        }
-        let t_stop = if k_bp < bp_count {
-            breakpoint(k_bp).min(t_end)
-        } else {
-            t_end
-        };
+        let t_stop = kinks.next_after(t0).map_or(t_end, |t| t.min(t_end));
         dp.step_until(&*sys, t_stop)?;
         let t1 = dp.t();
         let first = earliest_event(sys, &dp, (t0, &y0), &mut states);
@@ -223,7 +290,7 @@ pub fn run(
                 t0 = te;
                 break;
             }
-        } else if motion_end.contains(&Some(t1)) && t1 < t_end {
+        } else if kinks.ends_at(t1) && t1 < t_end {
             let h = dp.h();
             dp.reset(&*sys, t1, &ye, h);
         }

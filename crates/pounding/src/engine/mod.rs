@@ -37,6 +37,10 @@ pub enum Ground<'a> {
         /// Along y.
         y: &'a Record,
     },
+    /// Supports shaken each by its own record along x (multi-support excitation): record 0 is the
+    /// scenario's; a degree of freedom of [`Axis::On`] `k` is shaken by record `k`, one of [`Axis::Driven`] `k`
+    /// moves with it.
+    Many(&'a [Record]),
     /// A constant acceleration along x (gravity pushing a body into a slab is `-g`).
     Constant(f64),
 }
@@ -47,7 +51,18 @@ impl Ground<'_> {
     pub fn at(&self, t: f64) -> f64 {
         match self {
             Ground::Record(r) | Ground::Plane { x: r, .. } => r.at(t),
+            Ground::Many(rs) => rs[0].at(t),
             Ground::Constant(a) => *a,
+        }
+    }
+
+    /// The records that shake the ground (none for a constant acceleration).
+    pub fn records(&self) -> Vec<&Record> {
+        match self {
+            Ground::Record(r) => vec![r],
+            Ground::Plane { x, y } => vec![x, y],
+            Ground::Many(rs) => rs.iter().collect(),
+            Ground::Constant(_) => Vec::new(),
         }
     }
 
@@ -72,6 +87,11 @@ pub enum Axis {
     Y,
     /// A rotation about the vertical axis through the mass centre (its "mass" is a moment of inertia).
     Rotation,
+    /// A translation along x shaken by record `k` of [`Ground::Many`] (a structure on support `k`).
+    On(usize),
+    /// A support's displacement along x: it moves as record `k` of [`Ground::Many`] from rest (its
+    /// acceleration is prescribed; the elements' forces do not move it, and their power on it is input).
+    Driven(usize),
 }
 
 /// A degree of freedom: its mass (kg; for a rotation its moment of inertia, kg m^2), mass-proportional
@@ -145,8 +165,14 @@ pub struct System<'a> {
     inv_mass: Vec<f64>,
     a0: Vec<f64>,
     /// The ground's pull on each degree of freedom per unit mass: `(1, 0)` along x, `(0, 1)` along y,
-    /// `(0, 0)` for a rotation.
+    /// `(0, 0)` for a rotation (and for degrees of freedom of other supports, [`System::source`]).
     pull: Vec<(f64, f64)>,
+    /// The record of [`Ground::Many`] that shakes (or drives) each degree of freedom, where it is not
+    /// record 0 along x: `(k, driven)`.
+    source: Vec<Option<(usize, bool)>>,
+    axes: Vec<Axis>,
+    /// The driven degrees of freedom.
+    driven: Vec<usize>,
     elements: Vec<Element>,
     layout: Layout,
     ground: Ground<'a>,
@@ -156,18 +182,36 @@ impl<'a> System<'a> {
     /// The system of `dofs` and `elements` under `ground`.
     pub fn new(dofs: &[Dof], elements: Vec<Element>, ground: Ground<'a>) -> Self {
         let layout = Layout::new(dofs.len(), elements.iter().map(Element::states));
+        let driven = |d: &Dof| matches!(d.axis, Axis::Driven(_));
         Self {
-            mass: dofs.iter().map(|d| d.mass).collect(),
-            inv_mass: dofs.iter().map(|d| 1.0 / d.mass).collect(),
+            // A driven degree of freedom has no mass (no kinetic energy) and ignores forces.
+            mass: dofs
+                .iter()
+                .map(|d| if driven(d) { 0.0 } else { d.mass })
+                .collect(),
+            inv_mass: dofs
+                .iter()
+                .map(|d| if driven(d) { 0.0 } else { 1.0 / d.mass })
+                .collect(),
             a0: dofs.iter().map(|d| d.a0).collect(),
             pull: dofs
                 .iter()
                 .map(|d| match d.axis {
                     Axis::X => (1.0, 0.0),
                     Axis::Y => (0.0, 1.0),
-                    Axis::Rotation => (0.0, 0.0),
+                    Axis::Rotation | Axis::On(_) | Axis::Driven(_) => (0.0, 0.0),
                 })
                 .collect(),
+            source: dofs
+                .iter()
+                .map(|d| match d.axis {
+                    Axis::On(k) => Some((k, false)),
+                    Axis::Driven(k) => Some((k, true)),
+                    Axis::X | Axis::Y | Axis::Rotation => None,
+                })
+                .collect(),
+            axes: dofs.iter().map(|d| d.axis).collect(),
+            driven: (0..dofs.len()).filter(|&i| driven(&dofs[i])).collect(),
             elements,
             layout,
             ground,
@@ -196,6 +240,37 @@ impl<'a> System<'a> {
     pub fn pull(&self, i: usize) -> (f64, f64) {
         self.pull[i]
     }
+    /// The axis of degree of freedom `i`.
+    #[inline]
+    pub fn axis(&self, i: usize) -> Axis {
+        self.axes[i]
+    }
+
+    /// Whether degree of freedom `i` is shaken (or driven) by a record of [`Ground::Many`] other than the
+    /// pull of [`System::pull`].
+    #[inline]
+    pub fn sourced(&self, i: usize) -> bool {
+        self.source[i].is_some()
+    }
+
+    /// The ground's acceleration that shakes degree of freedom `i` at `t`, m/s^2 (0 for a rotation; a driven
+    /// support's own acceleration).
+    pub fn ground_at(&self, i: usize, t: f64) -> f64 {
+        match (self.source[i], self.ground) {
+            (Some((k, false)), Ground::Many(rs)) => rs[k].at(t),
+            (Some((k, true)), Ground::Many(rs)) => rs[k].at(t),
+            _ => {
+                let (gx, gy) = self.ground.at_xy(t);
+                let (px, py) = self.pull[i];
+                if py == 0.0 {
+                    px * gx
+                } else {
+                    px * gx + py * gy
+                }
+            }
+        }
+    }
+
     /// The ground motion.
     pub fn ground(&self) -> Ground<'a> {
         self.ground
@@ -207,7 +282,7 @@ impl<'a> System<'a> {
     /// shaken along x keeps them all at 0). None for structures in one line.
     pub fn quiet_components(&self) -> Vec<usize> {
         let l = &self.layout;
-        let across = |i: usize| self.pull[i].0 == 0.0;
+        let across = |i: usize| matches!(self.axes[i], Axis::Y | Axis::Rotation);
         let mut quiet: Vec<usize> = (0..l.dofs())
             .filter(|&i| across(i))
             .flat_map(|i| [l.u(i), l.v(i)])
@@ -327,8 +402,13 @@ impl OdeSystem for System<'_> {
         // Forces first (N), divided by the masses at the end.
         for i in 0..n {
             let (m, vi) = (self.mass[i], y[n + i]);
-            let (px, py) = self.pull[i];
-            let ag = px * agx + py * agy;
+            let ag = match (self.source[i], self.ground) {
+                (Some((k, _)), Ground::Many(rs)) => rs[k].at(t),
+                _ => {
+                    let (px, py) = self.pull[i];
+                    px * agx + py * agy
+                }
+            };
             dy[n + i] = -m * (ag + self.a0[i] * vi);
             e_in -= ag * m * vi;
             e_damp += self.a0[i] * m * vi * vi;
@@ -350,8 +430,20 @@ impl OdeSystem for System<'_> {
             }
             e_damp += fv * v;
         }
+        // A driven support takes the elements' forces without moving for them: their power on it is work
+        // the support does on the structure.
+        for &i in &self.driven {
+            e_in -= dy[n + i] * y[n + i];
+        }
         for i in 0..n {
             dy[n + i] *= self.inv_mass[i];
+        }
+        if let Ground::Many(rs) = self.ground {
+            for &i in &self.driven {
+                if let Some((k, _)) = self.source[i] {
+                    dy[n + i] = rs[k].at(t);
+                }
+            }
         }
         dy[self.layout.input()] = e_in;
         dy[self.layout.damping()] = e_damp;

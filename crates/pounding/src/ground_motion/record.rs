@@ -26,6 +26,8 @@ pub struct Record {
     dt: f64,
     t0: f64,
     acc: Vec<f64>,
+    /// The record arrives this late, s: everything (its ramp from rest included) happens `delay` later.
+    delay: f64,
 }
 
 /// Peak values of a record.
@@ -95,6 +97,7 @@ impl Record {
             dt,
             t0,
             acc,
+            delay: 0.0,
         })
     }
 
@@ -202,17 +205,34 @@ impl Record {
     pub fn dt(&self) -> f64 {
         self.dt
     }
-    /// Time of the first sample, s.
+    /// Time of the first sample, s (with the delay).
     pub fn t0(&self) -> f64 {
-        self.t0
+        self.t0 + self.delay
+    }
+    /// How late the record arrives, s ([`Record::delayed`]).
+    pub fn delay(&self) -> f64 {
+        self.delay
+    }
+
+    /// The same record arriving `tau` seconds later (s, finite, >= 0): its acceleration at `t` is the
+    /// record's at `t - tau`, at rest before `tau` (wave passage: `tau = distance / apparent velocity`).
+    pub fn delayed(mut self, tau: f64) -> Result<Self, Error> {
+        check(
+            "delay",
+            tau,
+            (0.0..=1e4).contains(&tau),
+            "0 <= delay <= 1e4 (s)",
+        )?;
+        self.delay += tau;
+        Ok(self)
     }
     /// Number of samples.
     pub fn npts(&self) -> usize {
         self.acc.len()
     }
-    /// Time of the last sample, s.
+    /// Time of the last sample, s (with the delay).
     pub fn duration(&self) -> f64 {
-        self.t0 + (self.acc.len() - 1) as f64 * self.dt
+        self.t0() + (self.acc.len() - 1) as f64 * self.dt
     }
     /// Accelerations, m/s^2.
     pub fn accelerations(&self) -> &[f64] {
@@ -222,9 +242,11 @@ impl Record {
     /// Ground acceleration at time `t` (s), m/s^2: linear between samples, a ramp from rest before `t0`,
     /// zero after the last sample.
     pub fn at(&self, t: f64) -> f64 {
-        if t <= 0.0 || t > self.duration() {
+        if t <= self.delay || t > self.duration() {
             return 0.0;
         }
+        // The undelayed record's time (exactly t when there is no delay).
+        let t = if self.delay == 0.0 { t } else { t - self.delay };
         if t < self.t0 {
             return self.acc[0] * t / self.t0;
         }
@@ -305,7 +327,7 @@ impl Record {
         Peaks {
             pga: a_max.abs(),
             pga_signed: a_max,
-            pga_time: times(k_max),
+            pga_time: times(k_max) + self.delay,
             pgv,
             pgd,
         }

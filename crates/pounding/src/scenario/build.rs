@@ -86,7 +86,7 @@ impl GroundMotionDoc {
         y.spec_at("ground_motion.y").map(Some)
     }
 
-    fn spec_at(&self, at: &str) -> Result<RecordSpec, SchemaError> {
+    pub(super) fn spec_at(&self, at: &str) -> Result<RecordSpec, SchemaError> {
         let table = format!("[{at}]");
         let key = |k: &str| format!("{at}.{k}");
         let (source, is_file) = match (&self.record, &self.file) {
@@ -153,13 +153,101 @@ impl ScenarioDoc {
     /// The scenario under `record` (the one [`GroundMotionDoc::spec`] names, loaded and scaled by the
     /// caller), validated: buildings, settings and contacts.
     pub fn build(&self, record: Record) -> Result<Scenario, SchemaError> {
-        self.build_with(record, None)
+        self.build_full(record, None, Vec::new())
+    }
+
+    /// The record of each `[[support]]` that has one of its own (`None` for a delayed copy of the scenario's),
+    /// checked as [`GroundMotionDoc::spec`]: what a caller loads for [`ScenarioDoc::build_full`].
+    pub fn support_specs(&self) -> Result<Vec<Option<RecordSpec>>, SchemaError> {
+        self.support
+            .iter()
+            .enumerate()
+            .map(|(i, sp)| {
+                sp.own()
+                    .map(|gm| gm.spec_at(&format!("support.{i}")))
+                    .transpose()
+            })
+            .collect()
+    }
+
+    /// The scenario under `record` along x and `y` along y, its supports' own records `supports` (one per
+    /// `[[support]]` with a record of its own, in order, loaded and scaled by the caller).
+    pub fn build_full(
+        &self,
+        record: Record,
+        y: Option<Record>,
+        supports: Vec<Record>,
+    ) -> Result<Scenario, SchemaError> {
+        let own = self.support.iter().filter(|s| s.own().is_some()).count();
+        if own != supports.len() {
+            return Err(SchemaError::new(
+                "support",
+                format!("{own} supports have records of their own, and {} were given: load them (ScenarioDoc::support_specs)", supports.len()),
+            ));
+        }
+        let mut s = self.build_base(record, y)?;
+        let mut own = supports.into_iter();
+        for (i, sp) in self.support.iter().enumerate() {
+            let at = format!("support.{i}");
+            check_name(&at, &sp.name, FREE_NAME, |_| false)?;
+            let base = match sp.own() {
+                Some(_) => own.next().expect("counted above"),
+                None => s.record().clone(),
+            };
+            let delay = match (sp.delay, sp.distance, sp.apparent_velocity) {
+                (Some(d), None, None) => d,
+                (None, Some(d), Some(v)) => {
+                    if !(d.is_finite() && d >= 0.0 && v.is_finite() && v > 0.0) {
+                        return Err(SchemaError::new(
+                            format!("{at}.apparent_velocity"),
+                            format!("support {:?}: distance = {} and apparent_velocity = {} are not allowed: distance >= 0 (m), apparent_velocity > 0 (m/s)", sp.name, crate::words::number(d), crate::words::number(v)),
+                        ));
+                    }
+                    d / v
+                }
+                (None, None, None) if sp.own().is_some() => 0.0,
+                _ => {
+                    return Err(SchemaError::new(
+                        format!("{at}.delay"),
+                        format!("support {:?}: give delay (s), or distance (m) with apparent_velocity (m/s), or a record of its own", sp.name),
+                    ))
+                }
+            };
+            let rec = base
+                .delayed(delay)
+                .map_err(|e| lib(&at, &format!("support {:?}", sp.name), e))?;
+            s = s.with_support(&sp.name, rec).map_err(|e| lib(&at, "", e))?;
+        }
+        for (i, b) in self.building.iter().enumerate() {
+            if let Some(name) = &b.support {
+                s = s.with_building_on(&b.name, name).map_err(|e| {
+                    lib(
+                        &format!("building.{i}"),
+                        &format!("building {:?}", b.name),
+                        e,
+                    )
+                })?;
+            }
+        }
+        for (i, w) in self.wall.iter().enumerate() {
+            if let Some(name) = &w.support {
+                s = s
+                    .with_wall_on(&w.name, name)
+                    .map_err(|e| lib(&format!("wall.{i}"), &format!("wall {:?}", w.name), e))?;
+            }
+        }
+        Ok(s)
     }
 
     /// The scenario under `record` along x and `y` along y (the record [`GroundMotionDoc::spec_y`] names,
     /// loaded and scaled by the caller; required if the scenario has `[ground_motion.y]`), validated. The
     /// records are put on one time grid and turned by `angle`.
     pub fn build_with(&self, record: Record, y: Option<Record>) -> Result<Scenario, SchemaError> {
+        self.build_full(record, y, Vec::new())
+    }
+
+    /// The scenario under its records, before its supports of their own.
+    fn build_base(&self, record: Record, y: Option<Record>) -> Result<Scenario, SchemaError> {
         let gm = &self.ground_motion;
         if gm.y.is_some() != y.is_some() {
             return Err(SchemaError::new(

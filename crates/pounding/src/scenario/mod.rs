@@ -54,6 +54,10 @@ pub struct ScenarioDoc {
     /// Devices between neighbours.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub device: Vec<DeviceDoc>,
+    /// Supports of their own (multi-support excitation): buildings and walls on them (`support = "name"`)
+    /// are shaken by their record.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub support: Vec<SupportDoc>,
     /// `"on"` (default) or `"off"`: the same structures with every contact and wall inactive (they record
     /// closings only; devices stay), the response that pounding amplifies.
     #[serde(default, skip_serializing_if = "Contacts::is_on")]
@@ -181,6 +185,9 @@ pub struct BuildingDoc {
     /// (soil–structure interaction) instead of a fixed base.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub foundation: Option<FoundationDoc>,
+    /// The `[[support]]` it stands on (default: the scenario's ground).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub support: Option<String>,
 }
 
 /// `[building.foundation]`: a rigid foundation (its mass and moment of inertia) on sway and rocking springs
@@ -222,6 +229,61 @@ pub struct FoundationDoc {
     /// `[a, b]`: a rectangular foundation's sides, m, `a` along the motion.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub size: Option<[f64; 2]>,
+}
+
+/// `[[support]]`: a support with its own ground motion: the scenario's record arriving later (`delay`, or
+/// `distance` over `apparent_velocity`: wave passage), or a record of its own (the keys of
+/// `[ground_motion]`), itself delayed if asked.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct SupportDoc {
+    /// Name, unique among supports: 1 to 64 bytes without control characters.
+    pub name: String,
+    /// How much later the motion arrives, s (>= 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub delay: Option<f64>,
+    /// Distance from the scenario's ground to this support along the wave's path, m (with
+    /// `apparent_velocity`: the delay `distance / apparent_velocity`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub distance: Option<f64>,
+    /// The wave's apparent velocity along the ground, m/s.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub apparent_velocity: Option<f64>,
+    /// A built-in record of its own (instead of the scenario's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub record: Option<String>,
+    /// A record file of its own (relative to the scenario's folder).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
+    /// The file's format (as `[ground_motion]`'s).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub format: Option<FormatName>,
+    /// Time step of a `values` file, s.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+    /// Units of the file's accelerations (as `[ground_motion]`'s).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub units: Option<Units>,
+    /// Scale factor on its own record (dimensionless, default 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scale: Option<f64>,
+}
+
+impl SupportDoc {
+    /// Its own record as a `[ground_motion]` entry, if it has one.
+    pub fn own(&self) -> Option<GroundMotionDoc> {
+        (self.record.is_some() || self.file.is_some()).then(|| GroundMotionDoc {
+            record: self.record.clone(),
+            file: self.file.clone(),
+            format: self.format,
+            dt: self.dt,
+            units: self.units,
+            scale: self.scale.unwrap_or(1.0),
+            y: None,
+            angle: None,
+        })
+    }
 }
 
 /// `[building.plan]`: a rectangular plan, its place in the site's frame, its floors' mass centres and
@@ -500,6 +562,9 @@ with_contact_law! {
         /// Seat length for the unseating check (an abutment's seat), m.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pub seat: Option<f64>,
+        /// The `[[support]]` it stands on (default: the scenario's ground).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub support: Option<String>,
     }
 }
 

@@ -19,6 +19,7 @@ mod reliability;
 mod restitution;
 mod separation;
 mod soil;
+mod supports;
 
 use pounding::contact::{ContactModel, Damping, ForceLaw, Model, Tension};
 use pounding::impact::{simulate, ImpactOptions, ImpactResult, ImpactSetup};

@@ -33,6 +33,37 @@ pub fn print(loaded: &Loaded, file: &Path) {
         fmt_num(s.output_dt()),
         s.tolerance()
     );
+    for (k, (name, r)) in s.supports().iter().enumerate() {
+        let on: Vec<&str> = s
+            .buildings()
+            .iter()
+            .zip(s.building_supports())
+            .filter(|(_, &b)| b == k + 1)
+            .map(|(b, _)| b.name.as_str())
+            .chain(
+                s.sites()
+                    .iter()
+                    .filter(|w| w.is_wall() && w.support == k + 1)
+                    .map(|w| w.name.as_str()),
+            )
+            .collect();
+        let own = loaded.doc.support.get(k).is_some_and(|d| d.own().is_some());
+        println!(
+            "support   {name}: {}, arriving {} s later, PGA {} m/s^2; under {}",
+            if own {
+                "a record of its own"
+            } else {
+                "the record above"
+            },
+            fmt_num(r.delay()),
+            fmt_sig(r.peaks().pga, 4),
+            if on.is_empty() {
+                "nothing".to_string()
+            } else {
+                on.join(", ")
+            }
+        );
+    }
     for b in s.buildings() {
         building(b);
     }
