@@ -14,8 +14,8 @@ pub use building::{BuildingSummary, FoundationSummary, IsolatorSummary};
 pub use device::DeviceSummary;
 pub use plan::{LineSummary, PlanModeSummary, PlanSummary};
 pub use site::{
-    BumperSummary, ContactLawSummary, DampingSummary, DeliveredE, LevelSummary, SitePlace,
-    SiteSummary,
+    BumperSummary, ColumnSummary, ContactLawSummary, DampingSummary, DeliveredE, LevelSummary,
+    SitePlace, SiteSummary,
 };
 
 use crate::input::Loaded;

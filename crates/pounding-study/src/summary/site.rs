@@ -240,6 +240,47 @@ pub struct SiteSummary {
     /// The delivered e of its ended impacts (absent without one).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub e_delivered: Option<DeliveredE>,
+    /// A slab striking a column between its floors: the column and its demand.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub column: Option<ColumnSummary>,
+}
+
+/// A column struck between its floors, and its demand.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct ColumnSummary {
+    /// The building whose column is struck.
+    pub building: String,
+    /// The storey struck, from 1.
+    pub storey: usize,
+    /// Height of the strike above the storey's lower floor, m.
+    pub height: f64,
+    /// The column's length (the storey's height), m.
+    pub length: f64,
+    /// Its flexural rigidity, N m^2.
+    #[serde(rename = "EI")]
+    pub ei: f64,
+    /// Its stiffness at the point, `3 EI L^3 / (a^3 b^3)`, N/m.
+    pub stiffness: f64,
+    /// The mass its point carries, kg.
+    pub point_mass: f64,
+    /// Largest |force| on it at the point, N.
+    pub peak_force: f64,
+    /// Largest |shear| at its lower and upper ends, N.
+    pub peak_shear: [f64; 2],
+    /// Largest |moment| at its lower and upper ends, N m.
+    pub peak_moment: [f64; 2],
+    /// Shear capacity, N.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shear_capacity: Option<f64>,
+    /// Moment capacity, N m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moment_capacity: Option<f64>,
+    /// Whether a shear exceeded the shear capacity.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shear_exceeded: Option<bool>,
+    /// Whether a moment exceeded the moment capacity.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moment_exceeded: Option<bool>,
 }
 
 impl SiteSummary {
@@ -277,6 +318,28 @@ impl SiteSummary {
             max_opening: lr.max_opening.clone(),
             seat: site.seat,
             unseated: site.seat.and(lr.unseated),
+            column: site.column.as_ref().and_then(|c| {
+                let (col, resp) = (c.struck?, lr.column.as_ref()?);
+                let SiteKind::Between { left, right } = site.kind else {
+                    return None;
+                };
+                Some(ColumnSummary {
+                    building: names(if c.on_left { left } else { right }),
+                    storey: c.storey,
+                    height: col.a,
+                    length: col.length,
+                    ei: col.ei,
+                    stiffness: col.stiffness(),
+                    point_mass: col.point_mass(),
+                    peak_force: resp.peak_force,
+                    peak_shear: [resp.peak_shear.0, resp.peak_shear.1],
+                    peak_moment: [resp.peak_moment.0, resp.peak_moment.1],
+                    shear_capacity: col.shear_capacity,
+                    moment_capacity: col.moment_capacity,
+                    shear_exceeded: resp.shear_exceeded,
+                    moment_exceeded: resp.moment_exceeded,
+                })
+            }),
             e_delivered: r.delivered_e(i).map(|(min, max)| DeliveredE {
                 min,
                 max,

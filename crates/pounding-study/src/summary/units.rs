@@ -48,6 +48,9 @@ pub fn units() -> Map<String, Value> {
         "foundation.flexible_damping_ratios": "phi^T C phi / 2w (an estimate: the damping is not classical)",
         "foundation.peak_sway": "m", "foundation.peak_rocking": "rad", "foundation.peak_soil_force": "N",
         "foundation.peak_soil_moment": "N m", "foundation.residual_sway": "m (signed)", "foundation.residual_rocking": "rad (signed)",
+        "column.height": "m (above the storey's lower floor)", "column.length": "m", "column.EI": "N m^2",
+        "column.stiffness": "N/m (at the point)", "column.point_mass": "kg", "column.peak_force": "N",
+        "column.peak_shear": "N [lower end, upper end]", "column.peak_moment": "N m [lower end, upper end]",
         "supports.delay": "s (after the scenario's record)", "supports.pga": "m/s^2",
     });
     match (v, plan, ground) {

@@ -169,6 +169,7 @@ impl Scenario {
             active: true,
             plan: None,
             support: 0,
+            column: None,
         });
         Ok(self)
     }
@@ -189,7 +190,8 @@ impl Scenario {
         ];
         self.sites
             .iter()
-            .position(|s| pairs.contains(&s.kind))
+            // A column contact is an entry of its own.
+            .position(|s| pairs.contains(&s.kind) && s.column.is_none())
             .ok_or_else(|| {
                 choice(
                     "between",
@@ -330,6 +332,7 @@ impl Scenario {
             active: true,
             plan,
             support: 0,
+            column: None,
         });
         Ok(self)
     }
@@ -478,7 +481,7 @@ impl Scenario {
                 left,
                 right: left + 1,
             };
-            if s.sites.iter().any(|l| l.kind == pair) {
+            if s.sites.iter().any(|l| l.kind == pair && l.column.is_none()) {
                 continue;
             }
             let floors = self.aligned_floors(left);
@@ -501,6 +504,7 @@ impl Scenario {
                     active: false,
                     plan: None,
                     support: 0,
+                    column: None,
                 });
             }
         }

@@ -24,6 +24,7 @@
 //! recorded by observers of the engine ([`RunOptions`]).
 
 mod assemble;
+mod column_sites;
 mod devices;
 mod facades;
 mod histories;
@@ -42,13 +43,15 @@ pub use assemble::NO_CONTACT_GAP;
 pub use devices::{Device, DeviceEnds, DeviceSpec};
 pub use plausibility::{PLAUSIBLE_PERIOD, PLAUSIBLE_PGA_G};
 pub use results::{
-    BuildingResponse, DeviceResponse, EnergyBalance, FoundationResponse, Histories, Impact,
-    ImpactLoop, LineResponse, PlanResponse, Results, SiteResponse, Statistics, MAX_LOOP_POINTS,
+    BuildingResponse, ColumnResponse, DeviceResponse, EnergyBalance, FoundationResponse, Histories,
+    Impact, ImpactLoop, LineResponse, PlanResponse, Results, SiteResponse, Statistics,
+    MAX_LOOP_POINTS,
 };
 pub use run::{Progress, RunOptions};
 pub use scenario::{
     Building, Scenario, DEFAULT_MIN_IMPACT_VELOCITY, DEFAULT_OUTPUT_DT, DEFAULT_TOLERANCE,
 };
 pub use sites::{
-    Bumper, ContactSite, Layer, Level, LinkSpec, PlanLinkSpec, Side, SiteKind, SitePlan, WallSpec,
+    Bumper, ColumnLinkSpec, ContactSite, Layer, Level, LinkSpec, PlanLinkSpec, Side, SiteColumn,
+    SiteKind, SitePlan, WallSpec,
 };

@@ -22,6 +22,15 @@ pub(super) struct ContactRef {
     pub layer: Layer,
 }
 
+/// A struck column's point.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct ColumnRef {
+    /// Its site (index in [`Scenario::sites`]).
+    pub site: usize,
+    /// The degree of freedom of the point struck.
+    pub dof: usize,
+}
+
 /// A device element and where it stands.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct DeviceRef {
@@ -74,6 +83,8 @@ pub(super) struct Model<'a> {
     pub corners: Vec<Point>,
     /// The elements of the lines of every building in plan, building by building, storey by storey.
     pub lines: Vec<usize>,
+    /// The struck columns: their site and their point's degree of freedom.
+    pub columns: Vec<ColumnRef>,
     /// The contact elements, site by site, level by level; a bumper's layer comes before the hard law
     /// behind it.
     pub contacts: Vec<ContactRef>,
@@ -192,6 +203,59 @@ impl Parts {
         }
     }
 
+    /// The struck columns' points (after the buildings' degrees of freedom), each on its spring to its
+    /// building's floors (their translations through the column's shape functions; the building's
+    /// stiffness-proportional damping on it): the columns, and each site's point (`None` for others).
+    fn columns(
+        &mut self,
+        s: &Scenario,
+        offsets: &[usize],
+        axis_of: &dyn Fn(usize) -> Axis,
+    ) -> (Vec<ColumnRef>, Vec<Option<usize>>) {
+        let mut refs = Vec::new();
+        let mut dofs = vec![None; s.sites().len()];
+        for (si, site) in s.sites().iter().enumerate() {
+            let (Some(c), SiteKind::Between { left, right }) = (&site.column, site.kind) else {
+                continue;
+            };
+            let Some(col) = c.struck else { continue };
+            let b = if c.on_left { left } else { right };
+            let o = offsets[b];
+            let dof = self.dofs.len();
+            self.dofs.push(Dof {
+                mass: col.point_mass(),
+                a0: 0.0,
+                axis: axis_of(b),
+            });
+            let element = self.elements.len();
+            self.storeys.push(StoreyRef {
+                below: None,
+                tilt: None,
+                elements: vec![(element, 1.0)],
+            });
+            let (n1, n2) = col.shears();
+            let j = c.storey;
+            let floors = if j == 1 {
+                Point::new(&[(o, n2)])
+            } else {
+                Point::new(&[(o + j - 2, n1), (o + j - 1, n2)])
+            };
+            let k = col.stiffness();
+            let a1 = s.buildings()[b].structure.rayleigh().1;
+            self.elements.push(
+                Element::new(
+                    End::Dof(dof),
+                    End::Point(floors),
+                    crate::element::StoreyLaw::Linear.law(k),
+                )
+                .with_dashpot(a1 * k),
+            );
+            dofs[si] = Some(dof);
+            refs.push(ColumnRef { site: si, dof });
+        }
+        (refs, dofs)
+    }
+
     /// A building in plan: x, y and rotation of every floor (x block, y block, rotation block), one element
     /// per line per storey (storey by storey), with Rayleigh damping `a0 M + a1 K_0` of the plan's modes.
     fn in_plan(&mut self, plan: &Plan) {
@@ -277,6 +341,14 @@ impl<'a> Model<'a> {
                 }
             }
         }
+        let axis_of = |b: usize| {
+            if multi {
+                Axis::On(s.building_supports()[b])
+            } else {
+                Axis::X
+            }
+        };
+        let (columns, column_dofs) = parts.columns(s, &offsets, &axis_of);
         let supports = Supports {
             base: multi.then_some(parts.dofs.len()),
             building: s.building_supports().to_vec(),
@@ -300,7 +372,7 @@ impl<'a> Model<'a> {
         for (a, b, c) in base_dashpots {
             elements.push(Element::new(a, b, Dashpot::new(c)));
         }
-        let contacts = contact_elements(s, &offsets, &supports, &mut elements);
+        let contacts = contact_elements(s, (&offsets, &column_dofs), &supports, &mut elements);
         let devices = device_elements(s, &offsets, &supports, &mut elements);
         Self {
             system: System::new(&dofs, elements, s.ground()),
@@ -310,6 +382,7 @@ impl<'a> Model<'a> {
             storeys,
             corners,
             lines,
+            columns,
             contacts,
             devices,
         }
@@ -433,19 +506,7 @@ impl<'a> Model<'a> {
                 }
             }
         }
-        // Driven supports: their displacement and velocity as their records' (after a baseline correction,
-        // a scale, not a bound).
-        if let crate::engine::Ground::Many(rs) = sys.ground() {
-            for i in 0..n {
-                if let crate::engine::Axis::Driven(k) = sys.axis(i) {
-                    let p = rs[k].peaks();
-                    let (u, v) = (p.pgd.max(1e-6), p.pgv.max(1e-6));
-                    (u_scale[i], v_scale[i]) = (u, v);
-                    atol[l.u(i)] = rtol * u;
-                    atol[l.v(i)] = rtol * v;
-                }
-            }
-        }
+        self.point_and_support_scales(s, rtol, &mut atol, (&mut u_scale, &mut v_scale));
         atol[l.input()] = rtol * e_scale;
         atol[l.damping()] = rtol * e_scale;
         for (e, el) in sys.elements().iter().enumerate() {
@@ -479,17 +540,61 @@ impl<'a> Model<'a> {
     }
 }
 
+impl Model<'_> {
+    /// The scales of the struck columns' points (as their buildings' floors) and of the driven supports
+    /// (their records' displacement and velocity, after a baseline correction: a scale, not a bound).
+    fn point_and_support_scales(
+        &self,
+        s: &Scenario,
+        rtol: f64,
+        atol: &mut [f64],
+        (u_scale, v_scale): (&mut [f64], &mut [f64]),
+    ) {
+        let sys = &self.system;
+        let l = sys.layout();
+        for c in &self.columns {
+            let site = &s.sites()[c.site];
+            if let (SiteKind::Between { left, right }, Some(col)) = (site.kind, &site.column) {
+                let o = self.offsets[if col.on_left { left } else { right }];
+                (u_scale[c.dof], v_scale[c.dof]) = (u_scale[o], v_scale[o]);
+                atol[l.u(c.dof)] = atol[l.u(o)];
+                atol[l.v(c.dof)] = atol[l.v(o)];
+            }
+        }
+        if let crate::engine::Ground::Many(rs) = sys.ground() {
+            for i in 0..l.dofs() {
+                if let crate::engine::Axis::Driven(k) = sys.axis(i) {
+                    let p = rs[k].peaks();
+                    let (u, v) = (p.pgd.max(1e-6), p.pgv.max(1e-6));
+                    (u_scale[i], v_scale[i]) = (u, v);
+                    atol[l.u(i)] = rtol * u;
+                    atol[l.v(i)] = rtol * v;
+                }
+            }
+        }
+    }
+}
+
 /// The contact elements of every site, level by level.
 fn contact_elements(
     s: &Scenario,
-    offsets: &[usize],
+    (offsets, columns): (&[usize], &[Option<usize>]),
     supports: &Supports,
     elements: &mut Vec<Element>,
 ) -> Vec<ContactRef> {
     let mut contacts = Vec::new();
     for (si, site) in s.sites().iter().enumerate() {
         for li in 0..site.levels.len() {
-            let ends = supports.site(site, site_ends(s, site, li, offsets));
+            let mut ends = site_ends(s, site, li, offsets);
+            // A struck column's side is its point.
+            if let (Some(dof), Some(c)) = (columns[si], &site.column) {
+                if c.on_left {
+                    ends.0 = End::Dof(dof);
+                } else {
+                    ends.1 = End::Dof(dof);
+                }
+            }
+            let ends = supports.site(site, ends);
             let m_eff = s.effective_mass(site, li);
             let mut push = |layer, gap, contact: &crate::contact::PreparedContact| {
                 contacts.push(ContactRef {

@@ -157,6 +157,7 @@ impl Scenario {
             seat: None,
             active,
             support: 0,
+            column: None,
             plan: Some(SitePlan {
                 normal: f.normal,
                 points,

@@ -159,6 +159,25 @@ pub struct SiteResponse {
     /// Largest |displacement| of each level's two ends along the contact, m: `[left, right]` (a floor's;
     /// a point's along the normal for a floor in plan; 0 on a wall's side).
     pub peak_ends: Vec<[f64; 2]>,
+    /// A slab striking a column: the column's demand.
+    pub column: Option<ColumnResponse>,
+}
+
+/// The demand on a column struck between its floors ([`crate::structure::StruckColumn`]): the force its
+/// point's spring carries (the column's own, between the contact and the floors), and the end shears and
+/// moments it makes, peaks over the run (at the integration nodes and the point's extrema).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ColumnResponse {
+    /// Largest |force| on the column at the point, N.
+    pub peak_force: f64,
+    /// Largest |shear| at its lower and upper ends, N.
+    pub peak_shear: (f64, f64),
+    /// Largest |moment| at its lower and upper ends, N m.
+    pub peak_moment: (f64, f64),
+    /// Whether a shear exceeded the shear capacity (`None` without one).
+    pub shear_exceeded: Option<bool>,
+    /// Whether a moment exceeded the moment capacity (`None` without one).
+    pub moment_exceeded: Option<bool>,
 }
 
 /// Peaks of one device, per floor pair ([`super::Device::floors`] order).

@@ -6,8 +6,8 @@ use super::model::Model;
 use super::peaks::{DevicePeaks, Peak, Peaks};
 use super::recorders::Recorders;
 use super::{
-    BuildingResponse, DeviceResponse, EnergyBalance, FoundationResponse, Histories, Layer,
-    LineResponse, PlanResponse, Results, Scenario, SiteResponse, Statistics,
+    BuildingResponse, ColumnResponse, DeviceResponse, EnergyBalance, FoundationResponse, Histories,
+    Layer, LineResponse, PlanResponse, Results, Scenario, SiteResponse, Statistics,
 };
 use crate::engine::{self, Outcome, Settings};
 use crate::Error;
@@ -492,6 +492,19 @@ fn site_totals(
         max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
         max_closing: per(&rec.impacts.max_closing),
         peak_ends: first.iter().map(|&k| rec.impacts.end_peaks[k]).collect(),
+        column: model.columns.iter().find(|c| c.site == site).and_then(|c| {
+            let col = s.sites()[site].column.as_ref()?.struck?;
+            let f = rec.peaks.shear[c.dof];
+            let ((s1, s2), (m1, m2)) = (col.shears(), col.moments());
+            let (shear, moment) = ((s1 * f, s2 * f), (m1 * f, m2 * f));
+            Some(ColumnResponse {
+                peak_force: f,
+                peak_shear: shear,
+                peak_moment: moment,
+                shear_exceeded: col.shear_capacity.map(|cap| shear.0.max(shear.1) > cap),
+                moment_exceeded: col.moment_capacity.map(|cap| moment.0.max(moment.1) > cap),
+            })
+        }),
         unseated: s.sites()[site]
             .seat
             .map(|seat| max_opening.iter().any(|&o| o > seat)),

@@ -241,9 +241,18 @@ impl Scenario {
                 _ => st.masses()[floor - 1],
             }
         };
+        // A struck column's side meets the mass its point carries.
+        let column = site
+            .column
+            .as_ref()
+            .and_then(|c| c.struck.map(|col| (c.on_left, col.point_mass())));
         match site.kind {
             SiteKind::Between { left, right } => {
-                let (ml, mr) = (mass(left, lv.left), mass(right, lv.right));
+                let (ml, mr) = match column {
+                    Some((true, m)) => (m, mass(right, lv.right)),
+                    Some((false, m)) => (mass(left, lv.left), m),
+                    None => (mass(left, lv.left), mass(right, lv.right)),
+                };
                 ml * mr / (ml + mr)
             }
             SiteKind::Wall { building, side } => {

@@ -157,6 +157,43 @@ pub struct ContactSite {
     /// A wall's support (0: the scenario's record; `k + 1`: [`super::Scenario::supports`]`[k]`); 0 between
     /// buildings (each moves with its own).
     pub support: usize,
+    /// A slab striking a neighbour's column ([`super::Scenario::with_column_contact`]).
+    pub column: Option<SiteColumn>,
+}
+
+/// A site where a slab strikes a neighbour: between its floors (a column struck at a height), or at one of
+/// them (`struck` `None`: a floor contact, made by a column entry).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SiteColumn {
+    /// Whether the struck building is the left one.
+    pub on_left: bool,
+    /// The column struck, between floors `storey - 1` and `storey` of its building (`None`: the slab meets a
+    /// floor, and the level's floors say which).
+    pub struck: Option<crate::structure::StruckColumn>,
+    /// The storey struck, from 1 (its building's), or the floor met.
+    pub storey: usize,
+}
+
+/// What a slab striking a neighbour's column is given: checked by [`super::Scenario::with_column_contact`]
+/// (a scenario file's `[[column_contact]]`).
+#[derive(Clone, Debug)]
+pub struct ColumnLinkSpec {
+    /// The building whose slab strikes, and the slab's floor, from 1.
+    pub slab: (String, usize),
+    /// The neighbour whose column is struck (at the slab's elevation).
+    pub column: String,
+    /// Gap at rest between the slab's edge and the column, m (>= 0).
+    pub gap: f64,
+    /// The contact law.
+    pub contact: ContactModel,
+    /// Flexural rigidity of the column (or of the line of columns struck together), N m^2.
+    pub ei: f64,
+    /// Its mass, kg.
+    pub mass: f64,
+    /// Shear capacity at its ends, N.
+    pub shear_capacity: Option<f64>,
+    /// Moment capacity at its ends, N m.
+    pub moment_capacity: Option<f64>,
 }
 
 /// Where the contact elements of a site between buildings in plan act: along the normal of the facing

@@ -422,6 +422,23 @@ impl ScenarioDoc {
         for (i, w) in self.wall.iter().enumerate() {
             scenario = wall(scenario, &format!("wall.{i}"), w)?;
         }
+        for (i, c) in self.column_contact.iter().enumerate() {
+            let at = format!("column_contact.{i}");
+            let what = format!("column contact {:?} floor {}", c.slab.0, c.slab.1);
+            let spec = crate::analysis::ColumnLinkSpec {
+                slab: c.slab.clone(),
+                column: c.column.clone(),
+                gap: c.gap,
+                contact: contact_law(&at, &what, &c.law())?,
+                ei: c.ei,
+                mass: c.column_mass,
+                shear_capacity: c.shear_capacity,
+                moment_capacity: c.moment_capacity,
+            };
+            scenario = scenario
+                .with_column_contact(spec)
+                .map_err(|e| lib(&at, &what, e))?;
+        }
         for (i, d) in self.device.iter().enumerate() {
             scenario = device(scenario, &format!("device.{i}"), d)?;
         }

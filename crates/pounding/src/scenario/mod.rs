@@ -54,6 +54,9 @@ pub struct ScenarioDoc {
     /// Devices between neighbours.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub device: Vec<DeviceDoc>,
+    /// Slabs striking a neighbour's column between its floors (floor-to-column contacts).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub column_contact: Vec<ColumnContactDoc>,
     /// Supports of their own (multi-support excitation): buildings and walls on them (`support = "name"`)
     /// are shaken by their record.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -565,6 +568,30 @@ with_contact_law! {
         /// The `[[support]]` it stands on (default: the scenario's ground).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pub support: Option<String>,
+    }
+}
+
+with_contact_law! {
+    /// `[[column_contact]]`: a slab striking its neighbour's column at the slab's elevation (between the
+    /// neighbour's floors; at one of them, a floor contact).
+    pub struct ColumnContactDoc {
+        /// `[building, floor]`: the building whose slab strikes, and the floor (from 1).
+        pub slab: (String, usize),
+        /// The neighbour whose column is struck.
+        pub column: String,
+        /// Gap at rest between the slab's edge and the column, m.
+        pub gap: f64,
+        /// Flexural rigidity of the column (or the line of columns struck together), N m^2.
+        #[serde(rename = "EI")]
+        pub ei: f64,
+        /// The column's mass, kg.
+        pub column_mass: f64,
+        /// Shear capacity at the column's ends, N (its demand is reported against it).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub shear_capacity: Option<f64>,
+        /// Moment capacity at the column's ends, N m.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub moment_capacity: Option<f64>,
     }
 }
 

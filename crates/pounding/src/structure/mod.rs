@@ -8,12 +8,14 @@
 //! `a0 = 2 zeta w1 w2 / (w1 + w2)`, `a1 = 2 zeta / (w1 + w2)` (Chopra, eq 11.4.9); a single storey gets
 //! `c = 2 zeta sqrt(k m)`, which is the same formula with `w2 = w1`.
 
+pub mod column;
 mod eigen;
 mod form;
 pub mod foundation;
 pub mod isolation;
 pub mod plan;
 
+pub use column::StruckColumn;
 pub use form::Form;
 pub use foundation::{Foundation, HalfSpace, Shape, Soil};
 pub use isolation::{Isolator, IsolatorKind, IsolatorModel};

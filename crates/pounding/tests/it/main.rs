@@ -5,6 +5,7 @@
 mod api;
 mod buildings;
 mod calibration;
+mod column;
 mod engine;
 mod exact_relations;
 mod fit;

@@ -255,3 +255,44 @@ pub fn foundations(s: &Scenario, r: &Results) {
         );
     }
 }
+
+/// Each struck column's demand.
+pub fn columns(s: &Scenario, r: &Results) {
+    let rows: Vec<_> = s
+        .sites()
+        .iter()
+        .zip(&r.sites)
+        .filter_map(|(site, resp)| resp.column.as_ref().map(|c| (site, c)))
+        .collect();
+    if rows.is_empty() {
+        return;
+    }
+    println!("\nstruck columns (demand at the column's ends; MN, MNm)\n");
+    println!("contact                 force_MN  shear_lower  shear_upper  moment_lower  moment_upper  capacity");
+    for (site, c) in rows {
+        let exceeded = match (c.shear_exceeded, c.moment_exceeded) {
+            (None, None) => "-".to_string(),
+            (s, m) => {
+                let word = |x: Option<bool>, what: &str| match x {
+                    Some(true) => format!("{what} exceeded"),
+                    Some(false) => format!("{what} ok"),
+                    None => String::new(),
+                };
+                [word(s, "shear"), word(m, "moment")]
+                    .into_iter()
+                    .filter(|w| !w.is_empty())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            }
+        };
+        println!(
+            "{:<22}  {:>8}  {:>11}  {:>11}  {:>12}  {:>12}  {exceeded}",
+            site.name,
+            fmt_table(1e-6 * c.peak_force, 4),
+            fmt_table(1e-6 * c.peak_shear.0, 4),
+            fmt_table(1e-6 * c.peak_shear.1, 4),
+            fmt_table(1e-6 * c.peak_moment.0, 4),
+            fmt_table(1e-6 * c.peak_moment.1, 4)
+        );
+    }
+}

@@ -276,6 +276,34 @@ fn sites(s: &Scenario) {
             extras(&site.bumper, site.seat);
             continue;
         }
+        if let (Some(c), SiteKind::Between { left, right }) = (&site.column, site.kind) {
+            let (slab, col) = if c.on_left {
+                (right, left)
+            } else {
+                (left, right)
+            };
+            let (lv, b) = (site.levels[0], &s.buildings()[col].name);
+            let floor = if c.on_left { lv.right } else { lv.left }.unwrap_or(0);
+            let what = match c.struck {
+                Some(k) => format!(
+                    "strikes {b:?}'s column in storey {} at {} m of {} m (EI {} N m^2: {} N/m at the point, which carries {} kg)",
+                    c.storey,
+                    fmt_num(k.a),
+                    fmt_num(k.length),
+                    fmt_sig(k.ei, 4),
+                    fmt_sig(k.stiffness(), 4),
+                    fmt_sig(k.point_mass(), 4)
+                ),
+                None => format!("meets {b:?}'s floor {} (a floor contact)", c.storey),
+            };
+            println!(
+                "\ncolumn contact {}: floor {floor} of {:?} {what}, gap {} m, {law}",
+                site.name,
+                s.buildings()[slab].name,
+                fmt_num(site.gap)
+            );
+            continue;
+        }
         match site.kind {
             SiteKind::Between { .. } => {
                 let floors: Vec<String> = site

@@ -12,6 +12,7 @@ pub fn print(s: &Scenario, r: &Results) {
     floors(s, r);
     super::plan::peaks(s, r);
     super::plan::foundations(s, r);
+    super::plan::columns(s, r);
     inelastic(s, r);
     isolators(s, r);
     sites(s, r);
