@@ -3,6 +3,7 @@
 use clap::builder::{PossibleValue, TypedValueParser};
 use clap::{Args, Parser, Subcommand};
 use pounding::contact::{AlphaRule, AlphaWord, ContactOptions, Damping, Model, Reading, Tension};
+use pounding::ground_motion::coherency::CoherencyKind;
 use pounding::ground_motion::synthetic::{FilterKind, SyntheticParams};
 use pounding::ground_motion::Units;
 use pounding::names::Named;
@@ -364,6 +365,10 @@ pub enum RecordCmd {
     /// A synthetic record from a seed: filtered white noise (Kanai-Tajimi or Clough-Penzien) under a time
     /// envelope, scaled to a PGA, written as a two-column file (s, m/s^2). See docs/separation.md.
     Synth(SynthArgs),
+    /// Records at supports along a line that lose coherence with distance: the spectrum of `record synth`
+    /// and a coherency model (Luco-Wong, Harichandran-Vanmarcke), by the spectral representation (Deodatis
+    /// 1996); one file per support, for [[support]] file = ... (add delay for the wave's passage).
+    Coherent(CoherentArgs),
 }
 
 /// A synthetic ground motion's parameters.
@@ -376,6 +381,57 @@ pub struct SynthArgs {
     /// File to write (time s, acceleration m/s^2; read it with units = "m/s2"), its folder made if missing.
     #[arg(long, value_name = "FILE")]
     pub out: std::path::PathBuf,
+    #[command(flatten)]
+    pub spectrum: SynthSpectrumArgs,
+}
+
+/// Records at supports that lose coherence with distance (docs/structures.md, "Ground motion that differs
+/// between supports").
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct CoherentArgs {
+    /// Seed of the random numbers: the same seed gives the same records, bit for bit.
+    #[arg(long)]
+    pub seed: u64,
+    /// The supports' positions along the line, m, comma-separated (e.g. 0,100,250).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        required = true,
+        allow_hyphen_values = true
+    )]
+    pub positions: Vec<f64>,
+    /// Folder to write: support-1.csv, support-2.csv, ... (time s, acceleration m/s^2) and coherent.json.
+    #[arg(long, value_name = "DIR")]
+    pub out: std::path::PathBuf,
+    /// Coherency model: luco-wong (exp(-(alpha w d)^2)) or harichandran-vanmarcke.
+    #[arg(long, value_parser = named::<CoherencyKind>())]
+    pub model: CoherencyKind,
+    /// Luco-Wong's incoherence alpha, s/m (required with luco-wong).
+    #[arg(long)]
+    pub alpha: Option<f64>,
+    /// Harichandran-Vanmarcke's A (default 0.736: SMART-1 event 20).
+    #[arg(long = "hv-A", default_value_t = 0.736)]
+    pub hv_a_big: f64,
+    /// Harichandran-Vanmarcke's a (default 0.147).
+    #[arg(long = "hv-a", default_value_t = 0.147)]
+    pub hv_a: f64,
+    /// Harichandran-Vanmarcke's k, m (default 5210).
+    #[arg(long = "hv-k", default_value_t = 5210.0)]
+    pub hv_k: f64,
+    /// Harichandran-Vanmarcke's f0, Hz (default 1.09).
+    #[arg(long = "hv-f0", default_value_t = 1.09)]
+    pub hv_f0: f64,
+    /// Harichandran-Vanmarcke's b (default 2.78).
+    #[arg(long = "hv-b", default_value_t = 2.78)]
+    pub hv_b: f64,
+    #[command(flatten)]
+    pub spectrum: SynthSpectrumArgs,
+}
+
+/// The spectrum, envelope and PGA of a synthetic motion.
+#[derive(Args, Debug)]
+pub struct SynthSpectrumArgs {
     /// Filters of the white noise.
     #[arg(long, value_parser = named::<FilterKind>(), default_value_t = SyntheticParams::default().filter)]
     pub filter: FilterKind,
@@ -411,7 +467,7 @@ pub struct SynthArgs {
     pub pga: f64,
 }
 
-impl SynthArgs {
+impl SynthSpectrumArgs {
     /// The record's parameters.
     pub fn params(&self) -> SyntheticParams {
         SyntheticParams {

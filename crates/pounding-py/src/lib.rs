@@ -625,6 +625,65 @@ fn synthetic(seed: &Bound<'_, PyAny>, params: &str) -> PyResult<(f64, f64, Vec<f
     Ok((r.dt(), r.t0(), r.accelerations().to_vec()))
 }
 
+/// Records at supports that lose coherence with distance (docs/structures.md): `seed`, the supports'
+/// `positions` (m), the coherency model as JSON text (`{"model": "luco-wong", "alpha": ...}` or
+/// `{"model": "harichandran-vanmarcke", "A", "a", "k", "f0", "b"}`, each absent one SMART-1 event 20's) and the
+/// spectrum's parameters as [`synthetic`]'s; returns `(dt, t0, [accelerations per support])`, s and m/s^2.
+#[pyfunction]
+fn coherent(
+    seed: &Bound<'_, PyAny>,
+    positions: Vec<f64>,
+    coherency: &str,
+    params: &str,
+) -> PyResult<(f64, f64, Vec<Vec<f64>>)> {
+    use pounding::ground_motion::coherency::{Coherency, Spatial};
+    use pounding::ground_motion::synthetic::SyntheticParams;
+    let seed: u64 = seed.extract().map_err(|_| {
+        input_err(format!(
+            "seed = {} is not allowed: a whole number from 0 to 2^64 - 1",
+            short(&seed.repr().map_or_else(|_| "?".into(), |r| r.to_string()))
+        ))
+    })?;
+    let value: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
+    let p: SyntheticParams = parse_value(&value).map_err(keyword_err)?;
+    let c: Value = serde_json::from_str(coherency).map_err(|e| input_err(e.to_string()))?;
+    let num = |k: &str, default: f64| c.get(k).and_then(Value::as_f64).unwrap_or(default);
+    let coherency = match c.get("model").and_then(Value::as_str) {
+        Some("luco-wong") => match c.get("alpha").and_then(Value::as_f64) {
+            Some(alpha) => Coherency::LucoWong { alpha },
+            None => return Err(input_err(
+                "alpha is required with model = \"luco-wong\": the incoherence, s/m (e.g. 2.5e-4)",
+            )),
+        },
+        Some("harichandran-vanmarcke") => Coherency::HarichandranVanmarcke {
+            a_big: num("A", 0.736),
+            a: num("a", 0.147),
+            k: num("k", 5210.0),
+            f0: num("f0", 1.09),
+            b: num("b", 2.78),
+        },
+        other => {
+            return Err(input_err(format!(
+                "model = {} is not allowed: \"luco-wong\" or \"harichandran-vanmarcke\"",
+                short(&format!("{other:?}"))
+            )))
+        }
+    };
+    let spatial = Spatial {
+        synthetic: p.synthetic(),
+        coherency,
+        positions,
+    };
+    let rs = spatial
+        .records("support", seed)
+        .map_err(|e| input_err(e.to_string()))?;
+    Ok((
+        rs[0].dt(),
+        rs[0].t0(),
+        rs.iter().map(|r| r.accelerations().to_vec()).collect(),
+    ))
+}
+
 /// Runs the IDA study at `study` into `out` (study.sqlite, runs.csv, fragility.csv) on `workers` threads with
 /// the GIL released; returns the result as JSON text.
 #[pyfunction]
@@ -771,6 +830,7 @@ fn _pounding(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(separation, m)?)?;
     m.add_function(wrap_pyfunction!(synthetic, m)?)?;
+    m.add_function(wrap_pyfunction!(coherent, m)?)?;
     m.add_function(wrap_pyfunction!(max_workers, m)?)?;
     m.add_function(wrap_pyfunction!(ida, m)?)?;
     m.add_function(wrap_pyfunction!(fit_restitution, m)?)?;

@@ -824,3 +824,51 @@ def test_buildings_in_plan_run_as_on_the_command_line(tmp_path):
     assert len(r.impacts["time_s"]) > 0
     for x, y in zip(r.impacts["point_x_m"], r.impacts["point_y_m"]):
         assert (x, y) in points
+
+
+def test_a_structure_from_matrices_runs_from_a_file_a_dict_and_numpy_rows(tmp_path):
+    """A building given by its stiffness matrix (a Matrix Market file beside the scenario): the command line's
+    summary from the file, from the dict `load_scenario` gives (the matrix put in as rows), from a dict naming
+    the file from the working folder, and from rows of a numpy array; the white-noise separation on it."""
+    path = ROOT / "examples" / "condensed-frame.toml"
+    o = cli("run", str(path), "--out", str(tmp_path / "out"), "-q", "--json")
+    assert o.returncode == 0, o.stderr
+    expected = without_label(json.loads(o.stdout))
+    assert expected["buildings"][0]["matrices"]["dofs"] == 4
+    scenario = pounding.load_scenario(path)
+    rows = scenario["building"][0]["stiffness_matrix"]
+    assert len(rows) == 4 and all(len(r) == 4 for r in rows)
+    assert without_label(pounding.run(scenario).summary) == expected
+    named = copy.deepcopy(scenario)
+    named["building"][0]["stiffness_matrix"] = str(ROOT / "examples" / "condensed-frame-K.mtx")
+    assert without_label(pounding.run(named).summary) == expected
+    dense = copy.deepcopy(scenario)
+    dense["building"][0]["stiffness_matrix"] = np.array(rows).tolist()
+    assert without_label(pounding.run(dense).summary) == expected
+    bad = copy.deepcopy(scenario)
+    bad["building"][0]["stiffness_matrix"][0][1] *= 2
+    with pytest.raises(pounding.InputError, match="stiffness_matrix.*symmetric"):
+        pounding.run(bad)
+    sep = pounding.separation(scenario, white_noise=0.01, duration=10.0)
+    assert 0 < sep["pairs"][0]["levels"][0]["probability"] < 1
+
+
+def test_coherent_records_are_the_command_lines(tmp_path):
+    """pounding.coherent gives the numbers `pounding record coherent` writes, for both models; bad input raises
+    InputError naming the parameter."""
+    for model, extra_cli, extra_py in [
+        ("luco-wong", ["--alpha", "2.5e-4"], {"alpha": 2.5e-4}),
+        ("harichandran-vanmarcke", ["--hv-k", "4000"], {"k": 4000.0}),
+    ]:
+        out = tmp_path / model
+        o = cli("record", "coherent", "--seed", "5", "--positions", "0,60,150", "--model", model, *extra_cli, "--out", str(out))
+        assert o.returncode == 0, o.stderr
+        r = pounding.coherent(5, [0, 60, 150], model, **extra_py)
+        assert len(r["acceleration"]) == 3
+        for j, a in enumerate(r["acceleration"]):
+            rows = np.loadtxt(out / f"support-{j + 1}.csv", delimiter=",", comments="#", skiprows=3)
+            assert np.allclose(rows[:, 1], a, rtol=1e-15, atol=0)
+    with pytest.raises(pounding.InputError, match="alpha is required"):
+        pounding.coherent(1, [0, 10], "luco-wong")
+    with pytest.raises(pounding.InputError, match="model"):
+        pounding.coherent(1, [0, 10], "gauss")

@@ -211,7 +211,13 @@ impl ScenarioFile {
         }
         let mut value = serde_json::to_value(table)
             .map_err(|e| InputError::new(format!("{}: {e}", path.display())))?;
-        resolve_record_file(&mut value, path.parent().unwrap_or(Path::new(".")));
+        let base = path.parent().unwrap_or(Path::new("."));
+        resolve_record_file(&mut value, base);
+        let read = inline_matrix_files(&mut value, base).map_err(|(key, msg)| {
+            let line = key_line(&text, &key).max(1);
+            InputError::new(format!("{}:{line}: {msg}", path.display()))
+        })?;
+        let text = with_matrices_inline(text, &value, &read);
         Ok(ScenarioFile {
             path: path.to_path_buf(),
             text,
@@ -262,9 +268,108 @@ pub fn resolve_record_file(value: &mut Value, base: &Path) {
     }
 }
 
+/// A matrix file a scenario named: the building's index, the key and the file as given.
+pub type MatrixFile = (usize, &'static str, String);
+
+/// The keys of a building that may name a file holding a matrix.
+pub const MATRIX_KEYS: [&str; 3] = ["stiffness_matrix", "damping_matrix", "mass_matrix"];
+
+/// Every building's matrix given as a file name (`stiffness_matrix = "K.mtx"`), read (relative to `base`) and
+/// put in as its rows, so that the scenario holds it and runs, or is stored, on its own. An error is
+/// `(dotted key, message)`.
+///
+/// Returns the `(building, key, file)` it read.
+pub fn inline_matrix_files(
+    value: &mut Value,
+    base: &Path,
+) -> Result<Vec<MatrixFile>, (String, String)> {
+    let mut read = Vec::new();
+    let n = value
+        .pointer("/building")
+        .and_then(Value::as_array)
+        .map_or(0, Vec::len);
+    for i in 0..n {
+        for key in MATRIX_KEYS {
+            let Some(Value::String(f)) = value.pointer(&format!("/building/{i}/{key}")) else {
+                continue;
+            };
+            let dotted = format!("building.{i}.{key}");
+            let path = base.join(f);
+            let m = read_text_file(&path, "matrix file", RECORD_FILE_LIMIT)
+                .map_err(|e| (dotted.clone(), format!("{dotted}: {e}")))?;
+            let m = pounding::structure::Matrix::parse(key, &m)
+                .map_err(|e| (dotted.clone(), format!("{dotted}: {}: {e}", path.display())))?;
+            let rows: Vec<Value> = m
+                .values
+                .chunks(m.n)
+                .map(|r| Value::from(r.to_vec()))
+                .collect();
+            read.push((i, key, f.clone()));
+            value["building"][i][key] = Value::Array(rows);
+        }
+    }
+    Ok(read)
+}
+
+/// `text` with each matrix file it names (`read`, as [`inline_matrix_files`] returns) replaced by the rows in
+/// `value`, the rest of the text as it was: the copy of a scenario that runs anywhere (a run's
+/// `scenario.toml`, a study's stored scenario).
+fn with_matrices_inline(text: String, value: &Value, read: &[MatrixFile]) -> String {
+    if read.is_empty() {
+        return text;
+    }
+    let Ok(mut doc) = text.parse::<toml_edit::DocumentMut>() else {
+        return text;
+    };
+    for (i, key, file) in read {
+        let Some(rows) = value["building"][*i][*key].as_array() else {
+            continue;
+        };
+        let mut array = toml_edit::Array::new();
+        for row in rows {
+            let r: toml_edit::Array = row
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter_map(Value::as_f64)
+                .collect();
+            array.push(r);
+        }
+        let Some(table) = doc["building"][*i].as_table_like_mut() else {
+            continue;
+        };
+        if let Some(item) = table.get_mut(key) {
+            let mut v = toml_edit::Value::Array(array);
+            v.decor_mut().set_suffix(format!(
+                "  # read from {file:?} when the scenario was loaded"
+            ));
+            *item = toml_edit::Item::Value(v);
+        }
+    }
+    doc.to_string()
+}
+
 /// The scenario `value` parsed and validated; `label` says where it came from. An error is `(key, message)`:
 /// the dotted path it concerns (if known) and one line.
 pub fn from_value(value: &Value, label: &str) -> Result<Loaded, (Option<String>, String)> {
+    // A matrix file named in a dict (not a file's scenario, whose files are read already): from here.
+    let mut owned;
+    let names_file = |b: &Value| {
+        MATRIX_KEYS
+            .iter()
+            .any(|k| b.get(k).is_some_and(Value::is_string))
+    };
+    let value = if value
+        .get("building")
+        .and_then(Value::as_array)
+        .is_some_and(|bs| bs.iter().any(names_file))
+    {
+        owned = value.clone();
+        inline_matrix_files(&mut owned, Path::new(".")).map_err(|(k, m)| (Some(k), m))?;
+        &owned
+    } else {
+        value
+    };
     let doc = parse_doc(value)?;
     let spec = doc
         .ground_motion

@@ -55,8 +55,12 @@ fn building(b: &BuildingSummary) -> String {
         .max_by(|a, c| a.0.total_cmp(c.0))
         .map(|(mu, j)| format!(", largest ductility {} (storey {j})", fmt_sig(*mu, 3)))
         .unwrap_or_default();
+    let given = match &b.matrices {
+        Some(m) => format!(", given by its matrices ({} damping)", m.damping),
+        None => String::new(),
+    };
     format!(
-        "{} storey{} ({}), T1 = {} s, roof peak displacement {} mm{most}",
+        "{} storey{} ({}{given}), T1 = {} s, roof peak displacement {} mm{most}",
         b.storeys,
         if b.storeys == 1 { "" } else { "s" },
         e(&models(b)),

@@ -21,7 +21,7 @@ import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -30,7 +30,7 @@ from ._pounding import InputError
 from . import fit
 
 __version__ = _pounding.__version__
-__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation", "synthetic", "ida", "fit"]
+__all__ = ["InputError", "Result", "Histories", "load_scenario", "run", "sweep", "headline", "spectrum", "separation", "synthetic", "coherent", "ida", "fit"]
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
@@ -441,6 +441,20 @@ def synthetic(seed: int, **params: Any) -> Dict[str, Any]:
     dt, t0, acc = _pounding.synthetic(seed, _json(given, "synthetic"))
     a = np.asarray(acc)
     return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(a)), "acceleration": a}
+
+
+def coherent(seed: int, positions: Sequence[float], model: str, **params: Any) -> Dict[str, Any]:
+    """Records at supports along a line that lose coherence with distance, exactly ``pounding record
+    coherent`` (docs/structures.md): ``positions`` (m), ``model`` ``"luco-wong"`` (give ``alpha``, s/m) or
+    ``"harichandran-vanmarcke"`` (``A``, ``a``, ``k`` in m, ``f0`` in Hz, ``b``; defaults SMART-1 event 20), and
+    the spectrum's parameters of :func:`synthetic`. The first support's PGA is ``pga``; one factor scales all.
+    Returns ``dt`` (s), ``t0`` (s), ``time`` (s) and ``acceleration``: one numpy array per support (m/s^2)."""
+    keys = {"alpha", "A", "a", "k", "f0", "b"}
+    given = {k: v for k, v in params.items() if v is not None}
+    coh = {"model": model, **{k: given.pop(k) for k in list(given) if k in keys}}
+    dt, t0, accs = _pounding.coherent(seed, [float(x) for x in positions], _json(coh, "coherency"), _json(given, "coherent"))
+    arrays = [np.asarray(a) for a in accs]
+    return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(arrays[0])), "acceleration": arrays}
 
 
 def ida(

@@ -212,12 +212,20 @@ pub fn report_with(
     let base = from_value(scenario, label)?;
     // Codes and the white-noise model see buildings in one line; buildings in plan get the gap each contact
     // point needed from their runs without contact (their corners, where the façades' closing peaks).
-    if base
+    // The linear models (white noise, codes) hold buildings in one line on a fixed base under one ground
+    // motion; others get their gaps from runs.
+    let beyond = base.scenario.buildings().iter().find_map(|b| {
+        let st = &b.structure;
+        (st.plan().is_some()).then_some("buildings in plan").or(st
+            .foundation()
+            .is_some()
+            .then_some("buildings on soil springs"))
+    });
+    let beyond = beyond.or(base
         .scenario
-        .buildings()
-        .iter()
-        .any(|b| b.structure.plan().is_some())
-    {
+        .multi_support()
+        .then_some("supports of their own"));
+    if let Some(what) = beyond {
         let key = match (&options.white_noise, &options.code) {
             (Some(_), _) => Some("white_noise"),
             (None, Some(_)) => Some("code"),
@@ -226,7 +234,7 @@ pub fn report_with(
         if let Some(key) = key {
             return Err(refuse(
                 key,
-                format!("{key} is not allowed for buildings in plan yet: their separation comes from runs without contact, each contact point's largest closing (give records, or none for the scenario's own)"),
+                format!("{key} is not allowed for {what} yet: their separation comes from runs without contact, each contact's largest closing (give records, or none for the scenario's own)"),
             ));
         }
     }

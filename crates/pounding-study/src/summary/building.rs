@@ -93,6 +93,22 @@ pub struct BuildingSummary {
     /// its storeys' drifts without it; its periods are the fixed-base ones its damping is fixed on).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub foundation: Option<FoundationSummary>,
+    /// For a structure given by its matrices: what the run took from them (its periods and modes above are
+    /// the matrices'; its storey shears the springs' forces across each cut under a floor).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub matrices: Option<MatricesSummary>,
+}
+
+/// A structure given by its matrices.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct MatricesSummary {
+    /// Degrees of freedom (floors).
+    pub dofs: usize,
+    /// The stiffness across the cut under each floor (the springs joining a floor at or above it to one
+    /// below it or to the ground), N/m: the storey stiffness a shear building would have.
+    pub cut_stiffnesses: Vec<f64>,
+    /// `matrix` (the damping matrix given) or `rayleigh` (`damping_ratio` on the matrices' modes 1 and 2).
+    pub damping: String,
 }
 
 /// A building's foundation on the soil, the modes on it and its response.
@@ -314,6 +330,16 @@ impl BuildingSummary {
                 .foundation
                 .as_ref()
                 .and_then(|r| FoundationSummary::of(st, r)),
+            matrices: st.matrices().map(|ms| MatricesSummary {
+                dofs: ms.n(),
+                cut_stiffnesses: ms.cut_stiffnesses(),
+                damping: if ms.damping.is_some() {
+                    "matrix"
+                } else {
+                    "rayleigh"
+                }
+                .into(),
+            }),
         }
     }
 

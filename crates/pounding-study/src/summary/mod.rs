@@ -10,7 +10,7 @@ mod plan;
 mod site;
 mod units;
 
-pub use building::{BuildingSummary, FoundationSummary, IsolatorSummary};
+pub use building::{BuildingSummary, FoundationSummary, IsolatorSummary, MatricesSummary};
 pub use device::DeviceSummary;
 pub use plan::{LineSummary, PlanModeSummary, PlanSummary};
 pub use site::{

@@ -7,7 +7,7 @@ use super::{ContactSite, DeviceEnds, Layer, Scenario, SiteKind, NO_CONTACT_GAP};
 use crate::element::device::Dashpot;
 use crate::element::{Contact, Element, ElementLaw, End, Point, Scales};
 use crate::engine::{Axis, Dof, System};
-use crate::structure::{Plan, PlanDof};
+use crate::structure::{MatrixStructure, Plan, PlanDof};
 
 /// A contact element and where it stands.
 #[derive(Clone, Copy, Debug)]
@@ -203,6 +203,55 @@ impl Parts {
         }
     }
 
+    /// A structure given by its matrices: one degree of freedom per floor, and the springs that make its
+    /// stiffness matrix (and the dashpots that make its damping matrix, or Rayleigh's `a0 M + a1 K`); the storey
+    /// under each floor is the springs across the cut under it.
+    fn by_matrices(
+        &mut self,
+        st: &crate::structure::ShearBuilding,
+        ms: &MatrixStructure,
+        axis: Axis,
+    ) {
+        let (a0, a1) = st.rayleigh();
+        let offset = self.dofs.len();
+        let n = ms.n();
+        let rayleigh = ms.damping.is_none();
+        self.dofs.extend(ms.masses.iter().map(|&mass| Dof {
+            mass,
+            a0: if rayleigh { a0 } else { 0.0 },
+            axis,
+        }));
+        let first = self.storeys.len();
+        self.storeys.extend((0..n).map(|j| StoreyRef {
+            below: j.checked_sub(1).map(|b| offset + b),
+            tilt: None,
+            elements: Vec::new(),
+        }));
+        let ends = |hi: usize, lo: Option<usize>| {
+            (
+                End::Dof(offset + hi),
+                lo.map_or(End::Ground, |lo| End::Dof(offset + lo)),
+            )
+        };
+        for (hi, lo, k) in MatrixStructure::springs(&ms.stiffness) {
+            let e = self.elements.len();
+            // The storeys whose cut it crosses.
+            for j in lo.map_or(0, |lo| lo + 1)..=hi {
+                self.storeys[first + j].elements.push((e, 1.0));
+            }
+            let (a, b) = ends(hi, lo);
+            let c = if rayleigh { a1 * k } else { 0.0 };
+            self.elements
+                .push(Element::new(a, b, crate::element::StoreyLaw::Linear.law(k)).with_dashpot(c));
+        }
+        if let Some(cm) = &ms.damping {
+            for (hi, lo, c) in MatrixStructure::springs(cm) {
+                let (a, b) = ends(hi, lo);
+                self.elements.push(Element::new(a, b, Dashpot::new(c)));
+            }
+        }
+    }
+
     /// The struck columns' points (after the buildings' degrees of freedom), each on its spring to its
     /// building's floors (their translations through the column's shape functions; the building's
     /// stiffness-proportional damping on it): the columns, and each site's point (`None` for others).
@@ -332,13 +381,21 @@ impl<'a> Model<'a> {
                         corners.push(plan.point(floor, offset, c2, (0.0, 1.0)));
                     }
                 }
-                None => {
-                    per_storey.push(1);
-                    match st.foundation() {
-                        Some(f) => parts.on_foundation(st, f, axis),
-                        None => parts.in_line(st, axis),
+                None => match (st.foundation(), st.matrices()) {
+                    (Some(f), _) => {
+                        per_storey.push(1);
+                        parts.on_foundation(st, f, axis);
                     }
-                }
+                    (None, Some(ms)) => {
+                        // No element is one storey's: storey_elements is empty for it.
+                        per_storey.push(0);
+                        parts.by_matrices(st, ms, axis);
+                    }
+                    (None, None) => {
+                        per_storey.push(1);
+                        parts.in_line(st, axis);
+                    }
+                },
             }
         }
         let axis_of = |b: usize| {

@@ -8,6 +8,7 @@
 //! that contradict the header. Units names (`g`, `m/s2`, `cm/s2`, `gal`, ...) are read by [`Units::parse`].
 
 mod builtin;
+pub mod coherency;
 mod format;
 mod pair;
 pub mod parse;

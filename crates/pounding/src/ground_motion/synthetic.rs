@@ -168,10 +168,10 @@ impl SyntheticParams {
 }
 
 /// xoshiro256** seeded through SplitMix64.
-struct Rng([u64; 4]);
+pub(super) struct Rng([u64; 4]);
 
 impl Rng {
-    fn new(seed: u64) -> Self {
+    pub(super) fn new(seed: u64) -> Self {
         let mut z = seed;
         let mut next = || {
             z = z.wrapping_add(0x9e3779b97f4a7c15);
@@ -197,7 +197,7 @@ impl Rng {
     }
 
     /// Uniform in (0, 1]: 53 random bits.
-    fn uniform(&mut self) -> f64 {
+    pub(super) fn uniform(&mut self) -> f64 {
         ((self.next_u64() >> 11) + 1) as f64 / (1u64 << 53) as f64
     }
 
@@ -213,8 +213,27 @@ impl Rng {
 /// Largest number of samples of a synthetic record.
 pub const MAX_SAMPLES: f64 = 1e7;
 
+impl Filter {
+    /// The two-sided spectral density of the filtered acceleration at circular frequency `w` (rad/s) for a
+    /// white noise of density `S0 = 1` m^2/s^3 (the module's formulas), m^2/s^3.
+    pub fn density(&self, w: f64) -> f64 {
+        let (wg, zg) = match *self {
+            Filter::KanaiTajimi { wg, zg } | Filter::CloughPenzien { wg, zg, .. } => (wg, zg),
+        };
+        let w2 = w * w;
+        let kt = (wg.powi(4) + 4.0 * zg * zg * wg * wg * w2)
+            / ((wg * wg - w2).powi(2) + 4.0 * zg * zg * wg * wg * w2);
+        match *self {
+            Filter::KanaiTajimi { .. } => kt,
+            Filter::CloughPenzien { wf, zf, .. } => {
+                kt * w2 * w2 / ((wf * wf - w2).powi(2) + 4.0 * zf * zf * wf * wf * w2)
+            }
+        }
+    }
+}
+
 impl Synthetic {
-    fn check(&self) -> Result<(), Error> {
+    pub(super) fn check(&self) -> Result<(), Error> {
         let (wg, zg, high) = match self.filter {
             Filter::KanaiTajimi { wg, zg } => (wg, zg, None),
             Filter::CloughPenzien { wg, zg, wf, zf } => (wg, zg, Some((wf, zf))),
@@ -248,7 +267,7 @@ impl Synthetic {
     }
 
     /// The envelope at `t`, s.
-    fn envelope(&self, t: f64) -> f64 {
+    pub(super) fn envelope(&self, t: f64) -> f64 {
         if t < self.t1 {
             (t / self.t1).powi(2)
         } else if t <= self.t2 {

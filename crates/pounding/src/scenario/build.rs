@@ -325,6 +325,14 @@ impl ScenarioDoc {
                     format!("{what}: [[building.line]] applies to a building in plan: add [building.plan] (size, position), or give stiffnesses"),
                 ));
             }
+            if b.stiffness_matrix.is_some() || b.mass_matrix.is_some() || b.damping_matrix.is_some()
+            {
+                buildings.push(Building {
+                    name: b.name.clone(),
+                    structure: building_from_matrices(&at, &what, b)?,
+                });
+                continue;
+            }
             if b.stiffnesses.is_empty() && b.isolator.is_none() {
                 return Err(SchemaError::new(
                     format!("{at}.stiffnesses"),
@@ -471,6 +479,9 @@ fn building_in_plan(
     if b.foundation.is_some() {
         return Err(err("foundation", "a foundation under a building in plan is not modelled yet: give the building on soil in one line".into()));
     }
+    if b.stiffness_matrix.is_some() || b.mass_matrix.is_some() || b.damping_matrix.is_some() {
+        return Err(err("stiffness_matrix", "a building in plan takes its stiffness from its lines: a structure given by its matrices moves in one line".into()));
+    }
     let n = b.masses.len();
     let per = |key: &str, len: usize| {
         err(
@@ -521,6 +532,52 @@ fn building_in_plan(
             lib(at, what, e)
         },
     )
+}
+
+/// A structure given by its matrices (`stiffness_matrix`, `masses` or `mass_matrix`, `damping_matrix`), its
+/// storeys linear.
+fn building_from_matrices(
+    at: &str,
+    what: &str,
+    b: &BuildingDoc,
+) -> Result<ShearBuilding, SchemaError> {
+    let err =
+        |key: &str, msg: String| SchemaError::new(format!("{at}.{key}"), format!("{what}: {msg}"));
+    let Some(k) = &b.stiffness_matrix else {
+        return Err(err("stiffness_matrix", "stiffness_matrix (N/m) is required beside mass_matrix or damping_matrix: a structure given by its matrices needs its stiffness".into()));
+    };
+    if !b.stiffnesses.is_empty() {
+        return Err(err(
+            "stiffnesses",
+            "stiffnesses is not allowed beside stiffness_matrix: give one or the other".into(),
+        ));
+    }
+    if b.isolator.is_some() {
+        return Err(err("isolator", "an isolator under a structure given by its matrices is not modelled yet: put the isolator's spring in the matrix, or give a shear building".into()));
+    }
+    if StoreyKeys::of_building(b).any() {
+        return Err(err("storey_model", "the storey keys (storey_model, yield_forces, post_yield_ratio, bouc_wen) are not allowed for a structure given by its matrices: its storeys are linear (the inelastic laws stay on the shear-building forms)".into()));
+    }
+    if b.foundation.is_some() {
+        return Err(err("foundation", "a foundation under a structure given by its matrices is not modelled yet: add the foundation's degrees of freedom to the matrices, or give a shear building".into()));
+    }
+    let lib = |e| lib(at, what, e);
+    let k = k.matrix("stiffness_matrix").map_err(lib)?;
+    let mass = match (&b.mass_matrix, b.masses.is_empty()) {
+        (Some(m), true) => m.matrix("mass_matrix").map_err(lib)?,
+        (None, false) => crate::structure::Matrix::diagonal(&b.masses),
+        (Some(_), false) => return Err(err("mass_matrix", "mass_matrix is not allowed beside masses: give one or the other (a lumped mass matrix's diagonal is the floors' masses)".into())),
+        (None, true) => return Err(err("masses", "masses (kg, one per floor) or mass_matrix is required beside stiffness_matrix".into())),
+    };
+    let c = match &b.damping_matrix {
+        Some(c) => Some(c.matrix("damping_matrix").map_err(lib)?),
+        None => None,
+    };
+    let structure = crate::structure::MatrixStructure::new(&mass, k, c).map_err(lib)?;
+    if b.heights.len() != structure.n() {
+        return Err(err("heights", format!("heights has {} values, but the matrices have {} degrees of freedom (floors): give each storey's height, m", b.heights.len(), structure.n())));
+    }
+    ShearBuilding::from_matrices(structure, b.heights.clone(), b.damping_ratio).map_err(lib)
 }
 
 /// The foundation of a building entry at `at`: its springs given, or from the soil and its shape.

@@ -191,6 +191,48 @@ pub struct BuildingDoc {
     /// The `[[support]]` it stands on (default: the scenario's ground).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub support: Option<String>,
+    /// A structure given by its matrices (`docs/structures.md`, "Structures from matrices"): the stiffness
+    /// matrix, N/m, over the floors' displacements (floor 1, the lowest, first), in place of `stiffnesses`.
+    /// Rows inline, or a file (dense CSV or Matrix Market) relative to the scenario's folder.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness_matrix: Option<MatrixDoc>,
+    /// The damping matrix, N s/m, of a structure given by its matrices (default: Rayleigh damping of
+    /// `damping_ratio` on the matrices' modes 1 and 2). Rows or a file, as `stiffness_matrix`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_matrix: Option<MatrixDoc>,
+    /// The lumped (diagonal) mass matrix, kg, of a structure given by its matrices, in place of `masses`.
+    /// Rows or a file, as `stiffness_matrix`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass_matrix: Option<MatrixDoc>,
+}
+
+/// A matrix in a scenario: its rows, or the name of a file that holds it (read by the program that loads the
+/// scenario, relative to the scenario's folder, and put in as rows).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(
+    untagged,
+    expecting = "expected a matrix: a list of rows of numbers, or a file name (CSV or Matrix Market)"
+)]
+pub enum MatrixDoc {
+    /// Its rows, each a list of numbers.
+    Rows(Vec<Vec<f64>>),
+    /// A file holding it: a dense array (CSV or white space) or Matrix Market.
+    File(String),
+}
+
+impl MatrixDoc {
+    /// The matrix, named `name` in errors; a file name not yet read is refused.
+    pub fn matrix(&self, name: &'static str) -> Result<crate::structure::Matrix, crate::Error> {
+        match self {
+            MatrixDoc::Rows(rows) => crate::structure::Matrix::from_rows(name, rows),
+            MatrixDoc::File(f) => Err(crate::Error::Choice {
+                name,
+                value: format!("{f:?}"),
+                allowed: "rows of numbers here (a file name is read by the program that loads the scenario)".into(),
+            }),
+        }
+    }
 }
 
 /// `[building.foundation]`: a rigid foundation (its mass and moment of inertia) on sway and rocking springs

@@ -71,6 +71,26 @@ pub fn state_space(s: &Scenario, filter: Option<Filter>) -> StateSpace {
                 a[vj * n + dofs + ui] += c / m[j];
             }
         };
+        if let Some(ms) = st.matrices() {
+            // A structure given by its matrices: the springs and dashpots that make them.
+            let (a0, a1) = st.rayleigh();
+            for (hi, lo, k) in crate::structure::MatrixStructure::springs(&ms.stiffness) {
+                add(hi, lo, k, if ms.damping.is_none() { a1 * k } else { 0.0 });
+            }
+            match &ms.damping {
+                Some(cm) => crate::structure::MatrixStructure::springs(cm)
+                    .into_iter()
+                    .for_each(|(hi, lo, c)| add(hi, lo, 0.0, c)),
+                None => m
+                    .iter()
+                    .enumerate()
+                    .for_each(|(i, &mi)| add(i, None, 0.0, a0 * mi)),
+            }
+            let w = &st.modes().omega;
+            w_lo = w_lo.min(w[0]);
+            w_hi = w_hi.max(w[w.len() - 1]);
+            continue;
+        }
         for (j, (&k, &cj)) in st.stiffnesses().iter().zip(&c).enumerate() {
             if j == 0 {
                 add(0, None, k, cj);

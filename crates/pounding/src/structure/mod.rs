@@ -13,12 +13,14 @@ mod eigen;
 mod form;
 pub mod foundation;
 pub mod isolation;
+pub mod matrix;
 pub mod plan;
 
 pub use column::StruckColumn;
 pub use form::Form;
 pub use foundation::{Foundation, HalfSpace, Shape, Soil};
 pub use isolation::{Isolator, IsolatorKind, IsolatorModel};
+pub use matrix::{Matrix, MatrixStructure};
 pub use plan::{Line, LineDirection, Plan, PlanDof, PlanSpec};
 
 use crate::element::StoreyLaw;
@@ -63,6 +65,8 @@ pub struct ShearBuilding {
     plan: Option<Box<Plan>>,
     /// The foundation on the soil, and the modes on it ([`ShearBuilding::with_foundation`]).
     foundation: Option<Box<(Foundation, Modes)>>,
+    /// The matrices of a structure given by them ([`ShearBuilding::from_matrices`]).
+    matrix: Option<Box<MatrixStructure>>,
 }
 
 /// Natural modes of a [`ShearBuilding`], lowest first.
@@ -282,6 +286,7 @@ impl ShearBuilding {
             modes,
             plan: None,
             foundation: None,
+            matrix: None,
         })
     }
 
@@ -347,6 +352,9 @@ impl ShearBuilding {
         if self.isolator.is_some() {
             return Err(refuse("a building without an isolator: an isolated building on soil springs is not modelled yet"));
         }
+        if self.matrix.is_some() {
+            return Err(refuse("a shear building: a structure given by its matrices on soil springs is not modelled yet"));
+        }
         check(
             "foundation.mass",
             foundation.mass,
@@ -363,6 +371,38 @@ impl ShearBuilding {
             foundation::flexible_modes(&self.masses, &self.stiffnesses, &self.heights, &foundation);
         self.foundation = Some(Box::new((foundation, Modes { omega, shapes })));
         Ok(self)
+    }
+
+    /// A structure given by its matrices (`structure`: lumped masses, stiffness, optional damping) with
+    /// storey `heights` (m, the floors' elevations): its modes are the matrices', its Rayleigh damping
+    /// (without a damping matrix) the ratio `damping_ratio` on their modes 1 and 2, and its storey
+    /// stiffnesses in one line the stiffness across each cut under a floor ([`MatrixStructure::cut_stiffnesses`]).
+    /// Its storeys are linear.
+    pub fn from_matrices(
+        structure: MatrixStructure,
+        heights: Vec<f64>,
+        damping_ratio: f64,
+    ) -> Result<Self, Error> {
+        let (omega, shapes) = matrix::modes_of(&structure.masses, &structure.stiffness)?;
+        let modes = Modes { omega, shapes };
+        let cuts = structure.cut_stiffnesses();
+        if let Some((j, k)) = cuts.iter().enumerate().find(|(_, k)| **k <= 0.0) {
+            return Err(Error::Choice {
+                name: "stiffness_matrix",
+                value: format!("the matrix (stiffness across the cut under floor {}: {})", j + 1, crate::words::number(*k)),
+                allowed: "a structure whose every floor is held from below: a positive stiffness across the cut under each floor".into(),
+            });
+        }
+        let mut b = Self::new(structure.masses.clone(), cuts, heights, damping_ratio)?;
+        b.rayleigh = rayleigh_of(&modes.omega, damping_ratio);
+        b.modes = modes;
+        b.matrix = Some(Box::new(structure));
+        Ok(b)
+    }
+
+    /// The matrices of a structure given by them.
+    pub fn matrices(&self) -> Option<&MatrixStructure> {
+        self.matrix.as_deref()
     }
 
     /// The foundation a building stands on, if it is not fixed at its base.
@@ -442,6 +482,9 @@ impl ShearBuilding {
     /// isolated one the modes are not classically damped and the isolator's hysteresis is not counted).
     pub fn damping_of_mode(&self, r: usize) -> f64 {
         let (w, phi) = (self.modes.omega[r], &self.modes.shapes[r]);
+        if let Some(ms) = &self.matrix {
+            return ms.quadratic_damping(phi, self.rayleigh) / (2.0 * w);
+        }
         let (c, a0, base) = self.damping_layout();
         let mut sum = 0.0;
         for (j, cj) in c.iter().enumerate() {
@@ -467,6 +510,13 @@ impl ShearBuilding {
                 name: "storey_model",
                 len: laws.len(),
                 expected: self.storeys() - first,
+            });
+        }
+        if self.matrix.is_some() && laws.iter().any(|l| l.is_inelastic()) {
+            return Err(Error::Choice {
+                name: "storey_model",
+                value: "an inelastic storey".into(),
+                allowed: "linear storeys for a structure given by its matrices (the inelastic laws stay on the shear-building forms)".into(),
             });
         }
         self.storey_laws.truncate(first);

@@ -14,6 +14,7 @@ mod ground_motion;
 mod inelastic;
 mod integrated;
 mod isolation;
+mod matrices;
 mod paper;
 mod plan;
 mod reliability;

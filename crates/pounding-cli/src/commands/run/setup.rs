@@ -100,6 +100,19 @@ pub fn print(loaded: &Loaded, file: &Path) {
 /// How a building is damped, in words.
 fn damping(b: &Building) -> String {
     let st = &b.structure;
+    if let Some(ms) = st.matrices() {
+        let form = format!(
+            "given by its matrices ({} degrees of freedom, linear)",
+            ms.n()
+        );
+        return match ms.damping {
+            Some(_) => format!("{form}, its damping matrix"),
+            None => format!(
+                "{form}, damping {} % (Rayleigh on its modes 1 and 2)",
+                fmt_num(100.0 * st.damping_ratio())
+            ),
+        };
+    }
     let Some(iso) = st.isolator() else {
         return format!(
             "damping {} % (Rayleigh, modes 1 and 2)",
