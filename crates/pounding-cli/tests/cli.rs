@@ -4530,9 +4530,30 @@ fn coherent_records_feed_supports_and_name_their_options() {
             .unwrap();
     assert!((about["pga_m_per_s2"][0].as_f64().unwrap() - 2.5).abs() < 1e-12);
     // The example's scenario, its records beside it.
-    let text = std::fs::read_to_string(example("coherent-supports.toml"))
-        .unwrap()
-        .replace("../out/coherent/", "coherent/");
+    // The example's records are what its recipe makes.
+    let shipped = dir.join("shipped");
+    let o = pounding(&[
+        "record",
+        "coherent",
+        "--seed",
+        "1",
+        "--positions",
+        "0,40",
+        "--model",
+        "harichandran-vanmarcke",
+        "--out",
+        shipped.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for file in ["support-1.csv", "support-2.csv"] {
+        assert_eq!(
+            std::fs::read_to_string(shipped.join(file)).unwrap(),
+            std::fs::read_to_string(example(&format!("coherent/{file}"))).unwrap(),
+            "{file}"
+        );
+    }
+    // The example's scenario on the records made here (their folder beside it).
+    let text = std::fs::read_to_string(example("coherent-supports.toml")).unwrap();
     std::fs::write(dir.join("pair.toml"), text).unwrap();
     let o = pounding(&[
         "run",
