@@ -265,9 +265,9 @@ pub struct ColumnSummary {
     pub point_mass: f64,
     /// Largest |force| on it at the point, N.
     pub peak_force: f64,
-    /// Largest |shear| at its lower and upper ends, N.
+    /// Largest |shear| at its lower and upper ends, N: the load at the point's part and its storey drift's.
     pub peak_shear: [f64; 2],
-    /// Largest |moment| at its lower and upper ends, N m.
+    /// Largest |moment| at its lower and upper ends, N m: the load's part and the drift's.
     pub peak_moment: [f64; 2],
     /// Shear capacity, N.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -29,6 +29,15 @@ pub(super) struct ColumnRef {
     pub site: usize,
     /// The degree of freedom of the point struck.
     pub dof: usize,
+    /// The element of its spring to the floors (its force: the load on the column at the point, N).
+    pub element: usize,
+    /// The column's drift: its upper end's displacement less its lower end's and the foundation's rigid
+    /// rotation over its length, m.
+    pub drift: Point,
+    /// Its lower and upper end shears (N) and moments (N m), each `alpha x + beta drift` with `x` the spring's
+    /// deformation: the load at the point's part (the shape functions) and the drift's (`12 EI / L^3`,
+    /// `6 EI / L^2`; Roark, table 8.1, cases 1e and 2e).
+    pub ends: [(f64, f64); 4],
 }
 
 /// A device element and where it stands.
@@ -284,11 +293,31 @@ impl Parts {
             });
             let (n1, n2) = col.shears();
             let j = c.storey;
-            let floors = if j == 1 {
-                Point::new(&[(o, n2)])
-            } else {
-                Point::new(&[(o + j - 2, n1), (o + j - 1, n2)])
+            let st = &s.buildings()[b].structure;
+            // The ends: the floor below (the ground, or a foundation's sway, under storey 1) and the floor
+            // above; on a foundation both ends also turn with its rocking (slope theta), which the column's
+            // shape carries to the point by L xi (1 - xi)(1 - 2 xi), xi = a / L.
+            let n = st.storeys();
+            let rocking = st.foundation().map(|_| (o + n, o + n + 1));
+            let lower = match (j, rocking) {
+                (1, None) => None,
+                (1, Some((sway, _))) => Some(sway),
+                _ => Some(o + j - 2),
             };
+            let upper = o + j - 1;
+            let (l, xi) = (col.length, col.a / col.length);
+            let (mut terms, mut drift) = (Vec::new(), Vec::new());
+            if let Some(lo) = lower {
+                terms.push((lo, n1));
+                drift.push((lo, -1.0));
+            }
+            terms.push((upper, n2));
+            drift.push((upper, 1.0));
+            if let Some((_, th)) = rocking {
+                terms.push((th, l * xi * (1.0 - xi) * (1.0 - 2.0 * xi)));
+                drift.push((th, -l));
+            }
+            let floors = Point::new(&terms);
             let k = col.stiffness();
             let a1 = s.buildings()[b].structure.rayleigh().1;
             self.elements.push(
@@ -300,7 +329,17 @@ impl Parts {
                 .with_dashpot(a1 * k),
             );
             dofs[si] = Some(dof);
-            refs.push(ColumnRef { site: si, dof });
+            let ((m1, m2), ei) = (col.moments(), col.ei);
+            let (kv, km) = (12.0 * ei / l.powi(3), 6.0 * ei / (l * l));
+            refs.push(ColumnRef {
+                site: si,
+                dof,
+                element,
+                drift: Point::new(&drift),
+                // A load P along +x and a drift d > 0 bend the lower end alike and the upper end against
+                // each other: V_lo = n1 P + kv d, V_hi = n2 P - kv d, M_lo = m1 P + km d, M_hi = m2 P - km d.
+                ends: [(n1 * k, kv), (n2 * k, -kv), (m1 * k, km), (m2 * k, -km)],
+            });
         }
         (refs, dofs)
     }

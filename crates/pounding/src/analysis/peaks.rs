@@ -1,7 +1,7 @@
 //! Peaks a run keeps, as observers of the engine: of every floor and storey, of every device, and the worst
 //! energy imbalance.
 
-use super::model::{DeviceRef, Model, StoreyRef};
+use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
 use crate::engine::{EventInfo, Observer, Segment, System};
 use crate::integrate::{hermite_peak, Hermite};
@@ -46,6 +46,10 @@ pub(super) struct Peaks {
     /// The corners' displacements along x and along y ([`Model::corners`]), and their largest |value|, m.
     corners: Vec<Point>,
     pub corner: Vec<Peak>,
+    /// The struck columns ([`Model::columns`]) and the largest |value| of each one's lower and upper end
+    /// shears (N) and moments (N m), load and drift together.
+    columns: Vec<ColumnRef>,
+    pub column: Vec<[f64; 4]>,
     /// A storey element's states between nodes.
     states: Vec<f64>,
     /// Each storey element's deformation on the step (room for the storey with the most).
@@ -77,6 +81,8 @@ impl Peaks {
             line_drift: vec![0.0; m.lines.len()],
             corners: m.corners.clone(),
             corner: vec![Peak::default(); m.corners.len()],
+            columns: m.columns.clone(),
+            column: vec![[0.0; 4]; m.columns.len()],
             states: room(m),
             curves: vec![Hermite::new(0.0, 0.0, 0.0, 0.0, 1.0); most],
             used: {
@@ -189,6 +195,29 @@ impl Observer for Peaks {
             let (va, vb) = (end.value(y0, n), end.value(y1, n));
             let (s, u) = hermite_peak(ua, ub, va, vb, h);
             peak.offer(u, seg.t0 + s * h);
+        }
+        for (c, peak) in self.columns.iter().zip(&mut self.column) {
+            // Each end force is a combination of the spring's deformation and the drift: cubic on the step
+            // as they are, so its peak is located as a drift's.
+            let [xa, va, xb, vb] = self.ends[c.element];
+            let d = End::Point(c.drift);
+            let (da, db, dva, dvb) = (
+                d.value(y0, 0),
+                d.value(y1, 0),
+                d.value(y0, n),
+                d.value(y1, n),
+            );
+            for (p, &(alpha, beta)) in peak.iter_mut().zip(&c.ends) {
+                let v = hermite_peak(
+                    alpha * xa + beta * da,
+                    alpha * xb + beta * db,
+                    alpha * va + beta * dva,
+                    alpha * vb + beta * dvb,
+                    h,
+                )
+                .1;
+                *p = p.max(v);
+            }
         }
         self.accelerations(sys, seg.t1, seg.rate1);
     }

@@ -164,15 +164,16 @@ pub struct SiteResponse {
 }
 
 /// The demand on a column struck between its floors ([`crate::structure::StruckColumn`]): the force its
-/// point's spring carries (the column's own, between the contact and the floors), and the end shears and
-/// moments it makes, peaks over the run (at the integration nodes and the point's extrema).
+/// point's spring carries (the column's own, between the contact and the floors), and its end shears and
+/// moments under that load and its storey's drift together, peaks over the run.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ColumnResponse {
     /// Largest |force| on the column at the point, N.
     pub peak_force: f64,
-    /// Largest |shear| at its lower and upper ends, N.
+    /// Largest |shear| at its lower and upper ends, N: the load at the point's part (the shape functions)
+    /// and its drift's (`12 EI / L^3` times it), located between the integration nodes.
     pub peak_shear: (f64, f64),
-    /// Largest |moment| at its lower and upper ends, N m.
+    /// Largest |moment| at its lower and upper ends, N m: the load's part and the drift's (`6 EI / L^2`).
     pub peak_moment: (f64, f64),
     /// Whether a shear exceeded the shear capacity (`None` without one).
     pub shear_exceeded: Option<bool>,

@@ -492,19 +492,24 @@ fn site_totals(
         max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
         max_closing: per(&rec.impacts.max_closing),
         peak_ends: first.iter().map(|&k| rec.impacts.end_peaks[k]).collect(),
-        column: model.columns.iter().find(|c| c.site == site).and_then(|c| {
-            let col = s.sites()[site].column.as_ref()?.struck?;
-            let f = rec.peaks.shear[c.dof];
-            let ((s1, s2), (m1, m2)) = (col.shears(), col.moments());
-            let (shear, moment) = ((s1 * f, s2 * f), (m1 * f, m2 * f));
-            Some(ColumnResponse {
-                peak_force: f,
-                peak_shear: shear,
-                peak_moment: moment,
-                shear_exceeded: col.shear_capacity.map(|cap| shear.0.max(shear.1) > cap),
-                moment_exceeded: col.moment_capacity.map(|cap| moment.0.max(moment.1) > cap),
-            })
-        }),
+        column: model
+            .columns
+            .iter()
+            .position(|c| c.site == site)
+            .and_then(|ci| {
+                let col = s.sites()[site].column.as_ref()?.struck?;
+                let f = rec.peaks.shear[model.columns[ci].dof];
+                // The end forces with the column's drift: the storey's bending of it and the load at the point.
+                let [v1, v2, m1, m2] = rec.peaks.column[ci];
+                let (shear, moment) = ((v1, v2), (m1, m2));
+                Some(ColumnResponse {
+                    peak_force: f,
+                    peak_shear: shear,
+                    peak_moment: moment,
+                    shear_exceeded: col.shear_capacity.map(|cap| shear.0.max(shear.1) > cap),
+                    moment_exceeded: col.moment_capacity.map(|cap| moment.0.max(moment.1) > cap),
+                })
+            }),
         unseated: s.sites()[site]
             .seat
             .map(|seat| max_opening.iter().any(|&o| o > seat)),
