@@ -267,7 +267,7 @@ pub fn columns(s: &Scenario, r: &Results) {
     if rows.is_empty() {
         return;
     }
-    println!("\nstruck columns (demand at the column's ends; MN, MNm)\n");
+    println!("\nstruck columns (demand at the column's ends, the load at the point and the storey's drift together; MN, MNm)\n");
     println!("contact                 force_MN  shear_lower  shear_upper  moment_lower  moment_upper  capacity");
     for (site, c) in rows {
         let exceeded = match (c.shear_exceeded, c.moment_exceeded) {
