@@ -603,6 +603,16 @@ fn max_workers() -> usize {
     sweep::MAX_WORKERS_PER_CORE * std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
+/// A random-number seed given from Python: a whole number from 0 to 2^64 - 1.
+fn seed_of(seed: &Bound<'_, PyAny>) -> PyResult<u64> {
+    seed.extract().map_err(|_| {
+        input_err(format!(
+            "seed = {} is not allowed: a whole number from 0 to 2^64 - 1",
+            short(&seed.repr().map_or_else(|_| "?".into(), |r| r.to_string()))
+        ))
+    })
+}
+
 /// A synthetic record (docs/separation.md): `seed` (a whole number from 0 to 2^64 - 1) and the parameters
 /// as JSON text, read as the library's [`SyntheticParams`](pounding::ground_motion::synthetic::SyntheticParams)
 /// (`filter`, `wg`, `zg`, `wf`, `zf`, `duration`, `dt`, `t1`, `t2`, `decay`, `pga`; each absent one keeps its
@@ -610,12 +620,7 @@ fn max_workers() -> usize {
 #[pyfunction]
 fn synthetic(seed: &Bound<'_, PyAny>, params: &str) -> PyResult<(f64, f64, Vec<f64>)> {
     use pounding::ground_motion::synthetic::SyntheticParams;
-    let seed: u64 = seed.extract().map_err(|_| {
-        input_err(format!(
-            "seed = {} is not allowed: a whole number from 0 to 2^64 - 1",
-            short(&seed.repr().map_or_else(|_| "?".into(), |r| r.to_string()))
-        ))
-    })?;
+    let seed = seed_of(seed)?;
     let value: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
     let p: SyntheticParams = parse_value(&value).map_err(keyword_err)?;
     let r = p
@@ -638,12 +643,7 @@ fn coherent(
 ) -> PyResult<(f64, f64, Vec<Vec<f64>>)> {
     use pounding::ground_motion::coherency::{Coherency, Spatial};
     use pounding::ground_motion::synthetic::SyntheticParams;
-    let seed: u64 = seed.extract().map_err(|_| {
-        input_err(format!(
-            "seed = {} is not allowed: a whole number from 0 to 2^64 - 1",
-            short(&seed.repr().map_or_else(|_| "?".into(), |r| r.to_string()))
-        ))
-    })?;
+    let seed = seed_of(seed)?;
     let value: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
     let p: SyntheticParams = parse_value(&value).map_err(keyword_err)?;
     let c: Value = serde_json::from_str(coherency).map_err(|e| input_err(e.to_string()))?;
