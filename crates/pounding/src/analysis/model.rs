@@ -34,10 +34,11 @@ pub(super) struct ColumnRef {
     /// The column's drift: its upper end's displacement less its lower end's and the foundation's rigid
     /// rotation over its length, m.
     pub drift: Point,
-    /// Its lower and upper end shears (N) and moments (N m), each `alpha x + beta drift` with `x` the spring's
-    /// deformation: the load at the point's part (the shape functions) and the drift's (`12 EI / L^3`,
-    /// `6 EI / L^2`; Roark, table 8.1, cases 1e and 2e).
-    pub ends: [(f64, f64); 4],
+    /// The force at the point (N), then its lower and upper end shears (N) and moments (N m), each
+    /// `alpha x + beta drift` with `x` the spring's deformation: the load at the point (`k x`), and its part
+    /// (the shape functions) and the drift's (`12 EI / L^3`, `6 EI / L^2`; Roark, table 8.1, cases 1e and 2e)
+    /// in the end forces.
+    pub ends: [(f64, f64); 5],
 }
 
 /// A device element and where it stands.
@@ -338,7 +339,13 @@ impl Parts {
                 drift: Point::new(&drift),
                 // A load P along +x and a drift d > 0 bend the lower end alike and the upper end against
                 // each other: V_lo = n1 P + kv d, V_hi = n2 P - kv d, M_lo = m1 P + km d, M_hi = m2 P - km d.
-                ends: [(n1 * k, kv), (n2 * k, -kv), (m1 * k, km), (m2 * k, -km)],
+                ends: [
+                    (k, 0.0),
+                    (n1 * k, kv),
+                    (n2 * k, -kv),
+                    (m1 * k, km),
+                    (m2 * k, -km),
+                ],
             });
         }
         (refs, dofs)

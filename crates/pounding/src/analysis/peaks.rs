@@ -46,10 +46,10 @@ pub(super) struct Peaks {
     /// The corners' displacements along x and along y ([`Model::corners`]), and their largest |value|, m.
     corners: Vec<Point>,
     pub corner: Vec<Peak>,
-    /// The struck columns ([`Model::columns`]) and the largest |value| of each one's lower and upper end
-    /// shears (N) and moments (N m), load and drift together.
+    /// The struck columns ([`Model::columns`]) and the largest |value| of each one's force at the point (N),
+    /// lower and upper end shears (N) and moments (N m), load and drift together.
     columns: Vec<ColumnRef>,
-    pub column: Vec<[f64; 4]>,
+    pub column: Vec<[f64; 5]>,
     /// A storey element's states between nodes.
     states: Vec<f64>,
     /// Each storey element's deformation on the step (room for the storey with the most).
@@ -82,7 +82,7 @@ impl Peaks {
             corners: m.corners.clone(),
             corner: vec![Peak::default(); m.corners.len()],
             columns: m.columns.clone(),
-            column: vec![[0.0; 4]; m.columns.len()],
+            column: vec![[0.0; 5]; m.columns.len()],
             states: room(m),
             curves: vec![Hermite::new(0.0, 0.0, 0.0, 0.0, 1.0); most],
             used: {

@@ -498,9 +498,9 @@ fn site_totals(
             .position(|c| c.site == site)
             .and_then(|ci| {
                 let col = s.sites()[site].column.as_ref()?.struck?;
-                let f = rec.peaks.shear[model.columns[ci].dof];
-                // The end forces with the column's drift: the storey's bending of it and the load at the point.
-                let [v1, v2, m1, m2] = rec.peaks.column[ci];
+                // The force at the point, and the end forces with the column's drift: the storey's bending
+                // of it and the load at the point.
+                let [f, v1, v2, m1, m2] = rec.peaks.column[ci];
                 let (shear, moment) = ((v1, v2), (m1, m2));
                 Some(ColumnResponse {
                     peak_force: f,
