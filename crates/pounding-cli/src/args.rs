@@ -411,20 +411,20 @@ pub struct CoherentArgs {
     #[arg(long)]
     pub alpha: Option<f64>,
     /// Harichandran-Vanmarcke's A (default 0.736: SMART-1 event 20).
-    #[arg(long = "hv-A", default_value_t = 0.736)]
-    pub hv_a_big: f64,
+    #[arg(long = "hv-A")]
+    pub hv_a_big: Option<f64>,
     /// Harichandran-Vanmarcke's a (default 0.147).
-    #[arg(long = "hv-a", default_value_t = 0.147)]
-    pub hv_a: f64,
+    #[arg(long = "hv-a")]
+    pub hv_a: Option<f64>,
     /// Harichandran-Vanmarcke's k, m (default 5210).
-    #[arg(long = "hv-k", default_value_t = 5210.0)]
-    pub hv_k: f64,
+    #[arg(long = "hv-k")]
+    pub hv_k: Option<f64>,
     /// Harichandran-Vanmarcke's f0, Hz (default 1.09).
-    #[arg(long = "hv-f0", default_value_t = 1.09)]
-    pub hv_f0: f64,
+    #[arg(long = "hv-f0")]
+    pub hv_f0: Option<f64>,
     /// Harichandran-Vanmarcke's b (default 2.78).
-    #[arg(long = "hv-b", default_value_t = 2.78)]
-    pub hv_b: f64,
+    #[arg(long = "hv-b")]
+    pub hv_b: Option<f64>,
     #[command(flatten)]
     pub spectrum: SynthSpectrumArgs,
 }

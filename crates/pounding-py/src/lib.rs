@@ -647,7 +647,7 @@ fn coherent(
     let value: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
     let p: SyntheticParams = parse_value(&value).map_err(keyword_err)?;
     let c: Value = serde_json::from_str(coherency).map_err(|e| input_err(e.to_string()))?;
-    let num = |k: &str, default: f64| c.get(k).and_then(Value::as_f64).unwrap_or(default);
+    let num = |k: &str| c.get(k).and_then(Value::as_f64);
     let coherency = match c.get("model").and_then(Value::as_str) {
         Some("luco-wong") => match c.get("alpha").and_then(Value::as_f64) {
             Some(alpha) => Coherency::LucoWong { alpha },
@@ -655,13 +655,9 @@ fn coherent(
                 "alpha is required with model = \"luco-wong\": the incoherence, s/m (e.g. 2.5e-4)",
             )),
         },
-        Some("harichandran-vanmarcke") => Coherency::HarichandranVanmarcke {
-            a_big: num("A", 0.736),
-            a: num("a", 0.147),
-            k: num("k", 5210.0),
-            f0: num("f0", 1.09),
-            b: num("b", 2.78),
-        },
+        Some("harichandran-vanmarcke") => {
+            Coherency::harichandran_vanmarcke(num("A"), num("a"), num("k"), num("f0"), num("b"))
+        }
         other => {
             return Err(input_err(format!(
                 "model = {} is not allowed: \"luco-wong\" or \"harichandran-vanmarcke\"",

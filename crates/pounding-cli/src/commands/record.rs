@@ -39,9 +39,7 @@ fn record_synth(a: &SynthArgs) -> Result<(), CliError> {
         "# synthetic ground motion, pounding record synth --seed {} --filter {} --wg {} --zg {} --wf {} --zf {} --duration {} --dt {} --t1 {} --t2 {} --decay {} --pga {}\n# read with units = \"m/s2\" (format time-acc)\ntime_s,acceleration_m_per_s2\n",
         a.seed, p.filter, p.wg, p.zg, p.wf, p.zf, p.duration, p.dt, p.t1, p.t2, p.decay, p.pga
     );
-    for (k, x) in r.accelerations().iter().enumerate() {
-        text.push_str(&format!("{},{x:e}\n", fmt_num(r.t0() + k as f64 * r.dt())));
-    }
+    push_rows(&mut text, &r);
     let limit = pounding_study::input::RECORD_FILE_LIMIT;
     if text.len() as u64 > limit {
         return Err(crate::error::input(format!(
@@ -71,6 +69,13 @@ fn record_synth(a: &SynthArgs) -> Result<(), CliError> {
     Ok(())
 }
 
+/// The rows `time_s,acceleration_m_per_s2` of `r`, each acceleration in its shortest exact form.
+fn push_rows(text: &mut String, r: &pounding::ground_motion::Record) {
+    for (k, x) in r.accelerations().iter().enumerate() {
+        text.push_str(&format!("{},{x:e}\n", fmt_num(r.t0() + k as f64 * r.dt())));
+    }
+}
+
 /// `pounding record coherent`: one file per support and coherent.json, appearing together in `--out`.
 fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
     use pounding::ground_motion::coherency::{Coherency, CoherencyKind, Spatial};
@@ -81,13 +86,9 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
                 "--alpha is required with --model luco-wong: the incoherence, s/m (e.g. 2.5e-4)",
             ))
         }
-        (CoherencyKind::HarichandranVanmarcke, None) => Coherency::HarichandranVanmarcke {
-            a_big: a.hv_a_big,
-            a: a.hv_a,
-            k: a.hv_k,
-            f0: a.hv_f0,
-            b: a.hv_b,
-        },
+        (CoherencyKind::HarichandranVanmarcke, None) => {
+            Coherency::harichandran_vanmarcke(a.hv_a_big, a.hv_a, a.hv_k, a.hv_f0, a.hv_b)
+        }
         (CoherencyKind::HarichandranVanmarcke, Some(_)) => {
             return Err(input("--alpha is Luco-Wong's: with --model harichandran-vanmarcke give --hv-A, --hv-a, --hv-k, --hv-f0, --hv-b (defaults: SMART-1 event 20)"))
         }
@@ -118,9 +119,7 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
             a.seed,
             a.model
         );
-        for (k, x) in r.accelerations().iter().enumerate() {
-            text.push_str(&format!("{},{x:e}\n", fmt_num(r.t0() + k as f64 * r.dt())));
-        }
+        push_rows(&mut text, r);
         let name = format!("support-{}.csv", j + 1);
         set.write_data(&name, text.as_bytes())?;
         files.push(name);

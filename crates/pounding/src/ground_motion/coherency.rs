@@ -66,6 +66,33 @@ impl Coherency {
         b: 2.78,
     };
 
+    /// Harichandran & Vanmarcke's model with the parameters given, each absent one [`Self::SMART1_EVENT20`]'s.
+    pub fn harichandran_vanmarcke(
+        a_big: Option<f64>,
+        a: Option<f64>,
+        k: Option<f64>,
+        f0: Option<f64>,
+        b: Option<f64>,
+    ) -> Coherency {
+        let Coherency::HarichandranVanmarcke {
+            a_big: a_big0,
+            a: a0,
+            k: k0,
+            f0: f00,
+            b: b0,
+        } = Self::SMART1_EVENT20
+        else {
+            unreachable!("SMART1_EVENT20 is Harichandran and Vanmarcke's model")
+        };
+        Coherency::HarichandranVanmarcke {
+            a_big: a_big.unwrap_or(a_big0),
+            a: a.unwrap_or(a0),
+            k: k.unwrap_or(k0),
+            f0: f0.unwrap_or(f00),
+            b: b.unwrap_or(b0),
+        }
+    }
+
     /// Its kind.
     pub fn kind(&self) -> CoherencyKind {
         match self {

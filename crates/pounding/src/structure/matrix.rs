@@ -173,7 +173,8 @@ fn market(text: &str) -> Result<Matrix, String> {
     };
     if rows != cols || rows > crate::limits::MAX_STOREYS {
         return Err(format!(
-            "a square matrix of order at most 200 (this one: {rows} x {cols})"
+            "a square matrix of order at most {} (this one: {rows} x {cols})",
+            crate::limits::MAX_STOREYS
         ));
     }
     let n = rows;
