@@ -3,7 +3,11 @@
 //! process after one warm-up run, printed as one JSON line per file. `bench/run/bench.py` runs it beside the
 //! whole command, in one session, and builds it against an older commit too.
 //!
-//!     cargo run --release --manifest-path bench/rust/Cargo.toml --bin analysis-time -- [--repeat N] FILE...
+//!     cargo run --release --manifest-path bench/rust/Cargo.toml --bin analysis-time -- [--repeat N]
+//!         [--stepping] FILE...
+//!
+//! `--stepping` runs every scenario with `[analysis] propagation = "stepping"` (the adaptive stepper
+//! throughout) instead of its own setting: the same binary times both ways.
 
 use std::ops::ControlFlow;
 use std::time::Instant;
@@ -15,11 +19,20 @@ fn main() {
         repeat = args[i + 1].parse().expect("--repeat N");
         args.drain(i..i + 2);
     }
+    let stepping = args.iter().any(|a| a == "--stepping");
+    args.retain(|a| a != "--stepping");
     for file in &args {
         let loaded = pounding_study::input::ScenarioFile::read(std::path::Path::new(file))
             .and_then(|f| f.load())
             .unwrap_or_else(|e| panic!("{file}: {e:?}"));
-        let s = &loaded.scenario;
+        let s = &if stepping {
+            loaded
+                .scenario
+                .clone()
+                .with_propagation(pounding::engine::Propagation::Stepping)
+        } else {
+            loaded.scenario.clone()
+        };
         let mut steps = 0;
         let mut times = Vec::with_capacity(repeat);
         for k in 0..=repeat {

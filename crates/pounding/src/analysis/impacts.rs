@@ -3,10 +3,11 @@
 //! locate its peak, and its path kept if asked.
 
 use super::model::{ContactRef, Model};
+use super::peaks::{exact_extremum, step_peak};
 use super::{Impact, ImpactLoop, Layer, MAX_LOOP_POINTS};
 use crate::element::{ContactPiece, ElementLaw, Engagement, Notice};
 use crate::engine::{EventInfo, Observer, Segment, System};
-use crate::integrate::{hermite_peak, Hermite, PeakTracker};
+use crate::integrate::{Hermite, PeakTracker};
 
 /// The impact a contact element is in (or has just been released from).
 struct Tracker {
@@ -128,6 +129,8 @@ pub(super) struct Impacts {
     /// Largest total force of each site at the integration nodes, N.
     pub pair_peak: Vec<f64>,
     pair_sum: Vec<f64>,
+    /// Room for the displacements and velocities between nodes.
+    motion: Vec<f64>,
 }
 
 impl Impacts {
@@ -162,6 +165,7 @@ impl Impacts {
             pair,
             pair_peak: vec![0.0; pairs],
             pair_sum: vec![0.0; pairs],
+            motion: vec![0.0; 2 * m.system.layout().dofs()],
         }
     }
 
@@ -262,20 +266,33 @@ impl Observer for Impacts {
             );
             let p = Hermite::new(xa, xb, va, vb, h);
             let el = &sys.elements()[c.element];
-            let n = sys.layout().dofs();
             for (peak, end) in self.end_peaks[k].iter_mut().zip([el.a, el.b]) {
-                let (ua, ub) = (end.value(seg.y0, 0), end.value(seg.y1, 0));
-                let (wa, wb) = (end.value(seg.y0, n), end.value(seg.y1, n));
-                *peak = peak.max(hermite_peak(ua, ub, wa, wb, h).1);
+                let q = |y: &[f64], off: usize| end.value(y, off);
+                *peak = peak.max(step_peak(seg, &mut self.motion, *peak, q).1);
             }
             let (hi, lo) = (&mut self.max_closing[k], &mut self.max_opening[k]);
             *hi = hi.max(xb);
             *lo = lo.max(-xb);
-            for s in p.extrema() {
-                if !s.is_nan() {
-                    let x = p.at(s);
+            // On an exact step, an extremum that may beat a peak (the Hermite's is within 1 %) is located on
+            // the exact motion.
+            let near = p
+                .extrema()
+                .into_iter()
+                .any(|s| !s.is_nan() && (p.at(s) >= 0.99 * *hi || -p.at(s) >= 0.99 * *lo));
+            let x = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
+            match near.then(|| exact_extremum(seg, &mut self.motion, (va, vb), &x)) {
+                Some(Some((_, x))) => {
                     *hi = hi.max(x);
                     *lo = lo.max(-x);
+                }
+                _ => {
+                    for s in p.extrema() {
+                        if !s.is_nan() {
+                            let x = p.at(s);
+                            *hi = hi.max(x);
+                            *lo = lo.max(-x);
+                        }
+                    }
                 }
             }
             if let Some(ct) = sys.elements()[c.element].law.as_contact() {

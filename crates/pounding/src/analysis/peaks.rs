@@ -4,7 +4,7 @@
 use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
 use crate::engine::{EventInfo, Observer, Segment, System};
-use crate::integrate::{hermite_peak, Hermite};
+use crate::integrate::{brent_root, golden_max, hermite_peak, Hermite};
 
 /// A largest value and its time, s.
 #[derive(Clone, Copy, Debug, Default)]
@@ -19,6 +19,55 @@ impl Peak {
             *self = Peak { value, time };
         }
     }
+}
+
+/// The largest `|q|` on a step of a quantity `q = value(y, 0)` whose rate is `value(y, n)` (a combination of
+/// displacements; its rate the same of velocities), with its time: the cubic Hermite's estimate on the step's
+/// ends; on a step propagated exactly whose estimate may beat `best`, the extremum on the exact motion (the
+/// root of the rate, located by Brent's method). `motion` is room for the displacements and velocities.
+pub(super) fn step_peak(
+    seg: &Segment<'_, '_>,
+    motion: &mut [f64],
+    best: f64,
+    value: impl Fn(&[f64], usize) -> f64,
+) -> (f64, f64) {
+    let n = motion.len() / 2;
+    let (y0, y1) = (seg.y0, seg.y1);
+    let h = seg.t1 - seg.t0;
+    let (qa, qb, va, vb) = (value(y0, 0), value(y1, 0), value(y0, n), value(y1, n));
+    let (s, p) = hermite_peak(qa, qb, va, vb, h);
+    // The Hermite estimate errs by less than 1 % on an exact step (r h <= 1/2).
+    if p < 0.99 * best {
+        return (seg.t0 + s * h, p);
+    }
+    match exact_extremum(seg, motion, (va, vb), &value) {
+        Some((tm, q)) if q.abs() > qb.abs() => (tm, q.abs()),
+        Some(_) => (seg.t1, qb.abs()),
+        None => (seg.t0 + s * h, p),
+    }
+}
+
+/// On a step propagated exactly, the interior extremum of `q = value(y, 0)` (rate `value(y, n)`, `va` and
+/// `vb` at the step's ends): the root of its rate on the exact motion (Brent's method) and `q` there; `None`
+/// on a stepped step or when the rate keeps its sign.
+pub(super) fn exact_extremum(
+    seg: &Segment<'_, '_>,
+    motion: &mut [f64],
+    (va, vb): (f64, f64),
+    value: &impl Fn(&[f64], usize) -> f64,
+) -> Option<(f64, f64)> {
+    if seg.dense.motion().is_none() || va * vb >= 0.0 {
+        return None;
+    }
+    let n = motion.len() / 2;
+    let mut rate = |t: f64| {
+        seg.dense.eval_prefix(t, motion);
+        value(motion, n)
+    };
+    let tol = 4.0 * f64::EPSILON * seg.t1.abs();
+    let tm = brent_root(&mut rate, seg.t0, seg.t1, va, vb, tol)?;
+    seg.dense.eval_prefix(tm, motion);
+    Some((tm, value(motion, 0)))
 }
 
 /// Room for the states of the element with the most.
@@ -52,6 +101,8 @@ pub(super) struct Peaks {
     pub column: Vec<[f64; 5]>,
     /// A storey element's states between nodes.
     states: Vec<f64>,
+    /// Room for the displacements and velocities between nodes.
+    motion: Vec<f64>,
     /// Each storey element's deformation on the step (room for the storey with the most).
     curves: Vec<Hermite>,
     /// The elements of the storeys and lines, each once, and each element's deformation and rate at the
@@ -84,6 +135,7 @@ impl Peaks {
             columns: m.columns.clone(),
             column: vec![[0.0; 5]; m.columns.len()],
             states: room(m),
+            motion: vec![0.0; 2 * n],
             curves: vec![Hermite::new(0.0, 0.0, 0.0, 0.0, 1.0); most],
             used: {
                 let mut u: Vec<usize> = m
@@ -118,8 +170,41 @@ impl Peaks {
         }
     }
 
-    /// The storey under degree of freedom `i` on the segment: its drift's peak, and its force (`sum c f` of
-    /// its elements) at the drift's extrema and at the end.
+    /// On a step propagated exactly, the largest absolute acceleration of each floor inside it: where the
+    /// jerk changes sign and the cubic Hermite of the acceleration (values and jerks at the ends) may beat the
+    /// peak, the root of the jerk on the exact motion (Brent's method) and the acceleration there.
+    fn accelerations_inside(&mut self, seg: &Segment<'_, '_>) {
+        let Some(motion) = seg.dense.motion() else {
+            return;
+        };
+        let sys = seg.system;
+        let n = sys.layout().dofs();
+        let (t0, t1) = (seg.t0, seg.t1);
+        let h = t1 - t0;
+        // The ground's accelerations and slopes along x and y are components 2n to 2n + 3 of the motion.
+        let f = &motion.w0[2 * n..2 * n + 4];
+        let tol = 4.0 * f64::EPSILON * t1.abs();
+        for i in 0..n {
+            let (px, py) = sys.pull(i);
+            let ground = |tau: f64| px * (f[0] + f[1] * tau) + py * (f[2] + f[3] * tau);
+            let slope = px * f[1] + py * f[3];
+            let (a0, a1) = (
+                motion.rates[0][n + i] + ground(0.0),
+                motion.rates[4][n + i] + ground(h),
+            );
+            let (j0, j1) = (motion.jerk[0][i] + slope, motion.jerk[1][i] + slope);
+            let (_, p) = hermite_peak(a0, a1, j0, j1, h);
+            if j0 * j1 >= 0.0 || p < 0.99 * self.acceleration[i].value {
+                continue;
+            }
+            let jerk = |t: f64| motion.w_at(t - t0, n + i)[2] + slope;
+            if let Some(tm) = brent_root(jerk, t0, t1, j0, j1, tol) {
+                let a = motion.w_at(tm - t0, n + i)[1] + ground(tm - t0);
+                self.acceleration[i].offer(a.abs(), tm);
+            }
+        }
+    }
+
     fn storey(&mut self, seg: &Segment<'_, '_>, i: usize) {
         let sys = seg.system;
         let l = sys.layout();
@@ -131,6 +216,7 @@ impl Peaks {
             states: room,
             ends,
             forces,
+            motion,
             ..
         } = self;
         let st = &storeys[i];
@@ -138,7 +224,6 @@ impl Peaks {
         let n = l.dofs();
         let (xa, xb, va, vb) = (drift(y0, 0), drift(y1, 0), drift(y0, n), drift(y1, n));
         let curve = Hermite::new(xa, xb, va, vb, h);
-        let peak_drift = hermite_peak(xa, xb, va, vb, h).1;
         let mut end = 0.0;
         for (k, &(e, c)) in st.elements.iter().enumerate() {
             let [pa, qa, pb, qb] = ends[e];
@@ -146,6 +231,35 @@ impl Peaks {
             end += c * forces[e];
         }
         let mut shear = end.abs();
+        if seg.dense.motion().is_some() {
+            // On the exact motion: the shear at the drift's extremum (every law is affine here).
+            let (tm, peak_drift) = step_peak(seg, motion, self.drift[i], drift);
+            // The shear there on the Hermite curves (within 1 %) first: only one that may beat the peak
+            // is read on the exact motion.
+            let s = (tm - seg.t0) / h;
+            let estimate: f64 = st
+                .elements
+                .iter()
+                .enumerate()
+                .map(|(k, &(e, c))| {
+                    let p = &curves[k];
+                    c * sys.elements()[e].force(p.at(s), p.slope(s), &room[..l.block(e).len()])
+                })
+                .sum();
+            if tm < seg.t1 && estimate.abs() >= 0.99 * self.shear[i] {
+                seg.dense.eval_prefix(tm, motion);
+                let mut f = 0.0;
+                for &(e, c) in &st.elements {
+                    let (x, v) = sys.deformation(e, motion);
+                    f += c * sys.elements()[e].force(x, v, &room[..l.block(e).len()]);
+                }
+                shear = shear.max(f.abs());
+            }
+            self.drift[i] = self.drift[i].max(peak_drift);
+            self.shear[i] = self.shear[i].max(shear);
+            return;
+        }
+        let peak_drift = hermite_peak(xa, xb, va, vb, h).1;
         for s in curve.extrema() {
             if s.is_nan() {
                 continue;
@@ -181,20 +295,23 @@ impl Observer for Peaks {
             self.forces[e] = sys.elements()[e].force(xb, vb, &y1[l.block(e)]);
         }
         for i in 0..n {
-            let (s, u) = hermite_peak(y0[l.u(i)], y1[l.u(i)], y0[l.v(i)], y1[l.v(i)], h);
-            self.displacement[i].offer(u, seg.t0 + s * h);
+            let best = self.displacement[i].value;
+            let (t, u) = step_peak(seg, &mut self.motion, best, |y, off| y[off + i]);
+            self.displacement[i].offer(u, t);
             self.storey(seg, i);
         }
         for (k, &e) in self.lines.iter().enumerate() {
-            let [xa, va, xb, vb] = self.ends[e];
-            self.line_drift[k] = self.line_drift[k].max(hermite_peak(xa, xb, va, vb, h).1);
+            let el = &sys.elements()[e];
+            let x = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
+            let (_, d) = step_peak(seg, &mut self.motion, self.line_drift[k], x);
+            self.line_drift[k] = self.line_drift[k].max(d);
         }
         for (p, peak) in self.corners.iter().zip(&mut self.corner) {
             let end = End::Point(*p);
-            let (ua, ub) = (end.value(y0, 0), end.value(y1, 0));
-            let (va, vb) = (end.value(y0, n), end.value(y1, n));
-            let (s, u) = hermite_peak(ua, ub, va, vb, h);
-            peak.offer(u, seg.t0 + s * h);
+            let (t, u) = step_peak(seg, &mut self.motion, peak.value, |y, off| {
+                end.value(y, off)
+            });
+            peak.offer(u, t);
         }
         for (c, peak) in self.columns.iter().zip(&mut self.column) {
             // Each end force is a combination of the spring's deformation and the drift: cubic on the step
@@ -208,17 +325,26 @@ impl Observer for Peaks {
                 d.value(y1, n),
             );
             for (p, &(alpha, beta)) in peak.iter_mut().zip(&c.ends) {
-                let v = hermite_peak(
-                    alpha * xa + beta * da,
-                    alpha * xb + beta * db,
-                    alpha * va + beta * dva,
-                    alpha * vb + beta * dvb,
-                    h,
-                )
-                .1;
+                let v = if seg.dense.motion().is_some() {
+                    let el = &sys.elements()[c.element];
+                    let q = |y: &[f64], off: usize| {
+                        alpha * (el.a.value(y, off) - el.b.value(y, off)) + beta * d.value(y, off)
+                    };
+                    step_peak(seg, &mut self.motion, *p, q).1
+                } else {
+                    hermite_peak(
+                        alpha * xa + beta * da,
+                        alpha * xb + beta * db,
+                        alpha * va + beta * dva,
+                        alpha * vb + beta * dvb,
+                        h,
+                    )
+                    .1
+                };
                 *p = p.max(v);
             }
         }
+        self.accelerations_inside(seg);
         self.accelerations(sys, seg.t1, seg.rate1);
     }
 
@@ -248,6 +374,8 @@ pub(super) struct DevicePeaks {
     rates: Vec<f64>,
     /// Room for a device's states between nodes.
     states: Vec<f64>,
+    /// Room for the displacements and velocities between nodes.
+    motion: Vec<f64>,
 }
 
 impl DevicePeaks {
@@ -260,6 +388,7 @@ impl DevicePeaks {
             opening: vec![0.0; n],
             rates: room(m),
             states: room(m),
+            motion: vec![0.0; 2 * m.system.layout().dofs()],
         }
     }
 }
@@ -273,6 +402,33 @@ impl Observer for DevicePeaks {
             let ((xa, va), (xb, vb)) = (sys.deformation(e, seg.y0), sys.deformation(e, seg.y1));
             let f = total_force(sys, e, seg.y1, &mut self.rates);
             let (mut force, mut hi, mut lo) = (f.abs(), xb, -xb);
+            if seg.dense.motion().is_some() {
+                // On the exact motion: the deformation's extremum, and the force's largest value where it
+                // may beat the peak (golden section; an affine law's force needs no states).
+                let el = &sys.elements()[e];
+                let q = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
+                if let Some((_, x)) = exact_extremum(seg, &mut self.motion, (va, vb), &q) {
+                    hi = hi.max(x);
+                    lo = lo.max(-x);
+                }
+                let fa = total_force(sys, e, seg.y0, &mut self.rates).abs();
+                if fa.max(force) >= 0.9 * self.force[k] {
+                    let (motion, rates) = (&mut self.motion, &mut self.rates);
+                    let states = &self.states[..sys.layout().block(e).len()];
+                    let mut at = |t: f64| {
+                        seg.dense.eval_prefix(t, motion);
+                        let (x, v) = sys.deformation(e, motion);
+                        let (fe, fv) = el.evaluate(x, v, states, &mut rates[..states.len()]);
+                        (fe + fv).abs()
+                    };
+                    let (_, fm) = golden_max(&mut at, seg.t0, seg.t1, 1e-12 * h);
+                    force = force.max(fm);
+                }
+                self.force[k] = self.force[k].max(force);
+                self.closing[k] = self.closing[k].max(hi);
+                self.opening[k] = self.opening[k].max(lo);
+                continue;
+            }
             let p = Hermite::new(xa, xb, va, vb, h);
             let [s1, s2] = p.extrema();
             for s in [s1, s2, p.inflection()] {

@@ -223,6 +223,7 @@ fn run(
         atol,
         h0,
         max_steps: budget,
+        propagation: s.propagation(),
     };
     let out = engine::run(
         &mut model.system,

@@ -75,6 +75,7 @@ pub struct Scenario {
     pub(super) output_dt: f64,
     pub(super) tolerance: f64,
     pub(super) min_impact_velocity: f64,
+    pub(super) propagation: crate::engine::Propagation,
 }
 
 /// Default floor of the impact velocity used to build a contact law, m/s (see
@@ -117,6 +118,7 @@ impl Scenario {
             output_dt: DEFAULT_OUTPUT_DT,
             tolerance: DEFAULT_TOLERANCE,
             min_impact_velocity: DEFAULT_MIN_IMPACT_VELOCITY,
+            propagation: crate::engine::Propagation::default(),
         })
     }
 
@@ -205,6 +207,19 @@ impl Scenario {
     /// Smallest impact velocity used to build a contact law, m/s.
     pub fn min_impact_velocity(&self) -> f64 {
         self.min_impact_velocity
+    }
+
+    /// The same scenario advanced between events as `how` says (default: exactly while every law is affine,
+    /// `docs/performance.md`; `Stepping` takes every stretch with the adaptive Runge–Kutta stepper, to check
+    /// one against the other).
+    pub fn with_propagation(mut self, how: crate::engine::Propagation) -> Self {
+        self.propagation = how;
+        self
+    }
+
+    /// How the scenario advances between events.
+    pub fn propagation(&self) -> crate::engine::Propagation {
+        self.propagation
     }
     /// The buildings, left to right.
     pub fn buildings(&self) -> &[Building] {

@@ -194,6 +194,26 @@ impl ForceLaw {
         Some((f, f * d / (n + 1.0)))
     }
 
+    /// `(k, c)` (N/m, N s/m) when the law is `F = k d + c v` in `phase` (Hooke, Kelvin–Voigt, a linear
+    /// Jankowski law); `None` for a nonlinear law.
+    pub fn linear(&self, phase: Phase) -> Option<(f64, f64)> {
+        match (*self, phase) {
+            (ForceLaw::Elastic { k, n }, _) => (n == 1.0).then_some((k, 0.0)),
+            (ForceLaw::LinearViscous { k, c, .. }, Phase::Approach) => Some((k, c)),
+            (ForceLaw::LinearViscous { k, c_r, .. }, Phase::Restitution) => Some((k, c_r)),
+            (ForceLaw::Jankowski { k, n, c0 }, Phase::Approach) => (n == 1.0).then_some((k, c0)),
+            (ForceLaw::Jankowski { k, n, .. }, Phase::Restitution) => {
+                (n == 1.0).then_some((k, 0.0))
+            }
+            (
+                ForceLaw::HuntCrossley { .. }
+                | ForceLaw::Bilinear { .. }
+                | ForceLaw::Thornton { .. },
+                _,
+            ) => None,
+        }
+    }
+
     /// A function that is positive while the law pushes and whose first sign change in restitution marks
     /// the force reaching 0 before the penetration does (the release of a clamped law): the force itself,
     /// except for a Hunt–Crossley law, whose force `k d^n (1 + chi_r v / v_i)` changes sign twice when the

@@ -12,7 +12,7 @@
 
 use crate::contact::{ForceLaw, Phase, PreparedContact, Tension, Turn};
 use crate::element::{
-    ElementEnergy, ElementLaw, Event, Notice, RateGate, Scales, Transition, Watch,
+    Affine, ElementEnergy, ElementLaw, Event, Notice, RateGate, Scales, Transition, Watch,
 };
 use crate::integrate::{DenseComponent, Piece};
 use crate::Error;
@@ -381,6 +381,19 @@ impl ElementLaw for Contact {
             contact: s[0],
             ..ElementEnergy::default()
         }
+    }
+
+    fn affine(&self) -> Option<Affine> {
+        let (k, c) = match self.state {
+            Engagement::Open | Engagement::Resting | Engagement::Released { .. } => (0.0, 0.0),
+            Engagement::Contact { law, phase, .. } => law.linear(phase)?,
+            Engagement::Held { law, .. } => (law.linear(Phase::Approach)?.0, 0.0),
+        };
+        Some(Affine {
+            k,
+            c,
+            f0: -k * self.gap,
+        })
     }
 
     fn watched(&self) -> &'static [Watch] {

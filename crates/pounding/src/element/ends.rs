@@ -145,6 +145,16 @@ impl Element {
         self.law.energy(x, s)
     }
 
+    /// The element's force (law and parallel dashpot) in its law's current phase as an affine function of
+    /// deformation and rate, if it is one.
+    #[inline]
+    pub fn affine(&self) -> Option<super::Affine> {
+        self.law.affine().map(|a| super::Affine {
+            c: a.c + self.c,
+            ..a
+        })
+    }
+
     /// The events watched in the current phase.
     pub fn watched(&self) -> &'static [Watch] {
         self.law.watched()

@@ -121,6 +121,20 @@ pub struct ElementEnergy {
     pub damping: f64,
 }
 
+/// A law's force in its current phase as an affine function of the deformation and its rate:
+/// `f + f_v = k x + c x' + f0`, where `f + f_v` is what [`ElementLaw::evaluate`] returns (law and viscous
+/// force together). While every law of a run is affine, the engine propagates the motion exactly between
+/// events ([`crate::engine`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Affine {
+    /// Stiffness, N/m.
+    pub k: f64,
+    /// Viscous coefficient, N s/m.
+    pub c: f64,
+    /// Force at zero deformation and rate, N.
+    pub f0: f64,
+}
+
 /// Scales of the motion of an element's ends, from which a law sets the absolute tolerances of its own
 /// states for the integrator's error control: the relative tolerance times the state's scale.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -165,6 +179,14 @@ pub trait ElementLaw {
 
     /// The energy the law holds and has dissipated at deformation `x` (m) with states `s`, J.
     fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy;
+
+    /// The force of the current phase as an affine function of the deformation and its rate, valid until
+    /// the law's next event ([`Affine`]); `None` for a nonlinear phase. A law answers only if its own
+    /// states, if any, do not enter its force: their rates (a work, a dissipated energy) are then
+    /// integrated along the exact motion.
+    fn affine(&self) -> Option<Affine> {
+        None
+    }
 
     /// The events watched in the current phase.
     fn watched(&self) -> &'static [Watch] {

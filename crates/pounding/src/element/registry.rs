@@ -5,7 +5,9 @@
 
 use super::device::{self, Device, Parameter};
 use super::storey;
-use super::{Contact, ElementEnergy, ElementLaw, Event, RateGate, Scales, Transition, Watch};
+use super::{
+    Affine, Contact, ElementEnergy, ElementLaw, Event, RateGate, Scales, Transition, Watch,
+};
 use crate::Error;
 
 /// Declares [`Law`] (every law), its [`ElementLaw`] dispatch, and [`DeviceLaw`] (the devices' parameters,
@@ -68,6 +70,10 @@ macro_rules! registry {
             #[inline]
             fn energy(&self, x: f64, s: &[f64]) -> ElementEnergy {
                 dispatch!(self, l => l.energy(x, s))
+            }
+            #[inline]
+            fn affine(&self) -> Option<Affine> {
+                dispatch!(self, l => l.affine())
             }
             #[inline]
             fn watched(&self) -> &'static [Watch] {

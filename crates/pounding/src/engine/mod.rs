@@ -13,12 +13,16 @@
 //! ([`crate::analysis`]) both run on it.
 
 mod driver;
+mod exact;
 mod layout;
+mod linear;
 mod observe;
+mod propagator;
 
 pub use driver::{run, Ending, Outcome, Settings};
 pub use layout::Layout;
 pub use observe::{EventInfo, Observer, Segment};
+pub use propagator::Propagation;
 
 use crate::element::{Element, End};
 use crate::ground_motion::Record;
@@ -395,8 +399,15 @@ impl OdeSystem for System<'_> {
     }
 
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.rhs_in(t, self.ground.at_xy(t), y, dy);
+    }
+}
+
+impl System<'_> {
+    /// The right-hand side at `t` with the ground's accelerations along x and y given (m/s^2; supports of
+    /// their own read their records at `t`).
+    pub(crate) fn rhs_in(&self, t: f64, (agx, agy): (f64, f64), y: &[f64], dy: &mut [f64]) {
         let n = self.layout.dofs();
-        let (agx, agy) = self.ground.at_xy(t);
         dy[..n].copy_from_slice(&y[n..2 * n]);
         let (mut e_in, mut e_damp) = (0.0, 0.0);
         // Forces first (N), divided by the masses at the end.

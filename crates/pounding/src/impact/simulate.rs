@@ -168,6 +168,7 @@ fn integrate(
         atol,
         h0,
         max_steps: 1_000_000,
+        propagation: engine::Propagation::default(),
     };
     let out = engine::run(&mut sys, (0.0, &y0), &settings, &mut rec)?;
     if out.ending != Ending::Stopped {

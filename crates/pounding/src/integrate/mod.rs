@@ -9,12 +9,17 @@
 //!
 //! Units follow the system being integrated; the stepper is unit-agnostic.
 
+mod exact;
 pub(crate) mod lu;
 mod peaks;
 mod roots;
 mod rosenbrock;
 mod switching;
 
+pub use exact::{
+    mat_vec, series, series_at, step_bound, terms_for, transition, Motion, GAUSS_NODES,
+    GAUSS_WEIGHTS, MAX_RHO, TERMS,
+};
 pub use peaks::{hermite_peak, Hermite, PeakTracker, Piece};
 pub use roots::{brent_root, golden_max};
 pub use rosenbrock::Rosenbrock;
@@ -70,12 +75,14 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
-/// The interpolant of one accepted step, valid on `[t0, t0 + h]` (order 4, exact at both ends).
+/// The motion on one accepted step, valid on `[t0, t0 + h]`: the quartic interpolant of a Runge–Kutta step
+/// (order 4, exact at both ends), or the exact motion of a step propagated exactly ([`Motion`]).
 #[derive(Clone, Debug, Default)]
 pub struct Dense {
     t0: f64,
     h: f64,
     r: [Vec<f64>; 5],
+    exact: Option<Box<Motion>>,
 }
 
 impl Dense {
@@ -85,7 +92,29 @@ impl Dense {
             t0: 0.0,
             h: 0.0,
             r: std::array::from_fn(|_| vec![0.0; n]),
+            exact: None,
         }
+    }
+
+    /// An exact motion (see [`Motion`]) on `[t0, t0 + h]`.
+    pub fn exact(motion: Motion) -> Self {
+        Self {
+            t0: 0.0,
+            h: 0.0,
+            r: std::array::from_fn(|_| Vec::new()),
+            exact: Some(Box::new(motion)),
+        }
+    }
+
+    /// The exact motion and its span, to set for a new step.
+    pub fn motion_mut(&mut self) -> Option<(&mut f64, &mut f64, &mut Motion)> {
+        let Self { t0, h, exact, .. } = self;
+        exact.as_deref_mut().map(|m| (t0, h, m))
+    }
+
+    /// The exact motion, if the step was propagated exactly.
+    pub fn motion(&self) -> Option<&Motion> {
+        self.exact.as_deref()
     }
 
     /// Start time of the step.
@@ -100,6 +129,12 @@ impl Dense {
 
     /// Writes the interpolated state at time `t` (in the step) into `out`.
     pub fn eval(&self, t: f64, out: &mut [f64]) {
+        if let Some(m) = &self.exact {
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = m.component(t - self.t0, self.h, i);
+            }
+            return;
+        }
         let th = if self.h == 0.0 {
             0.0
         } else {
@@ -117,6 +152,9 @@ impl Dense {
     /// few components are needed.
     #[inline]
     pub fn component(&self, t: f64, i: usize) -> f64 {
+        if let Some(m) = &self.exact {
+            return m.component(t - self.t0, self.h, i);
+        }
         let th = if self.h == 0.0 {
             0.0
         } else {
@@ -127,52 +165,104 @@ impl Dense {
             + th * (self.r[1][i] + th1 * (self.r[2][i] + th * (self.r[3][i] + th1 * self.r[4][i])))
     }
 
-    /// The interpolant of `u_a - u_b` (a missing index stands for 0), kept after the stepper has moved on.
-    pub fn difference(&self, a: Option<usize>, b: Option<usize>) -> DenseComponent {
-        let coef = |i: Option<usize>, k: usize| i.map_or(0.0, |i| self.r[k][i]);
-        DenseComponent {
-            t0: self.t0,
-            h: self.h,
-            r: std::array::from_fn(|k| coef(a, k) - coef(b, k)),
+    /// Writes the first `out.len()` components at `t` (the motion only, for an exact step: cheaper than
+    /// [`Self::eval`] when the integrated quantities are not needed).
+    pub fn eval_prefix(&self, t: f64, out: &mut [f64]) {
+        match &self.exact {
+            Some(m) => {
+                let nw = m.w0.len();
+                m.with_series(|c| {
+                    for (i, o) in out.iter_mut().enumerate() {
+                        *o = series_at(c, nw, i, t - self.t0, m.terms);
+                    }
+                })
+            }
+            None => self.eval(t, out),
         }
     }
 
+    /// The interpolant of `u_a - u_b` (a missing index stands for 0), kept after the stepper has moved on.
+    pub fn difference(&self, a: Option<usize>, b: Option<usize>) -> DenseComponent {
+        let mut terms = [(0, 0.0); 2];
+        let mut len = 0;
+        for (i, c) in [(a, 1.0), (b, -1.0)] {
+            if let Some(i) = i {
+                terms[len] = (i, c);
+                len += 1;
+            }
+        }
+        self.combination(&terms[..len])
+    }
+
     /// The interpolant of `sum c u_i` over `terms` `(i, c)` (an empty list: 0), kept after the stepper has
-    /// moved on.
+    /// moved on. Only components of the motion (displacements and velocities) for an exact step.
     pub fn combination(&self, terms: &[(usize, f64)]) -> DenseComponent {
-        DenseComponent {
+        if let Some(m) = &self.exact {
+            let nw = m.w0.len();
+            return m.with_series(|c| DenseComponent::Series {
+                t0: self.t0,
+                c: std::array::from_fn(|k| terms.iter().map(|&(i, w)| w * c[k * nw + i]).sum()),
+            });
+        }
+        DenseComponent::Quartic {
             t0: self.t0,
             h: self.h,
             r: std::array::from_fn(|k| terms.iter().map(|&(i, c)| c * self.r[k][i]).sum()),
         }
     }
-
-    /// Copies another interpolant into this one without allocating.
-    pub fn copy_from(&mut self, other: &Dense) {
-        self.t0 = other.t0;
-        self.h = other.h;
-        for (a, b) in self.r.iter_mut().zip(other.r.iter()) {
-            a.copy_from_slice(b);
-        }
-    }
 }
 
 /// One scalar of an interpolant (see [`Dense::difference`]), valid on the step it came from.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct DenseComponent {
-    t0: f64,
-    h: f64,
-    r: [f64; 5],
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DenseComponent {
+    /// A Runge–Kutta step's quartic.
+    Quartic {
+        /// Start of the step, s.
+        t0: f64,
+        /// Its length, s.
+        h: f64,
+        /// Coefficients in Hairer's form.
+        r: [f64; 5],
+    },
+    /// An exact step's Taylor series in `t - t0`.
+    Series {
+        /// Start of the step, s.
+        t0: f64,
+        /// Coefficients of the powers 0 to `TERMS - 1`.
+        c: [f64; TERMS],
+    },
+}
+
+impl Default for DenseComponent {
+    fn default() -> Self {
+        DenseComponent::Quartic {
+            t0: 0.0,
+            h: 0.0,
+            r: [0.0; 5],
+        }
+    }
 }
 
 impl std::ops::Sub for DenseComponent {
     type Output = DenseComponent;
     /// The difference of two scalars of one step's interpolant.
     fn sub(self, o: DenseComponent) -> DenseComponent {
-        DenseComponent {
-            t0: self.t0,
-            h: self.h,
-            r: std::array::from_fn(|k| self.r[k] - o.r[k]),
+        match (self, o) {
+            (DenseComponent::Quartic { t0, h, r }, DenseComponent::Quartic { r: q, .. }) => {
+                DenseComponent::Quartic {
+                    t0,
+                    h,
+                    r: std::array::from_fn(|k| r[k] - q[k]),
+                }
+            }
+            (DenseComponent::Series { t0, c }, DenseComponent::Series { c: q, .. }) => {
+                DenseComponent::Series {
+                    t0,
+                    c: std::array::from_fn(|k| c[k] - q[k]),
+                }
+            }
+            // Scalars of one step are of one kind.
+            (a, _) => a,
         }
     }
 }
@@ -181,14 +271,17 @@ impl DenseComponent {
     /// The value at `t`.
     #[inline]
     pub fn eval(&self, t: f64) -> f64 {
-        let th = if self.h == 0.0 {
-            0.0
-        } else {
-            (t - self.t0) / self.h
-        };
-        let th1 = 1.0 - th;
-        let r = &self.r;
-        r[0] + th * (r[1] + th1 * (r[2] + th * (r[3] + th1 * r[4])))
+        match self {
+            DenseComponent::Quartic { t0, h, r } => {
+                let th = if *h == 0.0 { 0.0 } else { (t - t0) / h };
+                let th1 = 1.0 - th;
+                r[0] + th * (r[1] + th1 * (r[2] + th * (r[3] + th1 * r[4])))
+            }
+            DenseComponent::Series { t0, c } => {
+                let tau = t - t0;
+                c.iter().rev().fold(0.0, |acc, &x| acc * tau + x)
+            }
+        }
     }
 }
 

@@ -408,6 +408,9 @@ impl ScenarioDoc {
             if let Some(v) = a.min_impact_velocity {
                 scenario = scenario.with_min_impact_velocity(v).map_err(e)?;
             }
+            if let Some(p) = a.propagation {
+                scenario = scenario.with_propagation(p);
+            }
         }
         if scenario.output_samples() > crate::limits::MAX_OUTPUT_SAMPLES {
             return Err(SchemaError::new(

@@ -143,6 +143,10 @@ pub struct AnalysisDoc {
     /// Floor of the impact velocity used to build a contact law, m/s (default 1e-3).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub min_impact_velocity: Option<f64>,
+    /// `exact` (default: linear stretches propagated exactly, `docs/performance.md`) or `stepping` (the
+    /// adaptive Runge–Kutta stepper throughout).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub propagation: Option<crate::engine::Propagation>,
 }
 
 /// `[[building]]`: a shear building, floor 1 (the lowest) first. With an `isolator`, floor 1 is the base

@@ -55,6 +55,7 @@ fn a_floor_against_a_rigid_wall_delivers_the_single_impact_e() {
                 atol,
                 h0: 1e-4,
                 max_steps: 1_000_000,
+                propagation: pounding::engine::Propagation::default(),
             };
             let mut obs = Velocities::default();
             engine::run(&mut sys, (0.0, &y0), &settings, &mut obs).unwrap();

@@ -59,6 +59,7 @@ fn oscillator(law: StoreyLaw, record: &Record) -> Vec<(f64, f64, f64, Vec<f64>)>
         atol,
         h0: 1e-4,
         max_steps: 10_000_000,
+        propagation: pounding::engine::Propagation::default(),
     };
     let mut nodes = Nodes::default();
     engine::run(&mut sys, (0.0, &vec![0.0; l.dim()]), &settings, &mut nodes).unwrap();

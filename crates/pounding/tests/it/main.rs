@@ -7,6 +7,7 @@ mod buildings;
 mod calibration;
 mod column;
 mod engine;
+mod exact;
 mod exact_relations;
 mod fit;
 mod fluid_viscous;

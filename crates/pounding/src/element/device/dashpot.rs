@@ -1,7 +1,7 @@
 //! A linear dashpot, `f = c x'`: its force is viscous, counted as viscous damping in the energy balance.
 
 use super::{damping_coefficient, Device, Parameter};
-use crate::element::{ElementEnergy, ElementLaw};
+use crate::element::{Affine, ElementEnergy, ElementLaw};
 use crate::Error;
 
 /// A linear dashpot of coefficient `c` (N s/m).
@@ -31,6 +31,13 @@ impl ElementLaw for Dashpot {
     #[inline]
     fn force(&self, _x: f64, _v: f64, _s: &[f64]) -> f64 {
         0.0
+    }
+
+    fn affine(&self) -> Option<Affine> {
+        Some(Affine {
+            c: self.c,
+            ..Affine::default()
+        })
     }
 
     #[inline]

@@ -13,7 +13,7 @@
 
 use super::{damping_coefficient, stiffness, Device, Parameter};
 use crate::element::{
-    ElementEnergy, ElementLaw, Event, Notice, RateGate, Scales, Transition, Watch,
+    Affine, ElementEnergy, ElementLaw, Event, Notice, RateGate, Scales, Transition, Watch,
 };
 use crate::error::check;
 use crate::Error;
@@ -79,6 +79,14 @@ impl ElementLaw for FluidViscous {
     }
 
     #[inline]
+    /// A damper of exponent 1 without a spring is a linear dashpot.
+    fn affine(&self) -> Option<Affine> {
+        (self.alpha == 1.0 && self.k.is_none()).then_some(Affine {
+            c: self.c,
+            ..Affine::default()
+        })
+    }
+
     fn evaluate(&self, x: f64, v: f64, s: &[f64], ds: &mut [f64]) -> (f64, f64) {
         match self.k {
             None => (0.0, self.c * self.power(v)),

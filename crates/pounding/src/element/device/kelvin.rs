@@ -1,7 +1,7 @@
 //! A Kelvin–Voigt unit: a spring and a dashpot in parallel, `f = k x + c x'`.
 
 use super::{Device, Parameter, SpringDashpotParams};
-use crate::element::{ElementEnergy, ElementLaw};
+use crate::element::{Affine, ElementEnergy, ElementLaw};
 use crate::Error;
 
 /// A Kelvin unit: stiffness `k` (N/m) and damping coefficient `c` (N s/m) in parallel.
@@ -25,6 +25,14 @@ impl ElementLaw for Kelvin {
     #[inline]
     fn force(&self, x: f64, _v: f64, _s: &[f64]) -> f64 {
         self.k * x
+    }
+
+    fn affine(&self) -> Option<Affine> {
+        Some(Affine {
+            k: self.k,
+            c: self.c,
+            f0: 0.0,
+        })
     }
 
     #[inline]

@@ -4,7 +4,7 @@
 //! inside a step.
 
 use super::{stiffness, Device, Parameter};
-use crate::element::{ElementEnergy, ElementLaw, Event, Notice, Transition, Watch};
+use crate::element::{Affine, ElementEnergy, ElementLaw, Event, Notice, Transition, Watch};
 use crate::error::check;
 use crate::Error;
 
@@ -46,6 +46,15 @@ impl ElementLaw for Restrainer {
         } else {
             0.0
         }
+    }
+
+    fn affine(&self) -> Option<Affine> {
+        let k = if self.taut { self.k } else { 0.0 };
+        Some(Affine {
+            k,
+            c: 0.0,
+            f0: k * self.slack,
+        })
     }
 
     #[inline]

@@ -1,7 +1,7 @@
 //! A linear spring, `f = k x`: a spring device, and the law of a linear storey or a linear isolator.
 
 use super::{stiffness, Device, Parameter};
-use crate::element::{ElementEnergy, ElementLaw};
+use crate::element::{Affine, ElementEnergy, ElementLaw};
 use crate::Error;
 
 /// A linear spring of stiffness `k` (N/m).
@@ -30,6 +30,13 @@ impl ElementLaw for Spring {
     #[inline]
     fn force(&self, x: f64, _v: f64, _s: &[f64]) -> f64 {
         self.k * x
+    }
+
+    fn affine(&self) -> Option<Affine> {
+        Some(Affine {
+            k: self.k,
+            ..Affine::default()
+        })
     }
 
     #[inline]

@@ -1,7 +1,9 @@
 //! The bilinear storey law with kinematic hardening (OpenSees `Steel01` without isotropic hardening): an
 //! elastic range of width `2 F_y` that moves with the back-force, and a post-yield slope `a k`.
 
-use crate::element::{ElementEnergy, ElementLaw, Event, Notice, RateGate, Transition, Watch};
+use crate::element::{
+    Affine, ElementEnergy, ElementLaw, Event, Notice, RateGate, Transition, Watch,
+};
 use crate::Error;
 
 const YIELD_UP: Event = Event(0);
@@ -122,6 +124,18 @@ impl ElementLaw for Bilinear {
             BilinearPhase::Elastic { x0, f0, .. } => f0 + self.k * (x - x0),
             BilinearPhase::Yielding { x0, f0, .. } => f0 + self.a * self.k * (x - x0),
         }
+    }
+
+    fn affine(&self) -> Option<Affine> {
+        let (k, x0, f0) = match self.phase {
+            BilinearPhase::Elastic { x0, f0, .. } => (self.k, x0, f0),
+            BilinearPhase::Yielding { x0, f0, .. } => (self.a * self.k, x0, f0),
+        };
+        Some(Affine {
+            k,
+            c: 0.0,
+            f0: f0 - k * x0,
+        })
     }
 
     /// Recoverable `F^2 / (2k)` (elastic unloading to zero force) and the hysteretic energy dissipated.

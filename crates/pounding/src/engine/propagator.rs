@@ -1,0 +1,117 @@
+//! The propagator of a run: exact while every law is affine ([`Exact`]), the adaptive [`Stepper`]
+//! otherwise; the two hand over at events.
+
+use super::exact::Exact;
+use super::System;
+use crate::integrate::{Dense, Stepper, Tolerance};
+use crate::Error;
+
+crate::named! {
+    /// How a run advances between events (`[analysis] propagation`).
+    pub enum Propagation: "propagation" {
+        /// Exactly while every law is affine (linear storeys, devices and isolators, a bilinear branch, an
+        /// open contact or a closed Hooke or Kelvin–Voigt one) under one record or two on one grid;
+        /// adaptive Runge–Kutta otherwise (the default).
+        Exact = "exact",
+        /// Adaptive Runge–Kutta throughout (Dormand–Prince, Rosenbrock on stiff stretches).
+        Stepping = "stepping",
+    }
+}
+
+// `named!` derives the enum's traits itself, so its default is written out.
+#[allow(clippy::derivable_impls)]
+impl Default for Propagation {
+    fn default() -> Self {
+        Propagation::Exact
+    }
+}
+
+/// Both steppers and which one is in use.
+pub(super) struct Propagator {
+    dp: Stepper,
+    exact: Option<Exact>,
+    on_exact: bool,
+}
+
+impl Propagator {
+    pub fn new(sys: &System, tol: Tolerance, how: Propagation) -> Self {
+        Self {
+            dp: Stepper::new(tol),
+            exact: match how {
+                Propagation::Exact => Exact::new(sys),
+                Propagation::Stepping => None,
+            },
+            on_exact: false,
+        }
+    }
+
+    /// (Re)starts at `(t0, y0)`: exactly if the laws allow it now, else with trial step `h0`.
+    pub fn reset(&mut self, sys: &System, t0: f64, y0: &[f64], h0: f64) {
+        self.on_exact = self.exact.as_mut().is_some_and(|e| e.reset(sys, t0, y0));
+        if !self.on_exact {
+            self.dp.reset(sys, t0, y0, h0);
+        }
+    }
+
+    pub fn t(&self) -> f64 {
+        match (&self.exact, self.on_exact) {
+            (Some(e), true) => e.t(),
+            _ => self.dp.t(),
+        }
+    }
+    pub fn y(&self) -> &[f64] {
+        match (&self.exact, self.on_exact) {
+            (Some(e), true) => e.y(),
+            _ => self.dp.y(),
+        }
+    }
+    pub fn dydt(&self) -> &[f64] {
+        match (&self.exact, self.on_exact) {
+            (Some(e), true) => e.dydt(),
+            _ => self.dp.dydt(),
+        }
+    }
+    pub fn dense(&self) -> &Dense {
+        match (&self.exact, self.on_exact) {
+            (Some(e), true) => e.dense(),
+            _ => self.dp.dense(),
+        }
+    }
+    /// The next trial step of the Runge–Kutta stepper, s; during an exact stretch, the exact step's length.
+    pub fn h(&self) -> f64 {
+        match (&self.exact, self.on_exact) {
+            (Some(e), true) => e.last_length(),
+            _ => self.dp.h(),
+        }
+    }
+
+    /// One step that never passes `t_stop`.
+    pub fn step_until(&mut self, sys: &System, t_stop: f64) -> Result<(), Error> {
+        match (&mut self.exact, self.on_exact) {
+            (Some(e), true) => {
+                e.step_until(sys, t_stop);
+                Ok(())
+            }
+            _ => self.dp.step_until(sys, t_stop),
+        }
+    }
+
+    /// The state at `t` inside the last step (an event's).
+    pub fn state_at(&mut self, sys: &System, t: f64, out: &mut [f64]) {
+        match (&mut self.exact, self.on_exact) {
+            (Some(e), true) => e.state_at(sys, t, out),
+            _ => self.dp.dense().eval(t, out),
+        }
+    }
+
+    /// Accepted and rejected steps (an exact step counts as one accepted).
+    pub fn counts(&self) -> (usize, usize) {
+        let (a, r) = self.dp.counts();
+        (a + self.exact.as_ref().map_or(0, Exact::steps), r)
+    }
+
+    /// Work done, in explicit steps ([`Stepper::work`]; an exact step counts as one).
+    pub fn work(&self) -> f64 {
+        self.dp.work() + self.exact.as_ref().map_or(0, Exact::steps) as f64
+    }
+}
