@@ -18,10 +18,11 @@ const KEPT: usize = 16;
 /// Step lengths kept per configuration.
 const LENGTHS: usize = 3;
 /// Largest work of a record interval propagated exactly, in multiply-adds of its transition matrices
-/// (`mech x nw` per step, steps per interval): beyond it (large systems, a very stiff or heavily damped
-/// contact) the Runge–Kutta stepper is cheaper, its implicit stretches handling stiffness. Set from the
-/// examples' timings (`docs/performance.md`).
-pub const MAX_INTERVAL_WORK: f64 = 4096.0;
+/// (`mech x nw` per step, steps per interval): beyond it (more than a few degrees of freedom, a very stiff or
+/// heavily damped contact) the Runge–Kutta stepper is cheaper, its implicit stretches handling stiffness.
+/// Set from the examples' timings (`docs/performance.md`, "Exact propagation"): a two-SDOF pair (44) gains,
+/// a 4-floor frame (about 500) and two buildings of 3 and 8 storeys (about 2,500) lost.
+pub const MAX_INTERVAL_WORK: f64 = 512.0;
 /// Steps of one configuration and length taken with the series before its transition matrices are built
 /// (four matrix exponentials cost about as much as that many series): a closed contact lasts a few steps.
 const BUILD_AFTER: usize = 24;
