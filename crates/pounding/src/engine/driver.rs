@@ -311,7 +311,7 @@ pub fn run(
             let (x, v) = sys.deformation(e, &ye);
             let block = sys.layout().block(e);
             let h = dp.h();
-            let tr = sys.elements_mut()[e].apply(ev, x, v, &ye[block.clone()], h)?;
+            let tr = sys.elements_mut()[e].apply(ev, x, v, &ye[block], h)?;
             if !sys.elements()[e].armed() && !disarmed.contains(&e) {
                 disarmed.push(e);
             }
