@@ -3,7 +3,7 @@
 
 use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
-use crate::engine::{EventInfo, Observer, Segment, System};
+use crate::engine::{forcing, EventInfo, Observer, Segment, System};
 use crate::integrate::{brent_root, golden_max, hermite_peak, Hermite};
 
 /// A largest value and its time, s.
@@ -181,13 +181,15 @@ impl Peaks {
         let n = sys.layout().dofs();
         let (t0, t1) = (seg.t0, seg.t1);
         let h = t1 - t0;
-        // The ground's accelerations and slopes along x and y are components 2n to 2n + 3 of the motion.
-        let f = &motion.w0[2 * n..2 * n + 4];
         let tol = 4.0 * f64::EPSILON * t1.abs();
         for i in 0..n {
             let (px, py) = sys.pull(i);
-            let ground = |tau: f64| px * (f[0] + f[1] * tau) + py * (f[2] + f[3] * tau);
-            let slope = px * f[1] + py * f[3];
+            let ground = |tau: f64| {
+                let ((gx, gy), _) = forcing(&motion.w0, 2 * n, tau);
+                px * gx + py * gy
+            };
+            let (_, (sx, sy)) = forcing(&motion.w0, 2 * n, 0.0);
+            let slope = px * sx + py * sy;
             let (a0, a1) = (
                 motion.rates[0][n + i] + ground(0.0),
                 motion.rates[4][n + i] + ground(h),

@@ -7,6 +7,7 @@
 //! integrated states (a contact's work) are integrated along the exact motion by three-point
 //! Gauss–Legendre quadrature. Events are located on the exact motion ([`crate::integrate::Motion`]).
 
+use super::linear::forcing;
 use super::System;
 use crate::integrate::{
     mat_vec, step_bound, transition, Dense, Motion, OdeSystem, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO,
@@ -295,7 +296,7 @@ impl Exact {
             let tau = node * h;
             sys.rhs_in(
                 t0 + tau,
-                ground(&self.w, mech, tau),
+                forcing(&self.w, mech, tau).0,
                 &self.ynode,
                 &mut self.dynode,
             );
@@ -309,16 +310,17 @@ impl Exact {
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;
-        sys.rhs_in(t1, ground(&self.w, mech, h), &self.y, &mut self.dydt);
+        sys.rhs_in(t1, forcing(&self.w, mech, h).0, &self.y, &mut self.dydt);
         motion.rates[4].copy_from_slice(&self.dydt);
         // The jerks: the velocities' rows of M on the rates (the forcing's rates are its slopes).
         let (nw, n) = (self.nw, mech / 2);
         let m = &motion.m;
+        let (_, (sx, sy)) = forcing(&motion.w0, mech, 0.0);
         for (end, rates) in [0, 4].into_iter().enumerate() {
             for i in 0..n {
                 let row = &m[(n + i) * nw..(n + i + 1) * nw];
                 let mut j: f64 = (0..mech).map(|l| row[l] * motion.rates[rates][l]).sum();
-                j += row[mech] * motion.w0[mech + 1] + row[mech + 2] * motion.w0[mech + 3];
+                j += row[mech] * sx + row[mech + 2] * sy;
                 motion.jerk[end][i] = j;
             }
         }
@@ -348,7 +350,7 @@ impl Exact {
                 }
                 sys.rhs_in(
                     t0 + s,
-                    ground(&motion.w0, mech, s),
+                    forcing(&motion.w0, mech, s).0,
                     &self.scratch,
                     &mut self.dynode,
                 );
@@ -358,11 +360,4 @@ impl Exact {
             }
         });
     }
-}
-
-/// The ground's accelerations along x and y (m/s^2) at `tau` into a step that starts at `w` (its forcing
-/// components follow the `mech` of the motion: `g_x, s_x, g_y, s_y`).
-#[inline]
-fn ground(w: &[f64], mech: usize, tau: f64) -> (f64, f64) {
-    (w[mech] + w[mech + 1] * tau, w[mech + 2] + w[mech + 3] * tau)
 }

@@ -12,6 +12,14 @@ use super::{Ground, System};
 /// Components of `w` after the motion that carry the ground's accelerations and slopes.
 pub(crate) const FORCING: usize = 4;
 
+/// The ground's accelerations `(g_x, g_y)` (m/s^2) at `tau` (s) into a step whose `w` at its start is `w`,
+/// and their slopes `(s_x, s_y)` (m/s^3); `mech` is the number of displacements and velocities in `w`.
+#[inline]
+pub(crate) fn forcing(w: &[f64], mech: usize, tau: f64) -> ((f64, f64), (f64, f64)) {
+    let f = &w[mech..mech + FORCING];
+    ((f[0] + f[1] * tau, f[2] + f[3] * tau), (f[1], f[3]))
+}
+
 impl System<'_> {
     /// Whether the motion can be written as `w' = M w` now: one record along x, two on one grid, or a constant
     /// acceleration (not supports of their own), every law affine. Writes the configuration's key (the laws' stiffnesses

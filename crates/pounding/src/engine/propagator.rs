@@ -53,36 +53,27 @@ impl Propagator {
         }
     }
 
+    /// The exact stepper, while it is the one in use.
+    fn active(&self) -> Option<&Exact> {
+        self.exact.as_ref().filter(|_| self.on_exact)
+    }
+
     pub fn t(&self) -> f64 {
-        match (&self.exact, self.on_exact) {
-            (Some(e), true) => e.t(),
-            _ => self.dp.t(),
-        }
+        self.active().map_or_else(|| self.dp.t(), Exact::t)
     }
     pub fn y(&self) -> &[f64] {
-        match (&self.exact, self.on_exact) {
-            (Some(e), true) => e.y(),
-            _ => self.dp.y(),
-        }
+        self.active().map_or_else(|| self.dp.y(), Exact::y)
     }
     pub fn dydt(&self) -> &[f64] {
-        match (&self.exact, self.on_exact) {
-            (Some(e), true) => e.dydt(),
-            _ => self.dp.dydt(),
-        }
+        self.active().map_or_else(|| self.dp.dydt(), Exact::dydt)
     }
     pub fn dense(&self) -> &Dense {
-        match (&self.exact, self.on_exact) {
-            (Some(e), true) => e.dense(),
-            _ => self.dp.dense(),
-        }
+        self.active().map_or_else(|| self.dp.dense(), Exact::dense)
     }
     /// The next trial step of the Runge–Kutta stepper, s; during an exact stretch, the exact step's length.
     pub fn h(&self) -> f64 {
-        match (&self.exact, self.on_exact) {
-            (Some(e), true) => e.last_length(),
-            _ => self.dp.h(),
-        }
+        self.active()
+            .map_or_else(|| self.dp.h(), Exact::last_length)
     }
 
     /// One step that never passes `t_stop`.
