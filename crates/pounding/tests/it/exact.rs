@@ -227,3 +227,23 @@ fn exact_and_stepped_pounding_agree_within_the_tolerance() {
         assert!(exact.statistics.steps < stepped.statistics.steps);
     }
 }
+
+#[test]
+fn an_undamped_storey_peaks_in_absolute_acceleration_at_w2_times_its_peak_displacement() {
+    // u'' + a_g = -w^2 u at every instant: the largest |absolute acceleration| is w^2 times the largest
+    // |u|, both located between samples on the exact motion (through the jerk and the velocity's roots).
+    for (m, k) in [(5.0e5f64, 7.8957e7f64), (2.0e5, 2.0e9), (1.0e6, 4.0e6)] {
+        let s = Scenario::new(
+            vec![building("sdof", &[m], &[k], 0.0)],
+            Record::el_centro_1940(),
+        )
+        .unwrap();
+        let b = &s.run().unwrap().buildings[0];
+        let ratio = b.peak_absolute_acceleration[0] / (k / m * b.peak_displacement[0]);
+        assert!(
+            (ratio - 1.0).abs() < 1e-10,
+            "T = {}: {ratio}",
+            2.0 * std::f64::consts::PI * (m / k).sqrt()
+        );
+    }
+}
