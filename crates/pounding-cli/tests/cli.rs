@@ -1269,7 +1269,21 @@ fn a_sweep_stores_what_single_runs_give_and_lists_them_in_runs_csv() {
     assert_eq!(swept["scenario"], format!("{}#6", file.display()));
     alone["scenario"] = Value::Null;
     swept["scenario"] = Value::Null;
+    // The store's row leaves out the units every run shares (the study table holds them once).
+    let units = alone
+        .as_object_mut()
+        .unwrap()
+        .shift_remove("units")
+        .unwrap();
+    assert!(swept.get("units").is_none());
     assert_eq!(alone, swept);
+    let db = rusqlite::Connection::open(out.join("study.sqlite")).unwrap();
+    let stored: String = db
+        .query_row("SELECT value FROM study WHERE name = 'units'", [], |r| {
+            r.get(0)
+        })
+        .unwrap();
+    assert_eq!(serde_json::from_str::<Value>(&stored).unwrap(), units);
     let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert!(

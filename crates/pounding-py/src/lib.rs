@@ -408,7 +408,8 @@ fn sweep_runs(
         .map(|i| {
             let o = swept.outcome(i, st.as_ref()).map_err(store_err)?;
             Ok(match o {
-                Ok(text) => (swept.key(i), true, text),
+                // Summaries whole, as a single run gives them (a store's rows leave out the units).
+                Ok(text) => (swept.key(i), true, RunSummary::row_to_whole(&text)),
                 Err(e) => (swept.key(i), false, e),
             })
         })
@@ -446,7 +447,8 @@ impl PyStore {
             .filter_map(|row| {
                 let key = row.key.clone();
                 let text = match &row.outcome {
-                    Ok(s) | Err(s) => s.clone(),
+                    Ok(s) => RunSummary::row_to_whole(s),
+                    Err(s) => s.clone(),
                 };
                 sweep::trusted(row).map(|o| (key, o.is_ok(), text))
             })
@@ -460,7 +462,11 @@ impl PyStore {
             .map(|(key, index, ok, text, seconds)| Finished {
                 key,
                 index,
-                outcome: if ok { Ok(text) } else { Err(text) },
+                outcome: if ok {
+                    Ok(RunSummary::whole_to_row(&text))
+                } else {
+                    Err(text)
+                },
                 seconds,
             })
             .collect();

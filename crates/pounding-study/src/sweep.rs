@@ -405,6 +405,8 @@ struct Worker<'a> {
     next: &'a AtomicUsize,
     cancel: &'a AtomicBool,
     claimed: &'a Mutex<HashSet<u128>>,
+    /// Keys the store held when the sweep began: only these are looked up in it.
+    held: &'a HashSet<u128>,
     damaged: &'a AtomicUsize,
     cache: &'a RecordCache,
 }
@@ -424,7 +426,7 @@ impl Worker<'_> {
                 .lock()
                 .unwrap_or_else(|e| e.into_inner())
                 .insert(key);
-            let stored = match (&reader, first) {
+            let stored = match (&reader, first && self.held.contains(&key)) {
                 (Some(r), true) => r.get(&p.key).ok().flatten(),
                 _ => None,
             };
@@ -452,7 +454,7 @@ impl Worker<'_> {
                     finished: Finished {
                         key: p.key,
                         index,
-                        outcome: outcome.map(|s| s.to_value().to_string()),
+                        outcome: outcome.map(|s| s.to_row()),
                         seconds: t0.elapsed().as_secs_f64(),
                     },
                 }
@@ -492,6 +494,14 @@ pub fn run(
         AtomicUsize::new(0),
     );
     let claimed = Mutex::new(HashSet::new());
+    let held: HashSet<u128> = match store.as_deref().map(Store::finished_keys).transpose() {
+        Ok(keys) => keys
+            .into_iter()
+            .flatten()
+            .filter_map(|k| u128::from_str_radix(&k, 16).ok())
+            .collect(),
+        Err(e) => return Err(SweepError::Store(e)),
+    };
     let cache = RecordCache::default();
     let worker = Worker {
         scenarios,
@@ -500,6 +510,7 @@ pub fn run(
         next: &next,
         cancel: &cancel,
         claimed: &claimed,
+        held: &held,
         damaged: &damaged,
         cache: &cache,
     };

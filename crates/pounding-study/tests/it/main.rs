@@ -3,3 +3,4 @@
 mod messages;
 mod plan;
 mod schemas;
+mod store;
