@@ -398,7 +398,7 @@ impl Ida {
                     )
                 })?;
                 let im = match &self.measure {
-                    Measure::Pga => rec.peaks().pga,
+                    Measure::Pga => rec.pga(),
                     Measure::Sa {
                         period, damping, ..
                     } => {

@@ -58,7 +58,7 @@ impl Scenario {
                 }
             }
         }
-        let pga = self.record.peaks().pga;
+        let pga = self.record.pga();
         if pga > PLAUSIBLE_PGA_G * G {
             said.push(format!("record: PGA {} m/s^2 ({} g) is above {PLAUSIBLE_PGA_G} g: a record in m/s^2 or cm/s^2 read as g? state units in [ground_motion]", sig(pga), sig(pga / G)));
         }

@@ -259,6 +259,12 @@ impl Record {
         self.acc[k] * (1.0 - f) + self.acc[k + 1] * f
     }
 
+    /// Peak ground acceleration (largest absolute sample), m/s^2: [`Record::peaks`]'s `pga` without the
+    /// integrations (what a run's summary and its plausibility check read).
+    pub fn pga(&self) -> f64 {
+        self.acc.iter().fold(0.0, |m, a| m.max(a.abs()))
+    }
+
     /// Peak acceleration, and peak velocity and displacement after a linear baseline correction: a straight
     /// line `c0 + c1 t`, fitted by least squares to the acceleration samples, is subtracted before integrating
     /// from rest. Integration is exact for the piecewise-linear acceleration between samples. The correction
