@@ -2,6 +2,7 @@
 //! Expected values come from the exact relations and reference tables of
 //! `docs/contact-models.md` or from closed forms stated beside each test.
 
+mod allocations;
 mod api;
 mod buildings;
 mod calibration;
