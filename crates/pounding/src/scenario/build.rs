@@ -1,8 +1,8 @@
 //! Validation of a [`ScenarioDoc`] into the library's types, once, with one-line messages that name the key.
 
 use super::{
-    AlphaDoc, BuildingDoc, ContactDoc, Contacts, DeviceDoc, EDoc, FormatName, GroundMotionDoc,
-    IsolatorDoc, LawDoc, LawKeys, ScenarioDoc, SchemaError, WallDoc,
+    AlphaDoc, BuildingDoc, ContactDoc, Contacts, DeviceDoc, EDoc, FloorRef, FormatName,
+    GroundMotionDoc, IsolatorDoc, LawDoc, LawKeys, ScenarioDoc, SchemaError, WallDoc,
 };
 use crate::analysis::{Building, Bumper, DeviceSpec, Scenario, WallSpec};
 use crate::contact::{
@@ -427,17 +427,19 @@ impl ScenarioDoc {
 
     /// `scenario` with its contacts, walls and devices.
     fn settle(&self, mut scenario: Scenario) -> Result<Scenario, SchemaError> {
+        let names = FloorNames::of(&self.building)?;
         for (i, c) in self.contact.iter().enumerate() {
-            scenario = contact(scenario, &format!("contact.{i}"), c)?;
+            scenario = contact(scenario, &format!("contact.{i}"), c, &names)?;
         }
         for (i, w) in self.wall.iter().enumerate() {
-            scenario = wall(scenario, &format!("wall.{i}"), w)?;
+            scenario = wall(scenario, &format!("wall.{i}"), w, &names)?;
         }
         for (i, c) in self.column_contact.iter().enumerate() {
             let at = format!("column_contact.{i}");
             let what = format!("column contact {:?} floor {}", c.slab.0, c.slab.1);
+            let floor = names.number(&format!("{at}.slab"), &c.slab.0, &c.slab.1)?;
             let spec = crate::analysis::ColumnLinkSpec {
-                slab: c.slab.clone(),
+                slab: (c.slab.0.clone(), floor),
                 column: c.column.clone(),
                 gap: c.gap,
                 contact: contact_law(&at, &what, &c.law())?,
@@ -451,7 +453,7 @@ impl ScenarioDoc {
                 .map_err(|e| lib(&at, &what, e))?;
         }
         for (i, d) in self.device.iter().enumerate() {
-            scenario = device(scenario, &format!("device.{i}"), d)?;
+            scenario = device(scenario, &format!("device.{i}"), d, &names)?;
         }
         Ok(match self.contacts {
             Contacts::On => scenario,
@@ -884,25 +886,115 @@ fn bumper(
         .map_err(|e| lib(&at, &what, e))
 }
 
-/// Floor pairs `[[i, j], ...]` at `at.floors`.
-fn pairs(
-    at: &str,
-    floors: &Option<Vec<Vec<usize>>>,
-) -> Result<Option<Vec<(usize, usize)>>, SchemaError> {
-    floors
-        .as_ref()
-        .map(|f| {
-            f.iter()
-                .map(|p| match p.as_slice() {
-                    [i, j] => Ok((*i, *j)),
-                    _ => Err(SchemaError::new(
-                        format!("{at}.floors"),
-                        format!("floors entry {p:?} is not allowed: pairs [floor of left, floor of right], from 1"),
-                    )),
-                })
-                .collect()
-        })
-        .transpose()
+/// The buildings' names of their degrees of freedom (`dof_names`), checked, by building: what a floor named
+/// in a contact, a wall, a device or a column contact refers to.
+struct FloorNames<'a>(Vec<(&'a str, &'a [String])>);
+
+impl<'a> FloorNames<'a> {
+    /// The names of every building entry, each list checked: one per floor, 1 to 64 bytes without control
+    /// characters, unique in its building.
+    fn of(buildings: &'a [BuildingDoc]) -> Result<Self, SchemaError> {
+        let mut out = Vec::new();
+        for (i, b) in buildings.iter().enumerate() {
+            let Some(names) = &b.dof_names else {
+                out.push((b.name.as_str(), &[][..]));
+                continue;
+            };
+            let at = format!("building.{i}.dof_names");
+            let floors = if b.masses.is_empty() {
+                b.heights.len()
+            } else {
+                b.masses.len()
+            };
+            if names.len() != floors {
+                return Err(SchemaError::new(at, format!("building {:?}: dof_names has {} names, but it has {floors} floors (degrees of freedom): give one name per floor, floor 1 first", b.name, names.len())));
+            }
+            for (k, n) in names.iter().enumerate() {
+                if n.is_empty() || n.len() > 64 || n.chars().any(char::is_control) {
+                    return Err(SchemaError::new(at, format!("building {:?}: dof name {n:?} is not allowed: 1 to 64 bytes without control characters", b.name)));
+                }
+                if names[..k].contains(n) {
+                    return Err(SchemaError::new(at, format!("building {:?}: dof name {n:?} is given twice: each floor's name must be its own", b.name)));
+                }
+            }
+            out.push((b.name.as_str(), names.as_slice()));
+        }
+        Ok(Self(out))
+    }
+
+    /// Whether `name` is a building's.
+    fn is_building(&self, name: &str) -> bool {
+        self.0.iter().any(|(b, _)| *b == name)
+    }
+
+    /// The number (from 1) of floor `f` of `building`, for the key `key`. A number is taken as it is (the
+    /// library checks its range); a name must be one of the building's `dof_names`.
+    fn number(&self, key: &str, building: &str, f: &FloorRef) -> Result<usize, SchemaError> {
+        let name = match f {
+            FloorRef::Number(n) => return Ok(*n),
+            FloorRef::Name(name) => name,
+        };
+        let names = self
+            .0
+            .iter()
+            .find(|(b, _)| *b == building)
+            .map_or(&[][..], |(_, n)| *n);
+        if let Some(k) = names.iter().position(|n| n == name) {
+            return Ok(k + 1);
+        }
+        let allowed = if names.is_empty() {
+            format!("building {building:?} has no dof_names: its floors by number, from 1")
+        } else {
+            let shown: Vec<String> = names.iter().take(8).map(|n| format!("{n:?}")).collect();
+            let more = if names.len() > 8 { ", ..." } else { "" };
+            format!(
+                "one of building {building:?}'s dof_names ({}{more}), or a floor number from 1",
+                shown.join(", ")
+            )
+        };
+        Err(SchemaError::new(
+            key,
+            format!("floor {name:?} is not allowed: {allowed}"),
+        ))
+    }
+
+    /// Floor pairs `[[i, j], ...]` at `at.floors` between `between` (a wall's side takes the building's
+    /// floors), as numbers.
+    fn pairs(
+        &self,
+        at: &str,
+        between: &[String; 2],
+        floors: &Option<Vec<Vec<FloorRef>>>,
+    ) -> Result<Option<Vec<(usize, usize)>>, SchemaError> {
+        let key = format!("{at}.floors");
+        let side = |k: usize| {
+            if self.is_building(&between[k]) {
+                between[k].as_str()
+            } else {
+                between[1 - k].as_str()
+            }
+        };
+        floors
+            .as_ref()
+            .map(|f| {
+                f.iter()
+                    .map(|p| match p.as_slice() {
+                        [i, j] => Ok((
+                            self.number(&key, side(0), i)?,
+                            self.number(&key, side(1), j)?,
+                        )),
+                        _ => {
+                            let shown: Vec<String> = p.iter().map(ToString::to_string).collect();
+                            Err(SchemaError::new(
+                                key.clone(),
+                                format!("floors entry [{}] is not allowed: pairs [floor of left, floor of right], from 1 or by name", shown.join(", ")),
+                            ))
+                        }
+                    })
+                    .collect()
+            })
+            .transpose()
+    }
 }
 
 /// Two names in `between`.
@@ -916,11 +1008,17 @@ fn two(at: &str, between: &[String], what: &str) -> Result<[String; 2], SchemaEr
 }
 
 /// Adds the contact entry `c` (at `at`) to `scenario`.
-fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, SchemaError> {
-    let [a, b] = two(at, &c.between, "[\"left\", \"right\"]")?;
-    let pair = format!("contact {a:?}-{b:?}");
+fn contact(
+    scenario: Scenario,
+    at: &str,
+    c: &ContactDoc,
+    names: &FloorNames,
+) -> Result<Scenario, SchemaError> {
+    let between = two(at, &c.between, "[\"left\", \"right\"]")?;
+    let pair = format!("contact {:?}-{:?}", between[0], between[1]);
     let spec = contact_law(at, &pair, &c.law())?;
-    let floors = pairs(at, &c.floors)?;
+    let floors = names.pairs(at, &between, &c.floors)?;
+    let [a, b] = between;
     let bumper = bumper(at, &pair, &c.bumper)?;
     let in_plan = |n: &str| {
         scenario
@@ -976,7 +1074,12 @@ fn contact(scenario: Scenario, at: &str, c: &ContactDoc) -> Result<Scenario, Sch
 }
 
 /// Adds the wall entry `w` (at `at`) to `scenario`.
-fn wall(scenario: Scenario, at: &str, w: &WallDoc) -> Result<Scenario, SchemaError> {
+fn wall(
+    scenario: Scenario,
+    at: &str,
+    w: &WallDoc,
+    names: &FloorNames,
+) -> Result<Scenario, SchemaError> {
     check_name(at, &w.name, FREE_NAME, |_| false)?;
     let what = format!("wall {:?}", w.name);
     let side = w.side;
@@ -985,7 +1088,15 @@ fn wall(scenario: Scenario, at: &str, w: &WallDoc) -> Result<Scenario, SchemaErr
         facing: w.facing.clone(),
         side,
         gap: w.gap,
-        floors: w.floors.clone(),
+        floors: w
+            .floors
+            .as_ref()
+            .map(|f| {
+                f.iter()
+                    .map(|x| names.number(&format!("{at}.floors"), &w.facing, x))
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .transpose()?,
         points: w.points.clone(),
         contact: contact_law(at, &what, &w.law())?,
         bumper: bumper(at, &what, &w.bumper)?,
@@ -995,7 +1106,12 @@ fn wall(scenario: Scenario, at: &str, w: &WallDoc) -> Result<Scenario, SchemaErr
 }
 
 /// Adds the device entry `d` (at `at`) to `scenario`.
-fn device(scenario: Scenario, at: &str, d: &DeviceDoc) -> Result<Scenario, SchemaError> {
+fn device(
+    scenario: Scenario,
+    at: &str,
+    d: &DeviceDoc,
+    names: &FloorNames,
+) -> Result<Scenario, SchemaError> {
     let between = two(
         at,
         &d.between,
@@ -1008,10 +1124,11 @@ fn device(scenario: Scenario, at: &str, d: &DeviceDoc) -> Result<Scenario, Schem
         "device {:?}",
         d.name.clone().unwrap_or_else(|| d.law.name().to_string())
     );
+    let floors = names.pairs(at, &between, &d.floors)?;
     let spec = DeviceSpec {
         name: d.name.clone(),
         between,
-        floors: pairs(at, &d.floors)?,
+        floors,
         law: d.law.clone(),
     };
     scenario.with_device(spec).map_err(|e| lib(at, &what, e))

@@ -208,6 +208,59 @@ pub struct BuildingDoc {
     /// Rows or a file, as `stiffness_matrix`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mass_matrix: Option<MatrixDoc>,
+    /// Names of the degrees of freedom (the floors), floor 1 first, one per floor: contacts, walls, devices
+    /// and column contacts may then name a floor by its name as well as by its number (for a structure given
+    /// by its matrices, the names of the program that condensed it). 1 to 64 bytes each, unique, without
+    /// control characters.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dof_names: Option<Vec<String>>,
+}
+
+/// A floor named in a contact, a wall, a device or a column contact: its number, from 1, or its name in the
+/// building's `dof_names`.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(untagged)]
+pub enum FloorRef {
+    /// The floor's number, from 1.
+    Number(usize),
+    /// The floor's name in its building's `dof_names`.
+    Name(String),
+}
+
+impl<'de> Deserialize<'de> for FloorRef {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Visitor;
+        impl serde::de::Visitor<'_> for Visitor {
+            type Value = FloorRef;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a floor: its number from 1, or its name in the building's dof_names")
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<FloorRef, E> {
+                usize::try_from(v)
+                    .map(FloorRef::Number)
+                    .map_err(|_| E::custom(format!("floor {v} is not allowed: a floor number from 1, or a name in the building's dof_names")))
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<FloorRef, E> {
+                u64::try_from(v)
+                    .map_err(|_| E::custom(format!("floor {v} is not allowed: a floor number from 1, or a name in the building's dof_names")))
+                    .and_then(|v| self.visit_u64(v))
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<FloorRef, E> {
+                Ok(FloorRef::Name(v.to_string()))
+            }
+        }
+        d.deserialize_any(Visitor)
+    }
+}
+
+impl std::fmt::Display for FloorRef {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            FloorRef::Number(n) => write!(f, "{n}"),
+            FloorRef::Name(s) => write!(f, "{s:?}"),
+        }
+    }
 }
 
 /// A matrix in a scenario: its rows, or the name of a file that holds it (read by the program that loads the
@@ -571,7 +624,7 @@ with_contact_law! {
         /// Floor pairs `[floor of left, floor of right]`, from 1 (default: floors at the same height); for
         /// buildings in plan, `[floor of the first of between, floor of the second]`.
         #[serde(default, skip_serializing_if = "Option::is_none")]
-        pub floors: Option<Vec<Vec<usize>>>,
+        pub floors: Option<Vec<Vec<FloorRef>>>,
         /// Buildings in plan: where along the façades the contact elements act, m (the site-frame
         /// coordinate along them; default both ends of their overlap).
         #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -598,9 +651,9 @@ with_contact_law! {
         pub side: Side,
         /// Clear distance at rest, m.
         pub gap: f64,
-        /// Floors that can strike it, from 1 (default `[1]`).
+        /// Floors that can strike it, from 1 or by name (default `[1]`).
         #[serde(default, skip_serializing_if = "Option::is_none")]
-        pub floors: Option<Vec<usize>>,
+        pub floors: Option<Vec<FloorRef>>,
         /// For a building in plan: where along its façade the contact elements act, m (the site-frame
         /// coordinate along it; default its two corners).
         #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -621,8 +674,8 @@ with_contact_law! {
     /// `[[column_contact]]`: a slab striking its neighbour's column at the slab's elevation (between the
     /// neighbour's floors; at one of them, a floor contact).
     pub struct ColumnContactDoc {
-        /// `[building, floor]`: the building whose slab strikes, and the floor (from 1).
-        pub slab: (String, usize),
+        /// `[building, floor]`: the building whose slab strikes, and the floor (from 1, or by name).
+        pub slab: (String, FloorRef),
         /// The neighbour whose column is struck.
         pub column: String,
         /// Gap at rest between the slab's edge and the column, m.
@@ -704,9 +757,9 @@ pub struct DeviceDoc {
     /// Two neighbouring buildings, or a building and a wall beside it.
     pub between: Vec<String>,
     /// Floor pairs (to a wall: `[floor, floor]`), from 1 (default: floors at the same height; floor 1 to a
-    /// wall).
+    /// wall), numbers or names.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub floors: Option<Vec<Vec<usize>>>,
+    pub floors: Option<Vec<Vec<FloorRef>>>,
     /// `model = "..."` and its keys (SI units): `spring` (stiffness), `dashpot` (damping_coefficient),
     /// `kelvin` and `maxwell` (both), `restrainer` (stiffness, slack).
     #[serde(flatten)]
