@@ -5,8 +5,9 @@
 //! - `runs(key TEXT PRIMARY KEY, idx INTEGER, status TEXT, summary TEXT, error TEXT, seconds REAL,
 //!   finished TEXT, digest TEXT)`: `key` the run's hash ([`crate::key`]), `idx` its position in the study
 //!   (from 0), `status` `ok` or `error`, `summary` the run's summary as compact JSON text (`summary.json`'s
-//!   content without its `units`, the same for every run: [`crate::summary::RunSummary::to_row`]; rows of
-//!   stores written before 2026-11-28 hold them too; NULL for an error), `error` the one-line message (NULL if ok), `seconds` the run's wall time (s),
+//!   content without its `units`, the same for every run: [`crate::summary::RunSummary::to_row`]; rows
+//!   written before 2026-11-27 hold them too; NULL for an error), `error` the one-line message (NULL if
+//!   ok), `seconds` the run's wall time (s),
 //!   `finished` the UTC time it was committed, `digest` the FNV-1a-128 hash of key, status and summary or
 //!   message ([`digest`]): a row whose digest does not match (a flipped bit, an edited or swapped summary) is
 //!   not trusted, and its run is run again.
