@@ -16,14 +16,20 @@
 //!   `summary.json`'s `units`).
 //!
 //! A store of layout `pounding-study-1` (without digests) is brought to this layout when opened: its rows get
-//! their digests, in the transaction that changes its format.
+//! their digests, in the transaction that changes its format. A store of layout `pounding-study-2` (rows with
+//! their units) gets its `units` row and this layout's name; its rows read as they are.
 
 use rusqlite::{params, Connection, OpenFlags, OptionalExtension};
 use std::collections::HashSet;
 use std::path::Path;
 
-/// Version of the store's layout.
-pub const FORMAT: &str = "pounding-study-2";
+/// Version of the store's layout: rows without the units (`pounding-study-3`, 2026-11-27). A version an
+/// older program does not know is refused by it with its layout named, instead of every row it cannot read
+/// being run again.
+pub const FORMAT: &str = "pounding-study-3";
+
+/// The layout whose rows hold the units, read as it is and brought to [`FORMAT`] when opened.
+const FORMAT_2: &str = "pounding-study-2";
 
 /// The layout before digests, read and brought to [`FORMAT`] when opened.
 const FORMAT_1: &str = "pounding-study-1";
@@ -255,7 +261,7 @@ impl Store {
         if format.is_none() && stored.is_none() && matches!(stored_runs, Ok(0)) {
             return Ok(Fit::New);
         }
-        if !matches!(format.as_deref(), Some(FORMAT | FORMAT_1)) {
+        if !matches!(format.as_deref(), Some(FORMAT | FORMAT_2 | FORMAT_1)) {
             return Err(mismatch(format!(
                 "has layout {:?}, not {FORMAT:?}",
                 format.unwrap_or_default()
@@ -504,6 +510,14 @@ fn migrate(tx: &rusqlite::Transaction<'_>, id: &str) -> rusqlite::Result<()> {
             r.get(0)
         })
         .optional()?;
+    if format.as_deref() == Some(FORMAT_2) {
+        // Its rows hold the units and read as they are; the study rows gain `units` in `open`.
+        tx.execute(
+            "UPDATE study SET value = ?1 WHERE name = 'format'",
+            params![FORMAT],
+        )?;
+        return Ok(());
+    }
     if format.as_deref() != Some(FORMAT_1) {
         return Ok(());
     }
@@ -704,6 +718,52 @@ mod tests {
         drop(conn);
         assert_eq!(Store::check(&path, "new", 2, &none), Ok(Fit::Same));
         assert!(Store::check(&path, "a", 2, &none).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_store_of_the_second_layout_reads_as_it_is_and_gets_the_units_row() {
+        let dir = scratch("layout2");
+        let path = dir.join("study.sqlite");
+        let mut s = Store::open(&path, "a", 2, &none).unwrap();
+        let whole = r#"{"units":{"gap":"m"},"warnings":[]}"#;
+        s.commit(&[finished("k0", 0, Ok(whole.into()))]).unwrap();
+        drop(s);
+        // As the second layout left it: its name, no units row.
+        let conn = Connection::open(&path).unwrap();
+        conn.execute_batch(
+            "UPDATE study SET value = 'pounding-study-2' WHERE name = 'format';
+             DELETE FROM study WHERE name = 'units';",
+        )
+        .unwrap();
+        drop(conn);
+        assert_eq!(Store::check(&path, "a", 2, &none), Ok(Fit::Same));
+        let s = Store::open(&path, "a", 2, &none).unwrap();
+        let rows = s.all().unwrap();
+        assert!(
+            rows[0].intact && rows[0].outcome == Ok(whole.to_string()),
+            "{rows:?}"
+        );
+        drop(s);
+        let conn = Connection::open(&path).unwrap();
+        let get = |name: &str| -> String {
+            conn.query_row("SELECT value FROM study WHERE name = ?1", [name], |r| {
+                r.get(0)
+            })
+            .unwrap()
+        };
+        assert_eq!(get("format"), FORMAT);
+        assert_eq!(get("units"), crate::summary::units_text());
+        // A layout this program does not know (a later one) is refused, naming it.
+        conn.execute(
+            "UPDATE study SET value = 'pounding-study-9' WHERE name = 'format'",
+            [],
+        )
+        .unwrap();
+        drop(conn);
+        assert!(
+            matches!(Store::check(&path, "a", 2, &none), Err(StoreError::Mismatch(m)) if m.contains("pounding-study-9"))
+        );
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
