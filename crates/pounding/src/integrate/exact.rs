@@ -252,37 +252,21 @@ impl Motion {
 }
 
 /// The monomial coefficients (in the fraction `theta` of the step) of the quartic through `rates` at
-/// `theta = 0`, the three Gauss nodes and 1: the inverse of their Vandermonde matrix, built once.
+/// `theta = 0`, the three Gauss nodes and 1: the solution of their Vandermonde system, factored once
+/// ([`super::lu`]).
 fn rate_quartic(rates: &[f64; 5]) -> [f64; 5] {
-    static INVERSE: std::sync::OnceLock<[[f64; 5]; 5]> = std::sync::OnceLock::new();
-    let inv = INVERSE.get_or_init(|| {
+    static FACTORS: std::sync::OnceLock<([f64; 25], [usize; 5])> = std::sync::OnceLock::new();
+    let (lu, piv) = FACTORS.get_or_init(|| {
         let nodes = [0.0, GAUSS_NODES[0], GAUSS_NODES[1], GAUSS_NODES[2], 1.0];
-        // Gauss–Jordan on [V | I], V[i][m] = nodes[i]^m.
-        let mut a = [[0.0f64; 10]; 5];
-        for (i, row) in a.iter_mut().enumerate() {
-            for (m, x) in row[..5].iter_mut().enumerate() {
-                *x = nodes[i].powi(m as i32);
-            }
-            row[5 + i] = 1.0;
-        }
-        for col in 0..5 {
-            let p = (col..5)
-                .max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))
-                .expect("rows");
-            a.swap(col, p);
-            let d = a[col][col];
-            a[col].iter_mut().for_each(|x| *x /= d);
-            for r in 0..5 {
-                if r != col {
-                    let f = a[r][col];
-                    let pivot = a[col];
-                    a[r].iter_mut().zip(pivot).for_each(|(x, y)| *x -= f * y);
-                }
-            }
-        }
-        std::array::from_fn(|m| std::array::from_fn(|i| a[m][5 + i]))
+        // V[i][m] = nodes[i]^m, row-major.
+        let mut v: [f64; 25] = std::array::from_fn(|k| nodes[k / 5].powi((k % 5) as i32));
+        let mut piv = [0; 5];
+        assert!(super::lu::factor(&mut v, &mut piv, 5), "distinct nodes");
+        (v, piv)
     });
-    std::array::from_fn(|m| (0..5).map(|i| inv[m][i] * rates[i]).sum())
+    let mut c = *rates;
+    super::lu::solve(lu, piv, &mut c);
+    c
 }
 
 #[cfg(test)]

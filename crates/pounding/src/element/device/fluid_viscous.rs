@@ -78,7 +78,6 @@ impl ElementLaw for FluidViscous {
         }
     }
 
-    #[inline]
     /// A damper of exponent 1 without a spring is a linear dashpot.
     fn affine(&self) -> Option<Affine> {
         (self.alpha == 1.0 && self.k.is_none()).then_some(Affine {
@@ -87,6 +86,7 @@ impl ElementLaw for FluidViscous {
         })
     }
 
+    #[inline]
     fn evaluate(&self, x: f64, v: f64, s: &[f64], ds: &mut [f64]) -> (f64, f64) {
         match self.k {
             None => (0.0, self.c * self.power(v)),
