@@ -11,7 +11,7 @@ use super::linear::forcing;
 use super::System;
 use crate::integrate::{
     mat_vec, step_bound, transition, Dense, Motion, OdeSystem, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO,
-    TERMS,
+    OFFSETS, TERMS,
 };
 
 /// Configurations kept at a time.
@@ -50,6 +50,48 @@ struct Configuration {
     /// A step length met, and how many times in a row: built into [`Self::lengths`] after
     /// [`BUILD_AFTER`].
     seen: (f64, usize),
+    /// Transition rows at offsets into a step where observers ask for the whole state (at most
+    /// [`OFFSETS`]): see [`Motion::motion_at`].
+    offsets: Vec<(f64, Vec<f64>)>,
+    /// Offsets asked without rows, with how many times: built into [`Self::offsets`] after [`BUILD_AFTER`].
+    asked: Vec<(f64, usize)>,
+}
+
+impl Configuration {
+    /// Counts `n` more asks of the offset `tau` (within `slack`, s); the rows of an offset asked
+    /// [`BUILD_AFTER`] times are built and returned. The least asked offset makes room for a new one.
+    fn ask(&mut self, tau: f64, n: usize, slack: f64, nw: usize, mech: usize) -> Option<usize> {
+        if self.offsets.len() >= OFFSETS {
+            return None;
+        }
+        let i = match self
+            .asked
+            .iter()
+            .position(|(t, _)| (t - tau).abs() <= slack)
+        {
+            Some(i) => {
+                self.asked[i].1 += n;
+                i
+            }
+            None if self.asked.len() < OFFSETS => {
+                self.asked.push((tau, n));
+                self.asked.len() - 1
+            }
+            None => {
+                let i = (0..self.asked.len())
+                    .min_by_key(|&i| self.asked[i].1)
+                    .expect("offsets asked");
+                self.asked[i] = (tau, n);
+                i
+            }
+        };
+        if self.asked[i].1 < BUILD_AFTER {
+            return None;
+        }
+        let (tau, _) = self.asked.swap_remove(i);
+        self.offsets.push((tau, transition(&self.m, nw, mech, tau)));
+        Some(self.offsets.len() - 1)
+    }
 }
 
 /// The exact stepper of a run (see the module). Working memory is allocated once per run.
@@ -71,6 +113,8 @@ pub struct Exact {
     series: Vec<f64>,
     ynode: Vec<f64>,
     dynode: Vec<f64>,
+    /// Offsets the last step's observers asked of its motion (room for [`OFFSETS`]).
+    asked: Vec<(f64, usize)>,
     /// The configuration whose matrix the dense output holds.
     dense_config: Option<usize>,
     steps: usize,
@@ -105,6 +149,7 @@ impl Exact {
             series: vec![0.0; TERMS * nw],
             ynode: vec![0.0; dim],
             dynode: vec![0.0; dim],
+            asked: Vec::with_capacity(OFFSETS),
             dense_config: None,
             steps: 0,
             last: 0.0,
@@ -131,6 +176,8 @@ impl Exact {
                     lengths: Vec::new(),
                     seen: (f64::NAN, 0),
                     uses: 0,
+                    offsets: Vec::new(),
+                    asked: Vec::with_capacity(OFFSETS),
                 };
                 if self.configs.len() < KEPT {
                     self.configs.push(config);
@@ -279,10 +326,26 @@ impl Exact {
         let Some((dt0, dh, motion)) = self.dense.motion_mut() else {
             return;
         };
+        // Where the last step's observers sampled its motion: offsets worth rows of their own.
+        let slack = 16.0 * f64::EPSILON * (t0.abs() + h);
+        motion.take_asked(&mut self.asked);
+        if let Some(c) = self.dense_config.map(|p| &mut self.configs[p]) {
+            for &(tau, n) in &self.asked {
+                if let Some(k) = c.ask(tau, n, slack, self.nw, mech) {
+                    if same_matrix {
+                        motion.add_offset(c.offsets[k].0, &c.offsets[k].1);
+                    }
+                }
+            }
+        }
         *dt0 = t0;
         *dh = h;
         if !same_matrix {
             motion.m.copy_from_slice(&self.configs[motion_config].m);
+            motion.clear_offsets();
+            for (tau, phi) in &self.configs[motion_config].offsets {
+                motion.add_offset(*tau, phi);
+            }
         }
         motion.w0.copy_from_slice(&self.w);
         motion.acc0.copy_from_slice(&self.y[mech..]);
@@ -290,6 +353,7 @@ impl Exact {
         motion.terms = crate::integrate::terms_for(self.configs[motion_config].r * h);
         motion.invalidate();
         self.dense_config = Some(motion_config);
+        motion.w1.copy_from_slice(&self.wn[0][..mech]);
         self.ynode.copy_from_slice(&self.y);
         for (j, node) in GAUSS_NODES.iter().enumerate() {
             self.ynode[..mech].copy_from_slice(&self.wn[j + 1][..mech]);

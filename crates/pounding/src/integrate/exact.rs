@@ -33,6 +33,9 @@ pub fn terms_for(rho: f64) -> usize {
 }
 /// Largest `r h` of a step (see the module).
 pub const MAX_RHO: f64 = 0.5;
+/// Offsets into a step with transition rows of their own ([`Motion::motion_at`]): a recorder sampling a few
+/// times per record interval.
+pub const OFFSETS: usize = 8;
 /// The three Gauss–Legendre nodes on a step, as fractions of it.
 pub const GAUSS_NODES: [f64; 3] = [
     0.5 - 0.387_298_334_620_741_7,
@@ -67,8 +70,9 @@ pub fn step_bound(m: &[f64], nw: usize, dofs: usize) -> f64 {
 
 /// The first `mech` rows of `exp(M h)` (row-major `mech x nw`) for `M = [[A, B], [0, F]]` with `F^2 = 0` (the
 /// motion `x = w[..mech]` driven by forcing components that are constant or linear in time), for `h` within
-/// [`MAX_RHO`] of the step bound: the Taylor series by Horner's rule, `P <- I + (M h / k) P` from the last
-/// term down, on the blocks (the forcing block of `P` is `I + F h / (k + 1)` at every stage, as `F^2 = 0`).
+/// [`MAX_RHO`] of the step bound: the Taylor series by Horner's rule (the terms of [`terms_for`]),
+/// `P <- I + (M h / k) P` from the last term down, on the blocks (the forcing block of `P` is
+/// `I + F h / (k + 1)` at every stage, as `F^2 = 0`).
 pub fn transition(m: &[f64], nw: usize, mech: usize, h: f64) -> Vec<f64> {
     let q = nw - mech;
     // B F (mech x q).
@@ -83,23 +87,33 @@ pub fn transition(m: &[f64], nw: usize, mech: usize, h: f64) -> Vec<f64> {
     let mut p = vec![0.0; mech * nw];
     (0..mech).for_each(|i| p[i * nw + i] = 1.0);
     let mut next = vec![0.0; mech * nw];
-    for k in (1..TERMS).rev() {
+    // The terms the step needs ([`terms_for`], as the series): fewer for a Gauss node's short step.
+    let terms = terms_for(step_bound(m, nw, mech / 2) * h);
+    for k in (1..terms).rev() {
         let f = h / k as f64;
         // The forcing block of the previous stage: I + F h / (k + 1), or I at the first.
-        let c = if k + 1 == TERMS {
+        let c = if k + 1 == terms {
             0.0
         } else {
             h / (k + 1) as f64
         };
         for i in 0..mech {
-            let a = &m[i * nw..i * nw + mech];
-            for j in 0..nw {
-                let s: f64 = (0..mech).map(|l| a[l] * p[l * nw + j]).sum();
-                next[i * nw + j] = if j < mech {
-                    f * s + if i == j { 1.0 } else { 0.0 }
+            let a = &m[i * nw..(i + 1) * nw];
+            let out = &mut next[i * nw..(i + 1) * nw];
+            out.fill(0.0);
+            // Row i of A P, row by row of P (most of A is 0: a displacement's row holds one 1).
+            for (l, &al) in a[..mech].iter().enumerate() {
+                if al != 0.0 {
+                    for (o, q) in out.iter_mut().zip(&p[l * nw..(l + 1) * nw]) {
+                        *o += al * q;
+                    }
+                }
+            }
+            for (j, o) in out.iter_mut().enumerate() {
+                *o = if j < mech {
+                    f * *o + if i == j { 1.0 } else { 0.0 }
                 } else {
-                    let jj = j - mech;
-                    f * (s + m[i * nw + j] + c * bf[i * q + jj])
+                    f * (*o + a[j] + c * bf[i * q + j - mech])
                 };
             }
         }
@@ -156,6 +170,16 @@ pub struct Motion {
     pub terms: usize,
     /// The second rates of the velocities (the jerks, m/s^3) at the step's start and end.
     pub jerk: [Vec<f64>; 2],
+    /// The motion (`w[..mech]`) at the step's end.
+    pub w1: Vec<f64>,
+    /// Transition rows `Φ(τ)` (`mech x nw`, row-major) at offsets `τ` into the step where the whole state
+    /// is often asked (a recorder's sampling grid), for the motion's configuration: the first
+    /// [`Self::offset_count`] of [`OFFSETS`] slots, set by the stepper.
+    offsets: Vec<(f64, Vec<f64>)>,
+    offset_count: usize,
+    /// Offsets into this step at which the whole state was asked between the ends without a slot, with
+    /// how many times: what the stepper may build slots for.
+    asked: RefCell<Vec<(f64, usize)>>,
     series: RefCell<Vec<f64>>,
     built: Cell<bool>,
     acc_poly: RefCell<Vec<[f64; 5]>>,
@@ -174,6 +198,10 @@ impl Motion {
             rates: std::array::from_fn(|_| vec![0.0; mech + acc]),
             terms: TERMS,
             jerk: std::array::from_fn(|_| vec![0.0; mech / 2]),
+            w1: vec![0.0; mech],
+            offsets: (0..OFFSETS).map(|_| (0.0, vec![0.0; mech * nw])).collect(),
+            offset_count: 0,
+            asked: RefCell::new(Vec::with_capacity(OFFSETS)),
             series: RefCell::new(vec![0.0; TERMS * nw]),
             built: Cell::new(false),
             acc_poly: RefCell::new(vec![[0.0; 5]; acc]),
@@ -185,6 +213,60 @@ impl Motion {
     pub fn invalidate(&self) {
         self.built.set(false);
         self.acc_built.set(false);
+    }
+
+    /// Forgets the offset slots (after `m` changed).
+    pub fn clear_offsets(&mut self) {
+        self.offset_count = 0;
+    }
+
+    /// Adds a slot: `phi` = the first `mech` rows of `Φ(tau)` of the motion's matrix (see
+    /// [`transition`]). Ignored when all [`OFFSETS`] are taken.
+    pub fn add_offset(&mut self, tau: f64, phi: &[f64]) {
+        if let Some(slot) = self.offsets.get_mut(self.offset_count) {
+            slot.0 = tau;
+            slot.1.copy_from_slice(phi);
+            self.offset_count += 1;
+        }
+    }
+
+    /// Moves the offsets asked this step without a slot (see [`Self::motion_at`]), each with its count,
+    /// into `into` (cleared first; at most [`OFFSETS`]).
+    pub fn take_asked(&self, into: &mut Vec<(f64, usize)>) {
+        into.clear();
+        into.extend(self.asked.borrow_mut().drain(..));
+    }
+
+    /// Writes the motion `w[..out.len()]` (at most `mech` components) at `tau` into a step of length `h`:
+    /// the ends as the step left them, an offset with a slot by one row product each (exact to rounding
+    /// when `tau` is within `slack` of it, s), else from the series. With `log`, an interior offset
+    /// without a slot is counted for the stepper ([`Self::drain_asked`]).
+    pub fn motion_at(&self, tau: f64, h: f64, slack: f64, out: &mut [f64], log: bool) {
+        let nw = self.w0.len();
+        if tau <= 0.0 {
+            out.copy_from_slice(&self.w0[..out.len()]);
+        } else if (tau - h).abs() <= slack {
+            out.copy_from_slice(&self.w1[..out.len()]);
+        } else if let Some((_, phi)) = self.offsets[..self.offset_count]
+            .iter()
+            .find(|(t, _)| (t - tau).abs() <= slack)
+        {
+            mat_vec(&phi[..out.len() * nw], &self.w0, out);
+        } else {
+            if log {
+                let mut asked = self.asked.borrow_mut();
+                if let Some(e) = asked.iter_mut().find(|(t, _)| (t - tau).abs() <= slack) {
+                    e.1 += 1;
+                } else if asked.len() < OFFSETS {
+                    asked.push((tau, 1));
+                }
+            }
+            self.with_series(|c| {
+                for (i, o) in out.iter_mut().enumerate() {
+                    *o = series_at(c, nw, i, tau, self.terms);
+                }
+            });
+        }
     }
 
     fn ensure(&self) {
@@ -252,21 +334,27 @@ impl Motion {
 }
 
 /// The monomial coefficients (in the fraction `theta` of the step) of the quartic through `rates` at
-/// `theta = 0`, the three Gauss nodes and 1: the solution of their Vandermonde system, factored once
-/// ([`super::lu`]).
+/// `theta = 0`, the three Gauss nodes and 1: the inverse of their Vandermonde matrix, found once by
+/// solving for its columns ([`super::lu`]), applied to `rates`.
 fn rate_quartic(rates: &[f64; 5]) -> [f64; 5] {
-    static FACTORS: std::sync::OnceLock<([f64; 25], [usize; 5])> = std::sync::OnceLock::new();
-    let (lu, piv) = FACTORS.get_or_init(|| {
+    static INVERSE: std::sync::OnceLock<[[f64; 5]; 5]> = std::sync::OnceLock::new();
+    let inv = INVERSE.get_or_init(|| {
         let nodes = [0.0, GAUSS_NODES[0], GAUSS_NODES[1], GAUSS_NODES[2], 1.0];
         // V[i][m] = nodes[i]^m, row-major.
         let mut v: [f64; 25] = std::array::from_fn(|k| nodes[k / 5].powi((k % 5) as i32));
         let mut piv = [0; 5];
         assert!(super::lu::factor(&mut v, &mut piv, 5), "distinct nodes");
-        (v, piv)
+        // Column j of the inverse solves V x = e_j; kept row-major.
+        let mut inv = [[0.0; 5]; 5];
+        for j in 0..5 {
+            let mut e = [0.0; 5];
+            e[j] = 1.0;
+            super::lu::solve(&v, &piv, &mut e);
+            (0..5).for_each(|i| inv[i][j] = e[i]);
+        }
+        inv
     });
-    let mut c = *rates;
-    super::lu::solve(lu, piv, &mut c);
-    c
+    std::array::from_fn(|i| (0..5).map(|j| inv[i][j] * rates[j]).sum())
 }
 
 #[cfg(test)]
@@ -329,6 +417,49 @@ mod tests {
             assert!((series_at(&c, 4, 0, f * h, TERMS) - u).abs() < 1e-16);
             assert!((series_at(&c, 4, 1, f * h, TERMS) - v).abs() < 3e-15);
         }
+    }
+
+    /// The motion at an offset with transition rows of its own equals the series there (both exact to
+    /// rounding); the ends are the states the step left; an interior offset without rows is counted once per
+    /// ask, and only when asked with `log`.
+    #[test]
+    fn offset_rows_give_the_motion_of_the_series() {
+        let (w, zeta) = (12.0f64, 0.05f64);
+        #[rustfmt::skip]
+        let m = vec![
+            0.0, 1.0, 0.0, 0.0,
+            -w * w, -2.0 * zeta * w, -1.0, 0.0,
+            0.0, 0.0, 0.0, 1.0,
+            0.0, 0.0, 0.0, 0.0,
+        ];
+        let h = MAX_RHO / step_bound(&m, 4, 1);
+        let mut motion = Motion::new(2, 4, 0);
+        motion.m.copy_from_slice(&m);
+        motion.w0.copy_from_slice(&[0.01, -0.2, 1.5, -30.0]);
+        motion.w1.copy_from_slice(&[7.0, 8.0]);
+        motion.terms = TERMS;
+        let tau = 0.37 * h;
+        let (mut by_series, mut by_rows) = ([0.0; 2], [0.0; 2]);
+        motion.motion_at(tau, h, 1e-15, &mut by_series, true);
+        motion.motion_at(tau, h, 1e-15, &mut by_series, false);
+        let mut asked = Vec::new();
+        motion.take_asked(&mut asked);
+        assert_eq!(asked, vec![(tau, 1)]);
+        motion.add_offset(tau, &transition(&m, 4, 2, tau));
+        motion.motion_at(tau + 1e-16, h, 1e-15, &mut by_rows, true);
+        for (a, b) in by_rows.iter().zip(&by_series) {
+            assert!((a - b).abs() <= 1e-15 * b.abs(), "{a} vs {b}");
+        }
+        motion.take_asked(&mut asked);
+        assert!(asked.is_empty());
+        motion.motion_at(h, h, 1e-15, &mut by_rows, true);
+        assert_eq!(by_rows, [7.0, 8.0]);
+        motion.motion_at(0.0, h, 1e-15, &mut by_rows, true);
+        assert_eq!(by_rows, [0.01, -0.2]);
+        motion.clear_offsets();
+        motion.motion_at(tau, h, 1e-15, &mut by_rows, true);
+        motion.take_asked(&mut asked);
+        assert_eq!(asked.len(), 1);
     }
 
     /// The integrated quantities equal the integral of a quartic rate given at the five points, exactly.

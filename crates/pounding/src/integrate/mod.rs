@@ -18,7 +18,7 @@ mod switching;
 
 pub use exact::{
     mat_vec, series, series_at, step_bound, terms_for, transition, Motion, GAUSS_NODES,
-    GAUSS_WEIGHTS, MAX_RHO, TERMS,
+    GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
 pub use peaks::{hermite_peak, Hermite, PeakTracker, Piece};
 pub use roots::{brent_root, golden_max};
@@ -117,6 +117,12 @@ impl Dense {
         self.exact.as_deref()
     }
 
+    /// How far apart two offsets into the step may be and still name one time, s: a few roundings of the
+    /// times involved.
+    fn slack(&self) -> f64 {
+        16.0 * f64::EPSILON * (self.t0.abs() + self.h)
+    }
+
     /// Start time of the step.
     pub fn t0(&self) -> f64 {
         self.t0
@@ -130,8 +136,11 @@ impl Dense {
     /// Writes the interpolated state at time `t` (in the step) into `out`.
     pub fn eval(&self, t: f64, out: &mut [f64]) {
         if let Some(m) = &self.exact {
-            for (i, o) in out.iter_mut().enumerate() {
-                *o = m.component(t - self.t0, self.h, i);
+            let tau = t - self.t0;
+            let mech = m.mech.min(out.len());
+            m.motion_at(tau, self.h, self.slack(), &mut out[..mech], true);
+            for (i, o) in out.iter_mut().enumerate().skip(mech) {
+                *o = m.component(tau, self.h, i);
             }
             return;
         }
@@ -169,14 +178,7 @@ impl Dense {
     /// [`Self::eval`] when the integrated quantities are not needed).
     pub fn eval_prefix(&self, t: f64, out: &mut [f64]) {
         match &self.exact {
-            Some(m) => {
-                let nw = m.w0.len();
-                m.with_series(|c| {
-                    for (i, o) in out.iter_mut().enumerate() {
-                        *o = series_at(c, nw, i, t - self.t0, m.terms);
-                    }
-                })
-            }
+            Some(m) => m.motion_at(t - self.t0, self.h, self.slack(), out, false),
             None => self.eval(t, out),
         }
     }
