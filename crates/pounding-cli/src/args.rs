@@ -425,6 +425,22 @@ pub struct CoherentArgs {
     /// Harichandran-Vanmarcke's b (default 2.78).
     #[arg(long = "hv-b")]
     pub hv_b: Option<f64>,
+    /// Condition on a recorded motion instead of generating from a spectrum: a record file (AT2 or time-acc,
+    /// detected) or a built-in record (el-centro-1940, synthetic-SEED). The record stays at the first
+    /// position; the others get its Fourier amplitudes and the model's coherency with it.
+    #[arg(
+        long,
+        value_name = "FILE_OR_NAME",
+        conflicts_with_all = ["filter", "wg", "zg", "wf", "zf", "duration", "dt", "t1", "t2", "decay", "pga"]
+    )]
+    pub record: Option<String>,
+    /// Units of the --record file's accelerations: g, m/s2, cm/s2, mm/s2 [default: an AT2 header's, else g].
+    #[arg(long, value_parser = units_arg, requires = "record")]
+    pub record_units: Option<Units>,
+    /// With --record: the window of the record's moving RMS that shapes the simulated parts in time, s
+    /// (0: stationary).
+    #[arg(long, default_value_t = 2.0, requires = "record")]
+    pub window: f64,
     #[command(flatten)]
     pub spectrum: SynthSpectrumArgs,
 }

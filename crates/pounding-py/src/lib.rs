@@ -517,6 +517,32 @@ fn spectrum(
     units: Option<&str>,
     scale: f64,
 ) -> PyResult<(Vec<f64>, Vec<f64>, Vec<f64>)> {
+    let r = load_source(source, format, dt, units, scale)?;
+    let mut interrupted = None;
+    let s = py.allow_threads(|| {
+        pounding::ground_motion::spectrum::spectrum_with(
+            &r,
+            damping,
+            &periods,
+            &mut ctrl_c(&mut interrupted),
+        )
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let s = s.map_err(|e| input_err(e.to_string()))?;
+    Ok((s.sd, s.psv, s.psa))
+}
+
+/// The record `source` (a built-in record's name, else a file's path, as the command line decides), read with
+/// `format`, `dt`, `units` and `scale` as in a scenario's `[ground_motion]`.
+fn load_source(
+    source: &str,
+    format: Option<&str>,
+    dt: Option<f64>,
+    units: Option<&str>,
+    scale: f64,
+) -> PyResult<pounding::ground_motion::Record> {
     let mut gm = serde_json::Map::new();
     let kind = if is_builtin(source) { "record" } else { "file" };
     gm.insert(kind.into(), source.into());
@@ -533,26 +559,12 @@ fn spectrum(
     let doc: pounding::scenario::GroundMotionDoc =
         parse_value(&Value::Object(gm)).map_err(keyword_err)?;
     let spec = doc.spec().map_err(|e| input_err(e.message))?;
-    let r = pounding_study::input::read_record(&spec)
+    pounding_study::input::read_record(&spec)
         .and_then(|r| {
             r.scaled(spec.scale)
                 .map_err(pounding::ground_motion::RecordError::Value)
         })
-        .map_err(|e| input_err(pounding_study::input::record_message(&spec, e)))?;
-    let mut interrupted = None;
-    let s = py.allow_threads(|| {
-        pounding::ground_motion::spectrum::spectrum_with(
-            &r,
-            damping,
-            &periods,
-            &mut ctrl_c(&mut interrupted),
-        )
-    });
-    if let Some(e) = interrupted {
-        return Err(e);
-    }
-    let s = s.map_err(|e| input_err(e.to_string()))?;
-    Ok((s.sd, s.psv, s.psa))
+        .map_err(|e| input_err(pounding_study::input::record_message(&spec, e)))
 }
 
 /// The separation report (JSON text) of a scenario (JSON text, or the file at `path`) under its record or
@@ -639,19 +651,32 @@ fn synthetic(seed: &Bound<'_, PyAny>, params: &str) -> PyResult<(f64, f64, Vec<f
 /// Records at supports that lose coherence with distance (docs/structures.md): `seed`, the supports'
 /// `positions` (m), the coherency model as JSON text (`{"model": "luco-wong", "alpha": ...}` or
 /// `{"model": "harichandran-vanmarcke", "A", "a", "k", "f0", "b"}`, each absent one SMART-1 event 20's) and the
-/// spectrum's parameters as [`synthetic`]'s; returns `(dt, t0, [accelerations per support])`, s and m/s^2.
+/// spectrum's parameters as [`synthetic`]'s, or the record `record` they are conditioned on (its `units`, and
+/// the `window` of its envelope, s); returns `(dt, t0, [accelerations per support])`, s and m/s^2.
 #[pyfunction]
+#[pyo3(signature = (seed, positions, coherency, params, record=None, units=None, window=2.0))]
 fn coherent(
     seed: &Bound<'_, PyAny>,
     positions: Vec<f64>,
     coherency: &str,
     params: &str,
+    record: Option<&str>,
+    units: Option<&str>,
+    window: f64,
 ) -> PyResult<(f64, f64, Vec<Vec<f64>>)> {
     use pounding::ground_motion::coherency::{Coherency, Spatial};
+    use pounding::ground_motion::conditional::Conditioned;
     use pounding::ground_motion::synthetic::SyntheticParams;
     let seed = seed_of(seed)?;
     let value: Value = serde_json::from_str(params).map_err(|e| input_err(e.to_string()))?;
     let p: SyntheticParams = parse_value(&value).map_err(keyword_err)?;
+    if record.is_some() && value.as_object().is_some_and(|o| !o.is_empty()) {
+        return Err(input_err(format!(
+            "record = {} with a spectrum's parameters ({}): allowed: one or the other (the record brings its own spectrum)",
+            short(record.unwrap_or_default()),
+            short(&value.to_string())
+        )));
+    }
     let c: Value = serde_json::from_str(coherency).map_err(|e| input_err(e.to_string()))?;
     let num = |k: &str| c.get(k).and_then(Value::as_f64);
     let coherency = match c.get("model").and_then(Value::as_str) {
@@ -671,14 +696,22 @@ fn coherent(
             )))
         }
     };
-    let spatial = Spatial {
-        synthetic: p.synthetic(),
-        coherency,
-        positions,
-    };
-    let rs = spatial
-        .records("support", seed)
-        .map_err(|e| input_err(e.to_string()))?;
+    let rs = match record {
+        Some(source) => Conditioned {
+            record: load_source(source, None, None, units, 1.0)?,
+            coherency,
+            positions,
+            window,
+        }
+        .records("support", seed),
+        None => Spatial {
+            synthetic: p.synthetic(),
+            coherency,
+            positions,
+        }
+        .records("support", seed),
+    }
+    .map_err(|e| input_err(e.to_string()))?;
     Ok((
         rs[0].dt(),
         rs[0].t0(),

@@ -880,3 +880,25 @@ def test_coherent_records_are_the_command_lines(tmp_path):
         pounding.coherent(1, [0, 10], "luco-wong")
     with pytest.raises(pounding.InputError, match="model"):
         pounding.coherent(1, [0, 10], "gauss")
+
+
+def test_records_conditioned_on_a_record_are_the_command_lines(tmp_path):
+    """pounding.coherent(record=...) gives the numbers `pounding record coherent --record` writes; the record
+    stays at the first support; a record with a spectrum's parameters, or a negative window, raises InputError
+    naming them."""
+    out = tmp_path / "conditioned"
+    o = cli(
+        "record", "coherent", "--seed", "4", "--positions", "0,100", "--model", "luco-wong", "--alpha", "3e-4",
+        "--record", "el-centro-1940", "--window", "1.5", "--out", str(out),
+    )
+    assert o.returncode == 0, o.stderr
+    r = pounding.coherent(4, [0, 100], "luco-wong", alpha=3e-4, record="el-centro-1940", window=1.5)
+    for j, a in enumerate(r["acceleration"]):
+        rows = np.loadtxt(out / f"support-{j + 1}.csv", delimiter=",", comments="#", skiprows=3)
+        assert np.allclose(rows[:, 1], a, rtol=1e-15, atol=0)
+        assert np.allclose(rows[:, 0], r["time"], rtol=1e-12, atol=0)
+    assert not np.array_equal(r["acceleration"][0], r["acceleration"][1])
+    with pytest.raises(pounding.InputError, match="record"):
+        pounding.coherent(1, [0, 10], "luco-wong", alpha=2e-4, record="el-centro-1940", pga=2.0)
+    with pytest.raises(pounding.InputError, match="window"):
+        pounding.coherent(1, [0, 10], "luco-wong", alpha=2e-4, record="el-centro-1940", window=-1.0)

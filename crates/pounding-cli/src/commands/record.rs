@@ -95,12 +95,32 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
     };
     crate::output_set::OutputSet::check(&a.out)?;
     let p = a.spectrum.params();
-    let spatial = Spatial {
-        synthetic: p.synthetic(),
-        coherency,
-        positions: a.positions.clone(),
+    let source = match &a.record {
+        Some(s) => Some(crate::records::load_record_from(
+            s,
+            None,
+            None,
+            a.record_units,
+            1.0,
+        )?),
+        None => None,
     };
-    let records = spatial.records("support", a.seed).map_err(|e| {
+    let records = match &source {
+        Some(r) => pounding::ground_motion::conditional::Conditioned {
+            record: r.clone(),
+            coherency,
+            positions: a.positions.clone(),
+            window: a.window,
+        }
+        .records("support", a.seed),
+        None => Spatial {
+            synthetic: p.synthetic(),
+            coherency,
+            positions: a.positions.clone(),
+        }
+        .records("support", a.seed),
+    }
+    .map_err(|e| {
         // The library names Harichandran-Vanmarcke's parameters as the paper does; the options add hv-.
         let msg = e.to_string();
         let hv = ["A ", "a ", "k ", "f0 ", "b "]
@@ -112,12 +132,15 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
     let mut files = Vec::new();
     for (j, r) in records.iter().enumerate() {
         let mut text = format!(
-            "# support {} of {} at {} m, pounding record coherent --seed {} --model {} (docs/structures.md)\n# read with units = \"m/s2\" (format time-acc)\ntime_s,acceleration_m_per_s2\n",
+            "# support {} of {} at {} m, pounding record coherent --seed {} --model {}{} (docs/structures.md)\n# read with units = \"m/s2\" (format time-acc)\ntime_s,acceleration_m_per_s2\n",
             j + 1,
             records.len(),
             fmt_num(a.positions[j]),
             a.seed,
-            a.model
+            a.model,
+            a.record
+                .as_ref()
+                .map_or(String::new(), |r| format!(" --record {r} --window {}", fmt_num(a.window)))
         );
         push_rows(&mut text, r);
         let name = format!("support-{}.csv", j + 1);
@@ -133,10 +156,24 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
                 json!({ "A": a_big, "a": a, "k_m": k, "f0_hz": f0, "b": b }),
         },
         "positions_m": a.positions,
-        "synthetic": p,
+
         "files": files,
         "pga_m_per_s2": records.iter().map(|r| r.peaks().pga).collect::<Vec<f64>>(),
     });
+    // What the records came from: the spectrum, or the record they are conditioned on.
+    let mut about = about;
+    match (&source, &a.record) {
+        (Some(r), Some(name)) => {
+            about["conditioned_on"] = json!({
+                "record": name,
+                "npts": r.npts(),
+                "dt_s": r.dt(),
+                "pga_m_per_s2": r.peaks().pga,
+                "window_s": a.window,
+            })
+        }
+        _ => about["synthetic"] = json!(p),
+    }
     set.write_data("coherent.json", format!("{about:#}\n").as_bytes())?;
     set.commit()?;
     println!(

@@ -443,16 +443,38 @@ def synthetic(seed: int, **params: Any) -> Dict[str, Any]:
     return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(a)), "acceleration": a}
 
 
-def coherent(seed: int, positions: Sequence[float], model: str, **params: Any) -> Dict[str, Any]:
+def coherent(
+    seed: int,
+    positions: Sequence[float],
+    model: str,
+    record: Optional[Union[str, "os.PathLike[str]"]] = None,
+    units: Optional[str] = None,
+    window: float = 2.0,
+    **params: Any,
+) -> Dict[str, Any]:
     """Records at supports along a line that lose coherence with distance, exactly ``pounding record
     coherent`` (docs/structures.md): ``positions`` (m), ``model`` ``"luco-wong"`` (give ``alpha``, s/m) or
-    ``"harichandran-vanmarcke"`` (``A``, ``a``, ``k`` in m, ``f0`` in Hz, ``b``; defaults SMART-1 event 20), and
-    the spectrum's parameters of :func:`synthetic`. The first support's PGA is ``pga``; one factor scales all.
-    Returns ``dt`` (s), ``t0`` (s), ``time`` (s) and ``acceleration``: one numpy array per support (m/s^2)."""
+    ``"harichandran-vanmarcke"`` (``A``, ``a``, ``k`` in m, ``f0`` in Hz, ``b``; defaults SMART-1 event 20).
+    Generated from the spectrum's parameters of :func:`synthetic` (the first support's PGA is ``pga``; one
+    factor scales all), or, with ``record`` (a built-in record's name or a file; ``units`` as in a scenario's
+    ``[ground_motion]``), conditioned on that record: it stays at the first position, the others get its
+    Fourier amplitudes and the model's coherency with it, their random parts under its envelope (moving RMS
+    over ``window`` s; 0 for none). Returns ``dt`` (s), ``t0`` (s), ``time`` (s) and ``acceleration``: one
+    numpy array per support (m/s^2)."""
     keys = {"alpha", "A", "a", "k", "f0", "b"}
     given = {k: v for k, v in params.items() if v is not None}
     coh = {"model": model, **{k: given.pop(k) for k in list(given) if k in keys}}
-    dt, t0, accs = _pounding.coherent(seed, [float(x) for x in positions], _json(coh, "coherency"), _json(given, "coherent"))
+    if units is not None and not isinstance(units, str):
+        raise InputError(f"units = {_short(units)} is not allowed: a name (str) or None")
+    dt, t0, accs = _pounding.coherent(
+        seed,
+        [float(x) for x in positions],
+        _json(coh, "coherency"),
+        _json(given, "coherent"),
+        record=None if record is None else _fspath("record", record),
+        units=units,
+        window=_number("window", window),
+    )
     arrays = [np.asarray(a) for a in accs]
     return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(arrays[0])), "acceleration": arrays}
 

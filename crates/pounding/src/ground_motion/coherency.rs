@@ -113,7 +113,7 @@ impl Coherency {
         }
     }
 
-    fn check(&self) -> Result<(), Error> {
+    pub(super) fn check(&self) -> Result<(), Error> {
         match *self {
             Coherency::LucoWong { alpha } => {
                 check(
@@ -160,25 +160,8 @@ impl Spatial {
         let s = &self.synthetic;
         s.check()?;
         self.coherency.check()?;
+        check_positions(&self.positions)?;
         let np = self.positions.len();
-        if np == 0 || np > MAX_SUPPORTS {
-            return Err(Error::Choice {
-                name: "positions",
-                value: format!("{np} positions"),
-                allowed: format!("1 to {MAX_SUPPORTS} supports"),
-            });
-        }
-        if let Some(x) = self
-            .positions
-            .iter()
-            .find(|x| !x.is_finite() || x.abs() > 1e6)
-        {
-            return Err(Error::Choice {
-                name: "positions",
-                value: crate::words::number(*x),
-                allowed: "positions along the line within 1e6 m (m)".into(),
-            });
-        }
         let n = (s.duration / s.dt).round() as usize;
         if n > MAX_SAMPLES {
             return Err(Error::Choice {
@@ -200,7 +183,7 @@ impl Spatial {
         let mut amp = vec![(0.0, 0.0); np];
         for l in 1..=nl {
             let w = l as f64 * dw;
-            self.cholesky(w, &mut chol);
+            cholesky(&self.coherency, &self.positions, w, &mut chol);
             let scale = 2.0 * (s.filter.density(w) * dw).sqrt();
             amp.iter_mut().for_each(|a| *a = (0.0, 0.0));
             for m in 0..np {
@@ -241,25 +224,45 @@ impl Spatial {
             .map(|(j, a)| Record::new(format!("{name}-{}", j + 1), dt, dt, a))
             .collect()
     }
+}
 
-    /// The Cholesky factor (lower, row-major) of the coherency matrix at `w`; a pivot that vanishes (two
-    /// supports at one point move alike) leaves its column zero.
-    fn cholesky(&self, w: f64, l: &mut [f64]) {
-        let (x, n) = (&self.positions, self.positions.len());
-        l.iter_mut().for_each(|v| *v = 0.0);
-        for i in 0..n {
-            for j in 0..=i {
-                let g = if i == j {
-                    1.0
-                } else {
-                    self.coherency.gamma(w, (x[i] - x[j]).abs())
-                };
-                let s: f64 = (0..j).map(|k| l[i * n + k] * l[j * n + k]).sum();
-                if i == j {
-                    l[i * n + i] = (g - s).max(0.0).sqrt();
-                } else if l[j * n + j] > 1e-9 {
-                    l[i * n + j] = (g - s) / l[j * n + j];
-                }
+/// Checks the supports' positions: 1 to [`MAX_SUPPORTS`], finite, within 1e6 m.
+pub(super) fn check_positions(positions: &[f64]) -> Result<(), Error> {
+    let np = positions.len();
+    if np == 0 || np > MAX_SUPPORTS {
+        return Err(Error::Choice {
+            name: "positions",
+            value: format!("{np} positions"),
+            allowed: format!("1 to {MAX_SUPPORTS} supports"),
+        });
+    }
+    if let Some(x) = positions.iter().find(|x| !x.is_finite() || x.abs() > 1e6) {
+        return Err(Error::Choice {
+            name: "positions",
+            value: crate::words::number(*x),
+            allowed: "positions along the line within 1e6 m (m)".into(),
+        });
+    }
+    Ok(())
+}
+
+/// The Cholesky factor (lower, row-major) of the coherency matrix of supports at `x` (m) at circular
+/// frequency `w` (rad/s); a pivot that vanishes (two supports at one point move alike) leaves its column zero.
+pub(super) fn cholesky(coherency: &Coherency, x: &[f64], w: f64, l: &mut [f64]) {
+    let n = x.len();
+    l.iter_mut().for_each(|v| *v = 0.0);
+    for i in 0..n {
+        for j in 0..=i {
+            let g = if i == j {
+                1.0
+            } else {
+                coherency.gamma(w, (x[i] - x[j]).abs())
+            };
+            let s: f64 = (0..j).map(|k| l[i * n + k] * l[j * n + k]).sum();
+            if i == j {
+                l[i * n + i] = (g - s).max(0.0).sqrt();
+            } else if l[j * n + j] > 1e-9 {
+                l[i * n + j] = (g - s) / l[j * n + j];
             }
         }
     }

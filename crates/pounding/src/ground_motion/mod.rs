@@ -9,6 +9,7 @@
 
 mod builtin;
 pub mod coherency;
+pub mod conditional;
 mod format;
 mod pair;
 pub mod parse;

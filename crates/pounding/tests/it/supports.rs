@@ -191,3 +191,159 @@ fn generated_records_reproduce_their_coherency_over_an_ensemble() {
     let r = sp.records("c", 3).unwrap();
     assert_eq!(r[0].accelerations(), r[1].accelerations());
 }
+
+/// `sum_k a_k e^(-i w dt k)`.
+fn dft(a: &[f64], theta: f64) -> (f64, f64) {
+    a.iter().enumerate().fold((0.0, 0.0), |(re, im), (k, x)| {
+        let (s, c) = (theta * k as f64).sin_cos();
+        (re + x * c, im - x * s)
+    })
+}
+
+/// Supports conditioned on El Centro (stationary simulated parts): the first keeps the record bit for bit,
+/// one at the record's point gets it back (to rounding), the same seed gives the same records; over 100 seeds
+/// and per band of ten frequencies, the coherency of each pair (the record with the second support, the
+/// second with the third) is the model's weighted by the record's power, `sum gamma |X|^2 / sum |X|^2`,
+/// within four standard errors `sqrt((1 - gamma^2) / 2M)` of its M = 1000 terms, and each support's power
+/// is the record's within four standard errors of the seeds' mean, for Luco–Wong and Harichandran–Vanmarcke.
+#[test]
+fn records_conditioned_on_a_record_keep_it_and_reproduce_the_coherency() {
+    use pounding::ground_motion::coherency::Coherency;
+    use pounding::ground_motion::conditional::Conditioned;
+    let record = Record::el_centro_1940();
+    let (a1, dt) = (record.accelerations().to_vec(), record.dt());
+    let n = a1.len();
+    let dw = 2.0 * std::f64::consts::PI / (n as f64 * dt);
+    let pga = record.pga();
+    for (coherency, d) in [
+        (Coherency::LucoWong { alpha: 2.5e-4 }, 200.0),
+        (Coherency::SMART1_EVENT20, 300.0),
+    ] {
+        let c = Conditioned {
+            record: record.clone(),
+            coherency,
+            positions: vec![0.0, d, 2.0 * d, 0.0],
+            window: 0.0,
+        };
+        let first = c.records("s", 7).unwrap();
+        assert_eq!(first[0].accelerations(), &a1[..]);
+        assert_eq!(first, c.records("s", 7).unwrap());
+        for (x, y) in first[3].accelerations().iter().zip(&a1) {
+            assert!((x - y).abs() < 1e-9 * pga, "{x} vs {y}");
+        }
+        let bands = 12;
+        let x1: Vec<(f64, f64)> = (1..=10 * bands)
+            .map(|l| dft(&a1, l as f64 * dw * dt))
+            .collect();
+        let (mut c12, mut c23) = (vec![(0.0, 0.0); bands], vec![(0.0, 0.0); bands]);
+        let (mut p1, mut p2, mut p3) = (vec![0.0; bands], vec![0.0; bands], vec![0.0; bands]);
+        let mut ratios = vec![Vec::new(); bands];
+        for seed in 0..100 {
+            let r = c.records("s", seed).unwrap();
+            for b in 0..bands {
+                let mut q = 0.0;
+                for l in (10 * b + 1)..=(10 * b + 10) {
+                    let th = l as f64 * dw * dt;
+                    let (y1, y2, y3) = (
+                        x1[l - 1],
+                        dft(r[1].accelerations(), th),
+                        dft(r[2].accelerations(), th),
+                    );
+                    c12[b].0 += y1.0 * y2.0 + y1.1 * y2.1;
+                    c12[b].1 += y1.1 * y2.0 - y1.0 * y2.1;
+                    c23[b].0 += y2.0 * y3.0 + y2.1 * y3.1;
+                    c23[b].1 += y2.1 * y3.0 - y2.0 * y3.1;
+                    p1[b] += y1.0 * y1.0 + y1.1 * y1.1;
+                    p2[b] += y2.0 * y2.0 + y2.1 * y2.1;
+                    p3[b] += y3.0 * y3.0 + y3.1 * y3.1;
+                    q += y2.0 * y2.0 + y2.1 * y2.1;
+                }
+                let own: f64 = (10 * b + 1..=10 * b + 10)
+                    .map(|l| x1[l - 1].0.powi(2) + x1[l - 1].1.powi(2))
+                    .sum();
+                ratios[b].push(q / own);
+            }
+        }
+        for b in 0..bands {
+            let ls = (10 * b + 1)..=(10 * b + 10);
+            let power = |l: usize| x1[l - 1].0.powi(2) + x1[l - 1].1.powi(2);
+            let s: f64 = ls.clone().map(power).sum();
+            let target = ls
+                .map(|l| power(l) * coherency.gamma(l as f64 * dw, d))
+                .sum::<f64>()
+                / s;
+            let se = ((1.0 - target * target) / 2000.0).sqrt();
+            for (name, cross, pa, pb) in
+                [("1-2", c12[b], p1[b], p2[b]), ("2-3", c23[b], p2[b], p3[b])]
+            {
+                let got = cross.0.hypot(cross.1) / (pa * pb).sqrt();
+                assert!(
+                    (got - target).abs() < 4.0 * se + 1e-3,
+                    "{:?}, band {b}, supports {name}: coherency {got} vs {target} (standard error {se})",
+                    coherency.kind()
+                );
+            }
+            let m = ratios[b].iter().sum::<f64>() / 100.0;
+            let sd = (ratios[b].iter().map(|r| (r - m).powi(2)).sum::<f64>() / 99.0).sqrt();
+            assert!(
+                (m - 1.0).abs() < 4.0 * sd / 10.0 + 1e-3,
+                "{:?}, band {b}: power of support 2 over the record's {m} (standard deviation {sd})",
+                coherency.kind()
+            );
+        }
+    }
+}
+
+/// Under the record's envelope (2 s window), the simulated supports are quiet where the record is (El Centro
+/// followed by 10 s at rest), and their energy `sum a^2` is the record's on average over 100 seeds, within
+/// four standard errors; a negative window is refused by name.
+#[test]
+fn conditioned_records_follow_the_record_in_time() {
+    use pounding::ground_motion::coherency::Coherency;
+    use pounding::ground_motion::conditional::Conditioned;
+    let el = Record::el_centro_1940();
+    let mut a = el.accelerations().to_vec();
+    let strong = a.len();
+    a.extend(std::iter::repeat_n(0.0, 500));
+    let record = Record::new("padded", el.dt(), el.t0(), a.clone()).unwrap();
+    let energy = |x: &[f64]| x.iter().map(|v| v * v).sum::<f64>();
+    for coherency in [
+        Coherency::LucoWong { alpha: 5e-4 },
+        Coherency::SMART1_EVENT20,
+    ] {
+        let c = Conditioned {
+            record: record.clone(),
+            coherency,
+            positions: vec![0.0, 400.0],
+            window: 2.0,
+        };
+        let mut ratios = Vec::new();
+        for seed in 0..100 {
+            let r = c.records("s", seed).unwrap();
+            let b = r[1].accelerations();
+            let rms_strong = (energy(&b[..strong]) / strong as f64).sqrt();
+            let rms_quiet = (energy(&b[strong + 100..]) / 400.0).sqrt();
+            assert!(
+                rms_quiet < 0.01 * rms_strong,
+                "{:?}, seed {seed}: {rms_quiet} m/s^2 at rest against {rms_strong}",
+                coherency.kind()
+            );
+            ratios.push(energy(b) / energy(&a));
+        }
+        let m = ratios.iter().sum::<f64>() / 100.0;
+        let sd = (ratios.iter().map(|r| (r - m).powi(2)).sum::<f64>() / 99.0).sqrt();
+        assert!(
+            (m - 1.0).abs() < 4.0 * sd / 10.0,
+            "{:?}: energy ratio {m} (sd {sd})",
+            coherency.kind()
+        );
+    }
+    let bad = Conditioned {
+        record,
+        coherency: Coherency::SMART1_EVENT20,
+        positions: vec![0.0, 100.0],
+        window: -1.0,
+    };
+    let e = bad.records("s", 1).unwrap_err().to_string();
+    assert!(e.starts_with("window") && e.contains("-1"), "{e}");
+}
