@@ -4606,3 +4606,110 @@ fn coherent_records_feed_supports_and_name_their_options() {
         assert!(!out.exists());
     }
 }
+
+/// Records conditioned on a recorded motion as a user makes them: from a built-in record, then from the
+/// file of its first support (`--record-units m/s2`), which comes back as that file's numbers; the others
+/// feed a scenario's support, whose run balances its energy; coherent.json says what they were conditioned
+/// on; options that do not go together are refused by name with nothing written.
+#[test]
+fn records_conditioned_on_a_record_feed_supports() {
+    let dir = tmp("conditioned");
+    let make = |out: &str, record: &str, more: &[&str]| {
+        let out = dir.join(out);
+        let mut all = vec![
+            "record",
+            "coherent",
+            "--seed",
+            "2",
+            "--positions",
+            "0,150",
+            "--model",
+            "luco-wong",
+            "--alpha",
+            "3e-4",
+            "--record",
+            record,
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        all.extend(more);
+        (pounding(&all), out)
+    };
+    let (o, out) = make("el", "el-centro-1940", &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let about: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("coherent.json")).unwrap()).unwrap();
+    assert_eq!(about["conditioned_on"]["record"], "el-centro-1940");
+    assert_eq!(about["conditioned_on"]["window_s"], 2.0);
+    assert!(about.get("synthetic").is_none(), "{about}");
+    let first = out.join("support-1.csv");
+    let (o, again) = make("file", first.to_str().unwrap(), &["--record-units", "m/s2"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let values = |p: &std::path::Path| -> Vec<f64> {
+        std::fs::read_to_string(p)
+            .unwrap()
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("time"))
+            .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
+            .collect()
+    };
+    assert_eq!(values(&again.join("support-1.csv")), values(&first));
+    assert_eq!(
+        values(&again.join("support-2.csv")),
+        values(&out.join("support-2.csv"))
+    );
+    let scenario = format!(
+        "[ground_motion]\nrecord = \"el-centro-1940\"\n[analysis]\nduration = 15.0\n\
+         [[support]]\nname = \"far\"\nfile = {:?}\nunits = \"m/s2\"\ndelay = 0.3\n\
+         [[building]]\nname = \"A\"\nmasses = [5.0e5]\nstiffnesses = [7.8957e7]\nheights = [3.0]\n\
+         [[building]]\nname = \"B\"\nmasses = [5.0e5]\nstiffnesses = [1.9739e7]\nheights = [3.0]\nsupport = \"far\"\n\
+         [[contact]]\nbetween = [\"A\", \"B\"]\ngap = 0.01\nmodel = \"kelvin-voigt\"\nstiffness = 2.0e9\nstiffness_unit = \"N/m\"\n",
+        out.join("support-2.csv").to_str().unwrap()
+    );
+    std::fs::write(dir.join("pair.toml"), scenario).unwrap();
+    let o = pounding(&[
+        "run",
+        dir.join("pair.toml").to_str().unwrap(),
+        "--out",
+        dir.join("run").to_str().unwrap(),
+        "-q",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(
+        f(&summary, "energy_balance_error") < 1e-6,
+        "{}",
+        summary["energy_balance_error"]
+    );
+    for (more, want) in [
+        (vec!["--window", "-1"], "--window = -1 is not allowed"),
+        (vec!["--pga", "2"], "cannot be used with"),
+    ] {
+        let (o, bad) = make("bad", "el-centro-1940", &more);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(want), "{err}");
+        assert!(!bad.exists());
+    }
+    let bad = dir.join("bad");
+    let o = pounding(&[
+        "record",
+        "coherent",
+        "--seed",
+        "1",
+        "--positions",
+        "0,40",
+        "--model",
+        "luco-wong",
+        "--alpha",
+        "2e-4",
+        "--window",
+        "1",
+        "--out",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--record"));
+    assert!(!bad.exists());
+}

@@ -3,7 +3,7 @@
 
 use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
-use crate::engine::{forcing, EventInfo, Observer, Segment, System};
+use crate::engine::{EventInfo, Observer, Segment, System};
 use crate::integrate::{brent_root, golden_max, hermite_peak, Hermite};
 
 /// A largest value and its time, s.
@@ -183,13 +183,8 @@ impl Peaks {
         let h = t1 - t0;
         let tol = 4.0 * f64::EPSILON * t1.abs();
         for i in 0..n {
-            let (px, py) = sys.pull(i);
-            let ground = |tau: f64| {
-                let ((gx, gy), _) = forcing(&motion.w0, 2 * n, tau);
-                px * gx + py * gy
-            };
-            let (_, (sx, sy)) = forcing(&motion.w0, 2 * n, 0.0);
-            let slope = px * sx + py * sy;
+            let ground = |tau: f64| sys.ground_in(i, &motion.w0, 2 * n, tau).0;
+            let slope = sys.ground_in(i, &motion.w0, 2 * n, 0.0).1;
             let (a0, a1) = (
                 motion.rates[0][n + i] + ground(0.0),
                 motion.rates[4][n + i] + ground(h),

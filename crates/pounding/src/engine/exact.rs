@@ -7,7 +7,7 @@
 //! integrated states (a contact's work) are integrated along the exact motion by three-point
 //! Gauss–Legendre quadrature. Events are located on the exact motion ([`crate::integrate::Motion`]).
 
-use super::linear::forcing;
+use super::linear::{channel_at, forcing};
 use super::System;
 use crate::integrate::{
     mat_vec, step_bound, transition, Dense, Motion, OdeSystem, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO,
@@ -119,8 +119,11 @@ pub struct Exact {
     dense_config: Option<usize>,
     steps: usize,
     last: f64,
-    /// The record's time step, s (infinite under a constant acceleration).
+    /// The record's time step, s (the shortest of supports' records; infinite under a constant
+    /// acceleration).
     interval: f64,
+    /// Each ground channel's acceleration and slope on the current interval (`[g_0, s_0, g_1, s_1, ...]`).
+    lines: Vec<f64>,
 }
 
 impl Exact {
@@ -155,8 +158,11 @@ impl Exact {
             last: 0.0,
             interval: match sys.ground() {
                 super::Ground::Record(r) | super::Ground::Plane { x: r, .. } => r.dt(),
-                super::Ground::Many(_) | super::Ground::Constant(_) => f64::INFINITY,
+                // The kinks of all the records: intervals no longer than the shortest step.
+                super::Ground::Many(rs) => rs.iter().map(|r| r.dt()).fold(f64::INFINITY, f64::min),
+                super::Ground::Constant(_) => f64::INFINITY,
             },
+            lines: vec![0.0; sys.forcing_dim()],
         })
     }
 
@@ -243,16 +249,15 @@ impl Exact {
         let h = self.length(t_stop);
         let t0 = self.t;
         self.configs[self.current].uses += 1;
-        // The ground's acceleration on the interval, read inside it (a record's end is a jump).
+        // Each ground channel's acceleration on the interval, read inside it (a record's end is a jump).
         let ground = sys.ground();
         let (ta, tb) = (t0 + 0.25 * h, t0 + 0.75 * h);
-        let ((xa, ya), (xb, yb)) = (ground.at_xy(ta), ground.at_xy(tb));
-        let line = |ga: f64, gb: f64| {
+        for (c, line) in self.lines.chunks_exact_mut(2).enumerate() {
+            let (ga, gb) = (channel_at(ground, c, ta), channel_at(ground, c, tb));
             let slope = (gb - ga) / (tb - ta);
-            (ga - slope * (ta - t0), slope)
-        };
-        let ((gx, sx), (gy, sy)) = (line(xa, xb), line(ya, yb));
-        sys.linear_state(&self.y, [gx, sx, gy, sy], &self.f0, &mut self.w);
+            line.copy_from_slice(&[ga - slope * (ta - t0), slope]);
+        }
+        sys.linear_state(&self.y, &self.lines, &self.f0, &mut self.w);
         self.propagate(h);
         self.last = h;
         let t1 = if (t_stop - (t0 + h)).abs() <= 1e-12 * h {
@@ -360,7 +365,7 @@ impl Exact {
             let tau = node * h;
             sys.rhs_in(
                 t0 + tau,
-                forcing(&self.w, mech, tau).0,
+                forcing(&self.w, mech, tau),
                 &self.ynode,
                 &mut self.dynode,
             );
@@ -374,17 +379,19 @@ impl Exact {
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;
-        sys.rhs_in(t1, forcing(&self.w, mech, h).0, &self.y, &mut self.dydt);
+        sys.rhs_in(t1, forcing(&self.w, mech, h), &self.y, &mut self.dydt);
         motion.rates[4].copy_from_slice(&self.dydt);
         // The jerks: the velocities' rows of M on the rates (the forcing's rates are its slopes).
-        let (nw, n) = (self.nw, mech / 2);
+        let (nw, n, fd) = (self.nw, mech / 2, self.lines.len());
         let m = &motion.m;
-        let (_, (sx, sy)) = forcing(&motion.w0, mech, 0.0);
         for (end, rates) in [0, 4].into_iter().enumerate() {
             for i in 0..n {
                 let row = &m[(n + i) * nw..(n + i + 1) * nw];
                 let mut j: f64 = (0..mech).map(|l| row[l] * motion.rates[rates][l]).sum();
-                j += row[mech] * sx + row[mech + 2] * sy;
+                j += (0..fd)
+                    .step_by(2)
+                    .map(|c| row[mech + c] * motion.w0[mech + c + 1])
+                    .sum::<f64>();
                 motion.jerk[end][i] = j;
             }
         }
@@ -414,7 +421,7 @@ impl Exact {
                 }
                 sys.rhs_in(
                     t0 + s,
-                    forcing(&motion.w0, mech, s).0,
+                    forcing(&motion.w0, mech, s),
                     &self.scratch,
                     &mut self.dynode,
                 );

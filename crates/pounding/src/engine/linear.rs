@@ -1,33 +1,47 @@
 //! The motion of a [`System`] while every law is affine, as one linear system `w' = M w`.
 //!
-//! `w = [u (n), v (n), g_x, s_x, g_y, s_y, f0 (one per element)]`: displacements and velocities of the
-//! degrees of freedom, the ground's acceleration along x and y (m/s^2) and their slopes (m/s^3) on the current
-//! record interval (so `g' = s`, `s' = 0`), and each element's constant force `f0` (N, `f0' = 0`). The equations of motion are those of
-//! [`System`]'s right-hand side with each law replaced by its [`crate::element::Affine`] form; `M` depends only
-//! on the laws' stiffnesses and viscous coefficients, so a bilinear storey that yields keeps its matrix
-//! family and only its `f0` changes.
+//! `w = [u (n), v (n), (g_c, s_c) per ground channel, f0 (one per element)]`: displacements and velocities of
+//! the degrees of freedom, each ground channel's acceleration (m/s^2) and its slope (m/s^3) on the current
+//! interval between the ground's kinks (so `g' = s`, `s' = 0`), and each element's constant force `f0` (N,
+//! `f0' = 0`). The channels are x and y for one record or two on one grid ([`Ground::Record`],
+//! [`Ground::Plane`]), and each support's record for supports of their own ([`Ground::Many`]: record 0, the
+//! scenario's, is channel 0). The equations of motion are those of [`System`]'s right-hand side with each law
+//! replaced by its [`crate::element::Affine`] form; `M` depends only on the laws' stiffnesses and viscous
+//! coefficients, so a bilinear storey that yields keeps its matrix family and only its `f0` changes.
 
 use super::{Ground, System};
 
-/// Components of `w` after the motion that carry the ground's accelerations and slopes.
-pub(crate) const FORCING: usize = 4;
+/// The ground channels of `ground`: at least two (x and y), or one per record of supports of their own.
+pub(crate) fn channels(ground: Ground<'_>) -> usize {
+    match ground {
+        Ground::Many(rs) => rs.len().max(2),
+        _ => 2,
+    }
+}
 
-/// The ground's accelerations `(g_x, g_y)` (m/s^2) at `tau` (s) into a step whose `w` at its start is `w`,
-/// and their slopes `(s_x, s_y)` (m/s^3); `mech` is the number of displacements and velocities in `w`.
+/// Ground channel `c`'s acceleration at `t`, m/s^2 (0 for a channel the ground does not have).
+pub(crate) fn channel_at(ground: Ground<'_>, c: usize, t: f64) -> f64 {
+    match (ground, c) {
+        (Ground::Many(rs), c) => rs.get(c).map_or(0.0, |r| r.at(t)),
+        (Ground::Plane { y, .. }, 1) => y.at(t),
+        (g, 0) => g.at(t),
+        _ => 0.0,
+    }
+}
+
+/// The ground's accelerations `(g_x, g_y)` (m/s^2) of channels 0 and 1 at `tau` (s) into a step whose `w` at
+/// its start is `w` (what [`System::rhs_in`] takes); `mech` is the number of displacements and velocities in
+/// `w`.
 #[inline]
-pub(crate) fn forcing(w: &[f64], mech: usize, tau: f64) -> ((f64, f64), (f64, f64)) {
-    let f = &w[mech..mech + FORCING];
-    ((f[0] + f[1] * tau, f[2] + f[3] * tau), (f[1], f[3]))
+pub(crate) fn forcing(w: &[f64], mech: usize, tau: f64) -> (f64, f64) {
+    let f = &w[mech..mech + 4];
+    (f[0] + f[1] * tau, f[2] + f[3] * tau)
 }
 
 impl System<'_> {
-    /// Whether the motion can be written as `w' = M w` now: one record along x, two on one grid, or a constant
-    /// acceleration (not supports of their own), every law affine. Writes the configuration's key (the laws' stiffnesses
+    /// Whether the motion can be written as `w' = M w` now: every law affine. Writes the configuration's key (the laws' stiffnesses
     /// and viscous coefficients, bit for bit) to `key` and each element's `f0` to `f0`.
     pub(crate) fn linear_now(&self, key: &mut Vec<u64>, f0: &mut Vec<f64>) -> bool {
-        if matches!(self.ground, Ground::Many(_)) || !self.driven.is_empty() {
-            return false;
-        }
         key.clear();
         f0.clear();
         for el in &self.elements {
@@ -43,7 +57,32 @@ impl System<'_> {
 
     /// The number of components of `w`.
     pub(crate) fn linear_dim(&self) -> usize {
-        2 * self.layout.dofs() + FORCING + self.elements.len()
+        2 * self.layout.dofs() + self.forcing_dim() + self.elements.len()
+    }
+
+    /// The components of `w` that carry the ground channels (two per channel).
+    pub(crate) fn forcing_dim(&self) -> usize {
+        2 * channels(self.ground)
+    }
+
+    /// The ground channels that shake degree of freedom `i`, with their coefficients: its own support's
+    /// record, or the pull of x and y.
+    pub(crate) fn channels_of(&self, i: usize) -> [(usize, f64); 2] {
+        match (self.source[i], self.ground) {
+            (Some((k, _)), Ground::Many(_)) => [(k, 1.0), (0, 0.0)],
+            _ => [(0, self.pull[i].0), (1, self.pull[i].1)],
+        }
+    }
+
+    /// The ground's acceleration (m/s^2) and its slope (m/s^3) that shake degree of freedom `i` at `tau` into
+    /// a step whose `w` at its start is `w` (`mech` displacements and velocities).
+    pub(crate) fn ground_in(&self, i: usize, w: &[f64], mech: usize, tau: f64) -> (f64, f64) {
+        self.channels_of(i)
+            .iter()
+            .fold((0.0, 0.0), |(a, s), &(c, p)| {
+                let (g, sl) = (w[mech + 2 * c], w[mech + 2 * c + 1]);
+                (a + p * (g + sl * tau), s + p * sl)
+            })
     }
 
     /// `M` (row-major, [`Self::linear_dim`] squared) of the current configuration ([`Self::linear_now`]).
@@ -52,15 +91,20 @@ impl System<'_> {
         let nw = self.linear_dim();
         let g = 2 * n;
         let mut m = vec![0.0; nw * nw];
+        let fd = self.forcing_dim();
         for i in 0..n {
             m[i * nw + n + i] = 1.0;
             let row = (n + i) * nw;
-            m[row + g] = -self.pull[i].0;
-            m[row + g + 2] = -self.pull[i].1;
+            // A driven support moves with its record's acceleration, whatever the forces on it.
+            let sign = if self.driven.contains(&i) { 1.0 } else { -1.0 };
+            for (c, p) in self.channels_of(i) {
+                m[row + g + 2 * c] += sign * p;
+            }
             m[row + n + i] = -self.a0[i];
         }
-        m[g * nw + g + 1] = 1.0;
-        m[(g + 2) * nw + g + 3] = 1.0;
+        for c in (0..fd).step_by(2) {
+            m[(g + c) * nw + g + c + 1] = 1.0;
+        }
         for (e, el) in self.elements.iter().enumerate() {
             let a = el.affine().expect("an affine configuration");
             // x = sum over a's terms - sum over b's terms; the force acts -F on a's, +F on b's.
@@ -71,31 +115,26 @@ impl System<'_> {
                 t.terms().iter().map(|&(i, c)| (i, sign * c)).collect()
             };
             let x: Vec<(usize, f64)> = signed(0).into_iter().chain(signed(1)).collect();
-            for &(i, ci) in &x {
+            for &(i, ci) in x.iter().filter(|(i, _)| !self.driven.contains(i)) {
                 let row = (n + i) * nw;
                 let inv = self.inv_mass[i];
                 for &(j, cj) in &x {
                     m[row + j] -= ci * cj * a.k * inv;
                     m[row + n + j] -= ci * cj * a.c * inv;
                 }
-                m[row + 2 * n + FORCING + e] -= ci * inv;
+                m[row + 2 * n + fd + e] -= ci * inv;
             }
         }
         m
     }
 
-    /// `w` at `(t, y)` for a record interval on which the ground's accelerations are `g + s (t' - t)` along x
-    /// and along y (`forcing = [g_x, s_x, g_y, s_y]`).
-    pub(crate) fn linear_state(
-        &self,
-        y: &[f64],
-        forcing: [f64; FORCING],
-        f0: &[f64],
-        w: &mut [f64],
-    ) {
+    /// `w` at `(t, y)` for an interval on which ground channel `c`'s acceleration is
+    /// `g_c + s_c (t' - t)` (`forcing = [g_0, s_0, g_1, s_1, ...]`, [`Self::forcing_dim`] of them).
+    pub(crate) fn linear_state(&self, y: &[f64], forcing: &[f64], f0: &[f64], w: &mut [f64]) {
         let n2 = 2 * self.layout.dofs();
+        let fd = forcing.len();
         w[..n2].copy_from_slice(&y[..n2]);
-        w[n2..n2 + FORCING].copy_from_slice(&forcing);
-        w[n2 + FORCING..].copy_from_slice(f0);
+        w[n2..n2 + fd].copy_from_slice(forcing);
+        w[n2 + fd..].copy_from_slice(f0);
     }
 }

@@ -21,7 +21,6 @@ mod propagator;
 
 pub use driver::{run, Ending, Outcome, Settings};
 pub use layout::Layout;
-pub(crate) use linear::forcing;
 pub use observe::{EventInfo, Observer, Segment};
 pub use propagator::Propagation;
 
