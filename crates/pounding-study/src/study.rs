@@ -532,18 +532,35 @@ impl Study {
             Runs::List(v) => (v[i].value.clone(), label, v[i].coords.clone()),
             Runs::Product { base, .. } => {
                 let mut value = base.clone();
-                let mut coords = vec![String::new(); self.axes.len()];
-                let mut rest = i;
-                for (a, axis) in self.axes.iter().enumerate().rev() {
-                    let v = &axis.values[rest % axis.values.len()];
-                    rest /= axis.values.len();
+                for (axis, v) in self.picks(i) {
                     // Every value of every axis was applied to the base when the study was read.
                     let _ = apply(&mut value, &axis.name, v);
-                    coords[a] = show(v);
                 }
-                (value, label, coords)
+                (value, label, self.coords(i))
             }
         }
+    }
+
+    /// The value of each axis of run `i` as shown in `runs.csv`: [`Self::variant`]'s, without building the
+    /// run's scenario.
+    pub fn coords(&self, i: usize) -> Vec<String> {
+        match &self.runs {
+            Runs::List(v) => v[i].coords.clone(),
+            Runs::Product { .. } => self.picks(i).map(|(_, v)| show(v)).collect(),
+        }
+    }
+
+    /// Each axis (in order) with its value in run `i` of a product of axes.
+    fn picks(&self, i: usize) -> impl Iterator<Item = (&Axis, &Value)> {
+        // The last axis varies fastest.
+        let mut strides = vec![1; self.axes.len()];
+        for a in (0..self.axes.len().saturating_sub(1)).rev() {
+            strides[a] = strides[a + 1] * self.axes[a + 1].values.len();
+        }
+        self.axes
+            .iter()
+            .zip(strides)
+            .map(move |(axis, stride)| (axis, &axis.values[(i / stride) % axis.values.len()]))
     }
 
     /// The same study with `contacts = "off"` in every run (`--no-contact`): its identity changes with it,

@@ -34,7 +34,7 @@ fn each_outcome(
 /// The coordinates of run `i` without the `contacts` axis at `axis`: the runs a run without contact is the
 /// reference of.
 fn others(study: &Study, i: usize, axis: usize) -> Vec<String> {
-    let mut c = study.variant(i).2;
+    let mut c = study.coords(i);
     c.remove(axis);
     c
 }
@@ -103,7 +103,7 @@ fn write_runs_csv(
             wtr.write_field(swept.key(i)).map_err(csv_err)?;
             wtr.write_field(if o.is_ok() { "ok" } else { "error" })
                 .map_err(csv_err)?;
-            for c in study.variant(i).2 {
+            for c in study.coords(i) {
                 wtr.write_field(c).map_err(csv_err)?;
             }
             for c in &columns {

@@ -9,6 +9,7 @@ pub mod inside;
 mod plan;
 mod site;
 mod units;
+pub use units::Units;
 
 pub use building::{BuildingSummary, FoundationSummary, IsolatorSummary, MatricesSummary};
 pub use device::DeviceSummary;
@@ -129,8 +130,8 @@ pub struct RunSummary {
     pub statistics: StatisticsSummary,
     /// The unit of every number, by key. The same for every run: a study store's rows leave them out
     /// ([`crate::store`]), and a summary read without them gets them back.
-    #[serde(default = "units::units")]
-    pub units: serde_json::Map<String, serde_json::Value>,
+    #[serde(default = "units::Units::shared")]
+    pub units: units::Units,
     /// What the run says about its input (the common unit slips: a gap or opening larger than the buildings
     /// are tall, a first period under 0.05 s or over 20 s, a PGA above 5 g) and its own accuracy.
     pub warnings: Vec<String>,
@@ -235,7 +236,7 @@ impl RunSummary {
                 rejected_steps: r.statistics.rejected,
                 events: r.statistics.events,
             },
-            units: units::units(),
+            units: units::Units::shared(),
             warnings,
         };
         match first_null(&summary.to_value(), "summary") {

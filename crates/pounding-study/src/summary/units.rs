@@ -62,3 +62,55 @@ pub fn units() -> Map<String, Value> {
         _ => unreachable!("JSON objects"),
     }
 }
+
+/// A summary's units: [`units`], built once and shared by every summary that did not read units of its own
+/// (a clone counts a reference), or the map a summary read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Units(std::sync::Arc<Map<String, Value>>);
+
+impl Units {
+    /// The units of [`units`], shared.
+    pub fn shared() -> Self {
+        static SHARED: std::sync::OnceLock<std::sync::Arc<Map<String, Value>>> =
+            std::sync::OnceLock::new();
+        Units(SHARED.get_or_init(|| std::sync::Arc::new(units())).clone())
+    }
+}
+
+impl Default for Units {
+    fn default() -> Self {
+        Self::shared()
+    }
+}
+
+impl std::ops::Deref for Units {
+    type Target = Map<String, Value>;
+    fn deref(&self) -> &Self::Target {
+        &self.0
+    }
+}
+
+impl serde::Serialize for Units {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.0.serialize(s)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Units {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        Map::deserialize(d).map(|m| Units(std::sync::Arc::new(m)))
+    }
+}
+
+/// The schema of the map it holds.
+impl schemars::JsonSchema for Units {
+    fn inline_schema() -> bool {
+        true
+    }
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Units".into()
+    }
+    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        <Map<String, Value>>::json_schema(generator)
+    }
+}
