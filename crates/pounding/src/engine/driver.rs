@@ -208,9 +208,12 @@ impl<'a> Kinks<'a> {
                 }
                 (*k < *count).then(|| at(*k))
             }
+            // Two records' kinks a rounding apart (grids offset by a delay that is not a whole number of
+            // steps in binary) are one kink: the step between them would be shorter than any stepper takes.
             Kinks::Many(rs) => rs
                 .iter()
                 .filter_map(|r| {
+                    let t = t + Self::slack(t, r.dt());
                     if r.delay() > t {
                         return Some(r.delay());
                     }
@@ -227,11 +230,19 @@ impl<'a> Kinks<'a> {
         }
     }
 
+    /// How close two kinks near `t` on grids of step `dt` (s) may be and still be one: a few roundings of
+    /// the times, s.
+    fn slack(t: f64, dt: f64) -> f64 {
+        16.0 * f64::EPSILON * (t.abs() + dt)
+    }
+
     /// Whether a record ends at `t` (its acceleration jumps to 0).
     fn ends_at(&self, t: f64) -> bool {
         match self {
             Kinks::Grid { ends, .. } => ends.contains(&Some(t)),
-            Kinks::Many(rs) => rs.iter().any(|r| r.duration() == t),
+            Kinks::Many(rs) => rs
+                .iter()
+                .any(|r| (r.duration() - t).abs() <= Self::slack(t, r.dt())),
             Kinks::None => false,
         }
     }
