@@ -441,6 +441,11 @@ pub struct CoherentArgs {
     /// (0: stationary).
     #[arg(long, default_value_t = 2.0, requires = "record")]
     pub window: f64,
+    /// With --record: the frequency below which the simulated parts hold nothing, Hz (a half-cosine taper from
+    /// half of it; 0 for none): below it the supports differ only by the record's coherent part, so their
+    /// displacements do not drift apart.
+    #[arg(long, default_value_t = 0.1, requires = "record")]
+    pub low_cut: f64,
     #[command(flatten)]
     pub spectrum: SynthSpectrumArgs,
 }

@@ -4610,7 +4610,8 @@ fn coherent_records_feed_supports_and_name_their_options() {
 /// Records conditioned on a recorded motion as a user makes them: from a built-in record, then from the
 /// file of its first support (`--record-units m/s2`), which comes back as that file's numbers; the others
 /// feed a scenario's support, whose run balances its energy; coherent.json says what they were conditioned
-/// on; options that do not go together are refused by name with nothing written.
+/// on; examples/conditioned is what its recipe makes; options that do not go together are refused by name
+/// with nothing written.
 #[test]
 fn records_conditioned_on_a_record_feed_supports() {
     let dir = tmp("conditioned");
@@ -4692,6 +4693,45 @@ fn records_conditioned_on_a_record_feed_supports() {
         assert!(err.contains(want), "{err}");
         assert!(!bad.exists());
     }
+    // The example's records are what its recipe makes, and the example runs balanced.
+    let shipped = dir.join("shipped");
+    let o = pounding(&[
+        "record",
+        "coherent",
+        "--seed",
+        "1",
+        "--positions",
+        "0,100",
+        "--model",
+        "harichandran-vanmarcke",
+        "--record",
+        "el-centro-1940",
+        "--out",
+        shipped.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for file in ["support-1.csv", "support-2.csv", "coherent.json"] {
+        assert_eq!(
+            std::fs::read_to_string(shipped.join(file)).unwrap(),
+            std::fs::read_to_string(example(&format!("conditioned/{file}"))).unwrap(),
+            "{file}"
+        );
+    }
+    let o = pounding(&[
+        "run",
+        &example("conditioned-supports.toml"),
+        "--out",
+        dir.join("example").to_str().unwrap(),
+        "-q",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(
+        f(&summary, "energy_balance_error") < 1e-6,
+        "{}",
+        summary["energy_balance_error"]
+    );
     let bad = dir.join("bad");
     let o = pounding(&[
         "record",

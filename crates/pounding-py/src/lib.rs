@@ -652,9 +652,10 @@ fn synthetic(seed: &Bound<'_, PyAny>, params: &str) -> PyResult<(f64, f64, Vec<f
 /// `positions` (m), the coherency model as JSON text (`{"model": "luco-wong", "alpha": ...}` or
 /// `{"model": "harichandran-vanmarcke", "A", "a", "k", "f0", "b"}`, each absent one SMART-1 event 20's) and the
 /// spectrum's parameters as [`synthetic`]'s, or the record `record` they are conditioned on (its `units`, and
-/// the `window` of its envelope, s); returns `(dt, t0, [accelerations per support])`, s and m/s^2.
+/// the `window` of its envelope, s, and the `low_cut` of its simulated parts, Hz); returns `(dt, t0, [accelerations per support])`, s and m/s^2.
 #[pyfunction]
-#[pyo3(signature = (seed, positions, coherency, params, record=None, units=None, window=2.0))]
+#[pyo3(signature = (seed, positions, coherency, params, record=None, units=None, window=2.0, low_cut=0.1))]
+#[allow(clippy::too_many_arguments)]
 fn coherent(
     seed: &Bound<'_, PyAny>,
     positions: Vec<f64>,
@@ -663,6 +664,7 @@ fn coherent(
     record: Option<&str>,
     units: Option<&str>,
     window: f64,
+    low_cut: f64,
 ) -> PyResult<(f64, f64, Vec<Vec<f64>>)> {
     use pounding::ground_motion::coherency::{Coherency, Spatial};
     use pounding::ground_motion::conditional::Conditioned;
@@ -702,6 +704,7 @@ fn coherent(
             coherency,
             positions,
             window,
+            low_cut,
         }
         .records("support", seed),
         None => Spatial {

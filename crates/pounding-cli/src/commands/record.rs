@@ -111,6 +111,7 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
             coherency,
             positions: a.positions.clone(),
             window: a.window,
+            low_cut: a.low_cut,
         }
         .records("support", a.seed),
         None => Spatial {
@@ -140,7 +141,11 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
             a.model,
             a.record
                 .as_ref()
-                .map_or(String::new(), |r| format!(" --record {r} --window {}", fmt_num(a.window)))
+                .map_or(String::new(), |r| format!(
+                    " --record {r} --window {} --low-cut {}",
+                    fmt_num(a.window),
+                    fmt_num(a.low_cut)
+                ))
         );
         push_rows(&mut text, r);
         let name = format!("support-{}.csv", j + 1);
@@ -170,6 +175,7 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
                 "dt_s": r.dt(),
                 "pga_m_per_s2": r.peaks().pga,
                 "window_s": a.window,
+                "low_cut_hz": a.low_cut,
             })
         }
         _ => about["synthetic"] = json!(p),

@@ -450,6 +450,7 @@ def coherent(
     record: Optional[Union[str, "os.PathLike[str]"]] = None,
     units: Optional[str] = None,
     window: float = 2.0,
+    low_cut: float = 0.1,
     **params: Any,
 ) -> Dict[str, Any]:
     """Records at supports along a line that lose coherence with distance, exactly ``pounding record
@@ -459,7 +460,7 @@ def coherent(
     factor scales all), or, with ``record`` (a built-in record's name or a file; ``units`` as in a scenario's
     ``[ground_motion]``), conditioned on that record: it stays at the first position, the others get its
     Fourier amplitudes and the model's coherency with it, their random parts under its envelope (moving RMS
-    over ``window`` s; 0 for none). Returns ``dt`` (s), ``t0`` (s), ``time`` (s) and ``acceleration``: one
+    over ``window`` s; 0 for none) and holding nothing below ``low_cut`` Hz (0 for no cut). Returns ``dt`` (s), ``t0`` (s), ``time`` (s) and ``acceleration``: one
     numpy array per support (m/s^2)."""
     keys = {"alpha", "A", "a", "k", "f0", "b"}
     given = {k: v for k, v in params.items() if v is not None}
@@ -474,6 +475,7 @@ def coherent(
         record=None if record is None else _fspath("record", record),
         units=units,
         window=_number("window", window),
+        low_cut=_number("low_cut", low_cut),
     )
     arrays = [np.asarray(a) for a in accs]
     return {"dt": dt, "t0": t0, "time": t0 + dt * np.arange(len(arrays[0])), "acceleration": arrays}

@@ -37,6 +37,10 @@ pub struct Conditioned {
     pub positions: Vec<f64>,
     /// Length of the moving window of the record's envelope, s (0: the simulated parts stay stationary).
     pub window: f64,
+    /// Frequency below which the simulated parts hold nothing, Hz (a half-cosine taper from half of it): the
+    /// supports' displacements then differ by what their coherent parts make, not by the drift of random
+    /// components at periods longer than any structure's (0: none).
+    pub low_cut: f64,
 }
 
 impl Conditioned {
@@ -50,6 +54,12 @@ impl Conditioned {
             self.window,
             (0.0..=1e3).contains(&self.window),
             "0 <= window <= 1000 (s; 0 for no envelope)",
+        )?;
+        check(
+            "low_cut",
+            self.low_cut,
+            (0.0..=10.0).contains(&self.low_cut),
+            "0 <= low_cut <= 10 (Hz; 0 for none)",
         )?;
         let (a1, dt, t0) = (
             self.record.accelerations(),
@@ -75,7 +85,7 @@ impl Conditioned {
             let w = l as f64 * dw;
             cholesky(&self.coherency, &self.positions, w, &mut chol);
             let x = dft(a1, w * dt);
-            let magnitude = x.0.hypot(x.1);
+            let magnitude = x.0.hypot(x.1) * taper(w / (2.0 * PI), self.low_cut);
             // The mean and the Nyquist term are real: their coherent part only.
             let below_nyquist = l > 0 && 2 * l < n;
             for j in 1..np {
@@ -124,6 +134,18 @@ fn dft(a: &[f64], theta: f64) -> (f64, f64) {
         (c, s) = (c * rc - s * rs, s * rc + c * rs);
     }
     (re, im)
+}
+
+/// The weight of the simulated parts at frequency `f` (Hz) under a low cut at `cut` (Hz): 0 up to `cut / 2`,
+/// 1 from `cut`, a half cosine between.
+fn taper(f: f64, cut: f64) -> f64 {
+    if f >= cut {
+        1.0
+    } else if f <= 0.5 * cut {
+        0.0
+    } else {
+        0.5 - 0.5 * (PI * (f - 0.5 * cut) / (0.5 * cut)).cos()
+    }
 }
 
 /// Adds `weight Re(y e^(i theta k))` to each sample `k` of `out`.
