@@ -4504,6 +4504,36 @@ fn linear_separation_refuses_soil_and_supports_of_their_own() {
     }
 }
 
+/// Runs the scenario at `path` into `out` and checks that it succeeds with its energy balanced within 1e-6.
+fn run_balanced(path: &std::path::Path, out: &std::path::Path) {
+    let o = pounding(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(
+        f(&summary, "energy_balance_error") < 1e-6,
+        "{}",
+        summary["energy_balance_error"]
+    );
+}
+
+/// Checks that each of `files` in `made` equals the one in the example folder `folder`.
+fn same_files(made: &std::path::Path, folder: &str, files: &[&str]) {
+    for file in files {
+        assert_eq!(
+            std::fs::read_to_string(made.join(file)).unwrap(),
+            std::fs::read_to_string(example(&format!("{folder}/{file}"))).unwrap(),
+            "{file}"
+        );
+    }
+}
+
 /// Records that lose coherence with distance as a user makes them: one file per support, stating its units,
 /// that a scenario's supports read (examples/coherent-supports.toml's recipe); the same seed gives the same
 /// files; the first support's PGA is --pga; bad options name themselves.
@@ -4559,31 +4589,11 @@ fn coherent_records_feed_supports_and_name_their_options() {
         shipped.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    for file in ["support-1.csv", "support-2.csv"] {
-        assert_eq!(
-            std::fs::read_to_string(shipped.join(file)).unwrap(),
-            std::fs::read_to_string(example(&format!("coherent/{file}"))).unwrap(),
-            "{file}"
-        );
-    }
+    same_files(&shipped, "coherent", &["support-1.csv", "support-2.csv"]);
     // The example's scenario on the records made here (their folder beside it).
     let text = std::fs::read_to_string(example("coherent-supports.toml")).unwrap();
     std::fs::write(dir.join("pair.toml"), text).unwrap();
-    let o = pounding(&[
-        "run",
-        dir.join("pair.toml").to_str().unwrap(),
-        "--out",
-        dir.join("run").to_str().unwrap(),
-        "-q",
-        "--json",
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let summary: Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert!(
-        f(&summary, "energy_balance_error") < 1e-6,
-        "{}",
-        summary["energy_balance_error"]
-    );
+    run_balanced(&dir.join("pair.toml"), &dir.join("run"));
     for (args, want) in [
         (vec!["--model", "luco-wong"], "--alpha is required"),
         (
@@ -4668,21 +4678,7 @@ fn records_conditioned_on_a_record_feed_supports() {
         out.join("support-2.csv").to_str().unwrap()
     );
     std::fs::write(dir.join("pair.toml"), scenario).unwrap();
-    let o = pounding(&[
-        "run",
-        dir.join("pair.toml").to_str().unwrap(),
-        "--out",
-        dir.join("run").to_str().unwrap(),
-        "-q",
-        "--json",
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let summary: Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert!(
-        f(&summary, "energy_balance_error") < 1e-6,
-        "{}",
-        summary["energy_balance_error"]
-    );
+    run_balanced(&dir.join("pair.toml"), &dir.join("run"));
     for (more, want) in [
         (vec!["--window", "-1"], "--window = -1 is not allowed"),
         (vec!["--pga", "2"], "cannot be used with"),
@@ -4710,27 +4706,14 @@ fn records_conditioned_on_a_record_feed_supports() {
         shipped.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    for file in ["support-1.csv", "support-2.csv", "coherent.json"] {
-        assert_eq!(
-            std::fs::read_to_string(shipped.join(file)).unwrap(),
-            std::fs::read_to_string(example(&format!("conditioned/{file}"))).unwrap(),
-            "{file}"
-        );
-    }
-    let o = pounding(&[
-        "run",
-        &example("conditioned-supports.toml"),
-        "--out",
-        dir.join("example").to_str().unwrap(),
-        "-q",
-        "--json",
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let summary: Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert!(
-        f(&summary, "energy_balance_error") < 1e-6,
-        "{}",
-        summary["energy_balance_error"]
+    same_files(
+        &shipped,
+        "conditioned",
+        &["support-1.csv", "support-2.csv", "coherent.json"],
+    );
+    run_balanced(
+        std::path::Path::new(&example("conditioned-supports.toml")),
+        &dir.join("example"),
     );
     let bad = dir.join("bad");
     let o = pounding(&[
