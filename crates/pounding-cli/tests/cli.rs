@@ -4681,6 +4681,7 @@ fn records_conditioned_on_a_record_feed_supports() {
     run_balanced(&dir.join("pair.toml"), &dir.join("run"));
     for (more, want) in [
         (vec!["--window", "-1"], "--window = -1 is not allowed"),
+        (vec!["--low-cut", "20"], "--low-cut = 20 is not allowed"),
         (vec!["--pga", "2"], "cannot be used with"),
     ] {
         let (o, bad) = make("bad", "el-centro-1940", &more);

@@ -124,6 +124,11 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
     .map_err(|e| {
         // The library names Harichandran-Vanmarcke's parameters as the paper does; the options add hv-.
         let msg = e.to_string();
+        // The library's `low_cut` is the option --low-cut.
+        let msg = match msg.strip_prefix("low_cut") {
+            Some(rest) => format!("low-cut{rest}"),
+            None => msg,
+        };
         let hv = ["A ", "a ", "k ", "f0 ", "b "]
             .iter()
             .any(|p| msg.starts_with(p));
