@@ -16,8 +16,9 @@
 //! power, exactly in expectation. The coherent part is a filter of the record and keeps its time shape; the
 //! random part is stationary, so it is put under the record's envelope: the moving root mean square of the
 //! record over `window` seconds, normalised to a mean square of 1 over the record (which keeps each
-//! support's expected energy the record's). The wave's passage is not in `gamma` (lagged coherency): a
-//! support's delay adds it.
+//! support's expected energy the record's), less the envelope times the line that leaves its sum and first
+//! moment at 0: the envelope moves some of the random part's power to the lowest frequencies, which would
+//! make the support's velocity and displacement drift. The wave's passage is not in `gamma` (lagged coherency): a support's delay adds it.
 
 use super::coherency::{check_positions, cholesky, Coherency, MAX_SAMPLES};
 use super::synthetic::Rng;
@@ -113,9 +114,11 @@ impl Conditioned {
         let mut out = Vec::with_capacity(np);
         out.push(Record::new(format!("{name}-1"), dt, t0, a1.to_vec())?);
         for j in 1..np {
-            let a: Vec<f64> = (0..n)
-                .map(|k| coherent[j][k] + envelope[k] * random[j][k])
-                .collect();
+            let mut shaped: Vec<f64> = (0..n).map(|k| envelope[k] * random[j][k]).collect();
+            if self.window > 0.0 {
+                level_off(&mut shaped, &envelope);
+            }
+            let a: Vec<f64> = (0..n).map(|k| coherent[j][k] + shaped[k]).collect();
             out.push(Record::new(format!("{name}-{}", j + 1), dt, t0, a)?);
         }
         Ok(out)
@@ -134,6 +137,27 @@ fn dft(a: &[f64], theta: f64) -> (f64, f64) {
         (c, s) = (c * rc - s * rs, s * rc + c * rs);
     }
     (re, im)
+}
+
+/// Takes from `m` (a random part under the envelope `e`) the envelope times the line `c0 + c1 k` that leaves
+/// its sum and its first moment `sum k m_k` at 0: the part then adds nothing to the support's velocity and
+/// displacement at the record's end (an envelope moves some of a stationary part's power to the lowest
+/// frequencies: a drift), and stays at rest where the envelope is.
+fn level_off(m: &mut [f64], e: &[f64]) {
+    let (mut s0, mut s1, mut s2, mut r0, mut r1) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (k, (x, w)) in m.iter().zip(e).enumerate() {
+        let k = k as f64;
+        (s0, s1, s2) = (s0 + w, s1 + w * k, s2 + w * k * k);
+        (r0, r1) = (r0 + x, r1 + x * k);
+    }
+    let det = s0 * s2 - s1 * s1;
+    if det.abs() <= f64::EPSILON * s0 * s2 {
+        return;
+    }
+    let (c0, c1) = ((r0 * s2 - r1 * s1) / det, (s0 * r1 - s1 * r0) / det);
+    for (k, (x, w)) in m.iter_mut().zip(e).enumerate() {
+        *x -= w * (c0 + c1 * k as f64);
+    }
 }
 
 /// The weight of the simulated parts at frequency `f` (Hz) under a low cut at `cut` (Hz): 0 up to `cut / 2`,

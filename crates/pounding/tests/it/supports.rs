@@ -296,8 +296,9 @@ fn records_conditioned_on_a_record_keep_it_and_reproduce_the_coherency() {
 }
 
 /// Under the record's envelope (2 s window), the simulated supports are quiet where the record is (El Centro
-/// followed by 10 s at rest), and their energy `sum a^2` is the record's on average over 100 seeds, within
-/// four standard errors; below half the low cut a support is the record's coherent part alone, `gamma X`; a
+/// followed by 10 s at rest), their energy `sum a^2` is the record's on average over 100 seeds, within four
+/// standard errors, and their mean acceleration is the coherent part's, `gamma(0) mean(a_1)` (no drift from
+/// the envelope); below half the low cut a support is the record's coherent part alone, `gamma X`; a
 /// negative window is refused by name.
 #[test]
 fn conditioned_records_follow_the_record_in_time() {
@@ -332,6 +333,14 @@ fn conditioned_records_follow_the_record_in_time() {
                 coherency.kind()
             );
             ratios.push(energy(b) / energy(&a));
+            // No mean beyond the coherent part's (the envelope's drift is cut): gamma(0) times the record's.
+            let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len() as f64;
+            let want = coherency.gamma(0.0, 400.0) * mean(&a);
+            assert!(
+                (mean(b) - want).abs() < 1e-12 * el.pga(),
+                "{} vs {want}",
+                mean(b)
+            );
         }
         let m = ratios.iter().sum::<f64>() / 100.0;
         let sd = (ratios.iter().map(|r| (r - m).powi(2)).sum::<f64>() / 99.0).sqrt();
