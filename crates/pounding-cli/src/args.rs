@@ -388,7 +388,10 @@ pub struct SynthArgs {
 /// Records at supports that lose coherence with distance (docs/structures.md, "Ground motion that differs
 /// between supports").
 #[derive(Args, Debug)]
-#[command(allow_negative_numbers = true)]
+#[command(
+    allow_negative_numbers = true,
+    after_help = "Files in --out: support-1.csv, support-2.csv, ... and coherent.json; with --plots: supports.svg (each support's acceleration, and the velocity and displacement a run drives it by)."
+)]
 pub struct CoherentArgs {
     /// Seed of the random numbers: the same seed gives the same records, bit for bit.
     #[arg(long)]
@@ -446,6 +449,8 @@ pub struct CoherentArgs {
     /// displacements do not drift apart.
     #[arg(long, default_value_t = 0.1, requires = "record")]
     pub low_cut: f64,
+    #[command(flatten)]
+    pub figures: FigureArgs,
     #[command(flatten)]
     pub spectrum: SynthSpectrumArgs,
 }

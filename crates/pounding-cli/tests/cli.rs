@@ -4646,8 +4646,10 @@ fn records_conditioned_on_a_record_feed_supports() {
         all.extend(more);
         (pounding(&all), out)
     };
-    let (o, out) = make("el", "el-centro-1940", &[]);
+    let (o, out) = make("el", "el-centro-1940", &["--plots"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = std::fs::read_to_string(out.join("supports.svg")).unwrap();
+    assert!(svg.contains("support 2 at 150 m") && svg.contains("conditioned on el-centro-1940"));
     let about: Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("coherent.json")).unwrap()).unwrap();
     assert_eq!(about["conditioned_on"]["record"], "el-centro-1940");

@@ -186,6 +186,17 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
         _ => about["synthetic"] = json!(p),
     }
     set.write_data("coherent.json", format!("{about:#}\n").as_bytes())?;
+    if a.figures.plots {
+        let how = match &a.record {
+            Some(r) => format!("conditioned on {r}, seed {}", a.seed),
+            None => format!("generated from a spectrum, seed {}", a.seed),
+        };
+        let fig =
+            crate::plot::analyses::supports(&records, &a.positions, &format!("{}, {how}", a.model));
+        for (name, bytes) in crate::files::render_figures(&[fig], a.figures.png)? {
+            set.write_data(&name, &bytes)?;
+        }
+    }
     set.commit()?;
     println!(
         "wrote {}: {} records of {} samples at {} s (seed {}); PGA {} m/s^2",

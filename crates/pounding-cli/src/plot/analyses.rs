@@ -13,11 +13,11 @@ fn time() -> Quantity {
     Quantity::new("time", "s")
 }
 
-/// The record as analysed (from rest, no baseline correction): acceleration, and the velocity and
-/// displacement integrated exactly for the piecewise-linear acceleration.
-pub fn record(r: &Record, subtitle: &str) -> Figure {
+/// The record as analysed, from rest at t = 0 (the ramp to the first sample, then the samples): times (s),
+/// accelerations (m/s^2), and the velocity (m/s) and displacement (m) integrated exactly for the
+/// piecewise-linear acceleration, without baseline correction.
+fn from_rest(r: &Record) -> [Vec<f64>; 4] {
     let (dt, a) = (r.dt(), r.accelerations());
-    // From rest at t = 0: the ramp to the first sample at t0, then the samples.
     let mut t = vec![0.0];
     let mut acc = vec![0.0];
     let (mut vel, mut dis) = (vec![0.0], vec![0.0]);
@@ -34,13 +34,40 @@ pub fn record(r: &Record, subtitle: &str) -> Figure {
     for k in 1..a.len() {
         step(a[k - 1], a[k], dt, r.t0() + k as f64 * dt);
     }
-    let panel = |name: &str, unit: &'static str, y: Vec<f64>, i: usize| {
+    [t, acc, vel, dis]
+}
+
+/// Ground acceleration, velocity and displacement panels of `records`, one series per record (`labels`).
+fn ground_panels(records: &[&Record], labels: &[String]) -> Vec<Panel> {
+    let motions: Vec<[Vec<f64>; 4]> = records.iter().map(|r| from_rest(r)).collect();
+    let panel = |name: &str, unit: &'static str, which: usize| {
         let mut p = Panel::new("", time(), Quantity::new(name, unit));
-        p.series.push(Series::line("", t.clone(), y, Style::nth(i)));
+        for (i, (m, label)) in motions.iter().zip(labels).enumerate() {
+            p.series.push(Series::line(
+                label,
+                m[0].clone(),
+                m[which].clone(),
+                Style::nth(i),
+            ));
+        }
         p.x_tight = true;
-        p.legend = Legend::None;
+        p.legend = if records.len() > 1 {
+            Legend::Inside
+        } else {
+            Legend::None
+        };
         p
     };
+    vec![
+        panel("ground acceleration", "m/s\u{b2}", 1),
+        panel("ground velocity", "m/s", 2),
+        panel("ground displacement", "m", 3),
+    ]
+}
+
+/// The record as analysed (from rest, no baseline correction): acceleration, and the velocity and
+/// displacement integrated exactly for the piecewise-linear acceleration.
+pub fn record(r: &Record, subtitle: &str) -> Figure {
     Figure {
         id: "record".into(),
         title: format!(
@@ -50,11 +77,29 @@ pub fn record(r: &Record, subtitle: &str) -> Figure {
         subtitle: format!(
             "{subtitle}; velocity and displacement from rest, without baseline correction"
         ),
-        panels: vec![
-            panel("ground acceleration", "m/s\u{b2}", acc, 0),
-            panel("ground velocity", "m/s", vel, 0),
-            panel("ground displacement", "m", dis, 0),
-        ],
+        panels: ground_panels(&[r], &[String::new()]),
+        columns: 1,
+        plot: (PLOT.0, 170.0),
+        ..Figure::default()
+    }
+}
+
+/// The records of supports along a line (`pounding record coherent`): each support's acceleration, and the
+/// velocity and displacement it is driven by in a run (from rest, without baseline correction).
+pub fn supports(records: &[Record], positions: &[f64], subtitle: &str) -> Figure {
+    let labels: Vec<String> = positions
+        .iter()
+        .enumerate()
+        .map(|(j, x)| format!("support {} at {} m", j + 1, crate::output::fmt_num(*x)))
+        .collect();
+    let refs: Vec<&Record> = records.iter().collect();
+    Figure {
+        id: "supports".into(),
+        title: "Supports' ground motions: acceleration, velocity and displacement".into(),
+        subtitle: format!(
+            "{subtitle}; velocity and displacement from rest, without baseline correction, as a run drives each support"
+        ),
+        panels: ground_panels(&refs, &labels),
         columns: 1,
         plot: (PLOT.0, 170.0),
         ..Figure::default()
