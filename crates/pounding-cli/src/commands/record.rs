@@ -157,7 +157,7 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
         set.write_data(&name, text.as_bytes())?;
         files.push(name);
     }
-    let about = json!({
+    let mut about = json!({
         "seed": a.seed,
         "model": a.model.to_string(),
         "coherency": match coherency {
@@ -171,11 +171,10 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
         "pga_m_per_s2": records.iter().map(|r| r.peaks().pga).collect::<Vec<f64>>(),
     });
     // What the records came from: the spectrum, or the record they are conditioned on.
-    let mut about = about;
-    match (&source, &a.record) {
-        (Some(r), Some(name)) => {
+    match &source {
+        Some(r) => {
             about["conditioned_on"] = json!({
-                "record": name,
+                "record": a.record,
                 "npts": r.npts(),
                 "dt_s": r.dt(),
                 "pga_m_per_s2": r.peaks().pga,
@@ -183,7 +182,7 @@ fn record_coherent(a: &CoherentArgs) -> Result<(), CliError> {
                 "low_cut_hz": a.low_cut,
             })
         }
-        _ => about["synthetic"] = json!(p),
+        None => about["synthetic"] = json!(p),
     }
     set.write_data("coherent.json", format!("{about:#}\n").as_bytes())?;
     if a.figures.plots {
