@@ -47,6 +47,27 @@ pub(super) fn step_peak(
     }
 }
 
+/// The first piece of a whole interval taken at once over which a rate (`va`, `vb` at the step's ends,
+/// `rate(motion, k)` at the start of piece `k`) changes sign, with its rates at its ends: the step itself
+/// for a step of one piece. A search then builds the series of one piece only.
+fn bracket(
+    seg: &Segment<'_, '_>,
+    (va, vb): (f64, f64),
+    mut rate: impl FnMut(&crate::integrate::Motion, usize) -> f64,
+) -> ((f64, f64), (f64, f64)) {
+    let mut a = (seg.t0, va);
+    if let Some(m) = seg.dense.motion().filter(|m| m.pieces() > 1) {
+        for k in 1..m.pieces() {
+            let b = (seg.t0 + k as f64 * m.piece(), rate(m, k));
+            if a.1 * b.1 <= 0.0 {
+                return (a, b);
+            }
+            a = b;
+        }
+    }
+    (a, (seg.t1, vb))
+}
+
 /// On a step propagated exactly, the interior extremum of `q = value(y, 0)` (rate `value(y, n)`, `va` and
 /// `vb` at the step's ends): the root of its rate on the exact motion (Brent's method) and `q` there; `None`
 /// on a stepped step or when the rate keeps its sign.
@@ -60,12 +81,16 @@ pub(super) fn exact_extremum(
         return None;
     }
     let n = motion.len() / 2;
+    let ((ta, ra), (tb, rb)) = bracket(seg, (va, vb), |m, k| {
+        m.piece_start(k, motion);
+        value(motion, n)
+    });
     let mut rate = |t: f64| {
         seg.dense.eval_prefix(t, motion);
         value(motion, n)
     };
     let tol = 4.0 * f64::EPSILON * seg.t1.abs();
-    let tm = brent_root(&mut rate, seg.t0, seg.t1, va, vb, tol)?;
+    let tm = brent_root(&mut rate, ta, tb, ra, rb, tol)?;
     seg.dense.eval_prefix(tm, motion);
     Some((tm, value(motion, 0)))
 }
@@ -190,12 +215,22 @@ impl Peaks {
                 motion.rates[4][n + i] + ground(h),
             );
             let (j0, j1) = (motion.jerk[0][i] + slope, motion.jerk[1][i] + slope);
+            if motion.pieces() > 1 {
+                // A whole interval: its exact accelerations at the Gauss nodes too (a foundation's fast
+                // modes ring inside it, which the cubic through the ends may not show).
+                for (j, node) in crate::integrate::GAUSS_NODES.iter().enumerate() {
+                    let a = motion.rates[j + 1][n + i] + ground(node * h);
+                    self.acceleration[i].offer(a.abs(), t0 + node * h);
+                }
+            }
             let (_, p) = hermite_peak(a0, a1, j0, j1, h);
             if j0 * j1 >= 0.0 || p < 0.99 * self.acceleration[i].value {
                 continue;
             }
+            let ((ta, ja), (tb, jb)) =
+                bracket(seg, (j0, j1), |m, k| m.second_rate_at(k, n + i) + slope);
             let jerk = |t: f64| motion.w_at(t - t0, n + i)[2] + slope;
-            if let Some(tm) = brent_root(jerk, t0, t1, j0, j1, tol) {
+            if let Some(tm) = brent_root(jerk, ta, tb, ja, jb, tol) {
                 let a = motion.w_at(tm - t0, n + i)[1] + ground(tm - t0);
                 self.acceleration[i].offer(a.abs(), tm);
             }

@@ -393,7 +393,18 @@ impl ElementLaw for Contact {
             k,
             c,
             f0: -k * self.gap,
+            viscous: 0.0,
         })
+    }
+
+    /// The work `f x'` and its viscous part `(f - f_elastic) x'` of a linear law (its elastic force
+    /// `k (x - gap)`, so the viscous part is `c x'^2`).
+    fn affine_rates(&self, a: &Affine, out: &mut [[f64; 3]]) -> bool {
+        // Open, the force and its `f0 = -k gap` are 0: no work.
+        let open = a.k == 0.0 && a.c == 0.0;
+        out[0] = [a.k, a.c, if open { 0.0 } else { 1.0 }];
+        out[1] = [0.0, a.c, 0.0];
+        true
     }
 
     fn watched(&self) -> &'static [Watch] {

@@ -151,6 +151,7 @@ impl Element {
     pub fn affine(&self) -> Option<super::Affine> {
         self.law.affine().map(|a| super::Affine {
             c: a.c + self.c,
+            viscous: a.viscous + self.c,
             ..a
         })
     }

@@ -133,6 +133,9 @@ pub struct Affine {
     pub c: f64,
     /// Force at zero deformation and rate, N.
     pub f0: f64,
+    /// The part of `c` whose force `evaluate` returns as its viscous force (counted as viscous damping in
+    /// the energy balance), N s/m.
+    pub viscous: f64,
 }
 
 /// Scales of the motion of an element's ends, from which a law sets the absolute tolerances of its own
@@ -186,6 +189,21 @@ pub trait ElementLaw {
     /// integrated along the exact motion.
     fn affine(&self) -> Option<Affine> {
         None
+    }
+
+    /// Whether [`Self::affine`] may answer a nonzero `f0` in some phase (a bilinear branch, a taut cable,
+    /// a closed contact); `false` for a law whose affine force is always `k x + c x'` (the exact
+    /// propagation then carries no constant force for it).
+    fn constant_force(&self) -> bool {
+        true
+    }
+
+    /// While [`Self::affine`] answers `a`, the rates of the law's states as `[p, q, r]` per state (written to
+    /// `out`): `s' = p x x' + q x'^2 + r f0 x'` (x in m, x' in m/s, `f0` = `a.f0` in N; a power, W). What
+    /// the engine integrates exactly over a whole record interval; `false` if the law cannot say (the
+    /// default for a law with states), and then such intervals are stepped.
+    fn affine_rates(&self, _a: &Affine, _out: &mut [[f64; 3]]) -> bool {
+        self.states() == 0
     }
 
     /// The events watched in the current phase.

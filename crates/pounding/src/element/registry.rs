@@ -75,6 +75,12 @@ macro_rules! registry {
             fn affine(&self) -> Option<Affine> {
                 dispatch!(self, l => l.affine())
             }
+            fn constant_force(&self) -> bool {
+                dispatch!(self, l => l.constant_force())
+            }
+            fn affine_rates(&self, a: &Affine, out: &mut [[f64; 3]]) -> bool {
+                dispatch!(self, l => l.affine_rates(a, out))
+            }
             #[inline]
             fn watched(&self) -> &'static [Watch] {
                 dispatch!(self, l => l.watched())

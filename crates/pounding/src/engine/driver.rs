@@ -58,12 +58,12 @@ pub struct Outcome {
 /// The earliest event of any element in the step `[t0, t1]` (states `y0`, `y1`): `(time, element, event)`.
 /// Every event function is positive before its event and <= 0 after it; the located time is nudged to the far
 /// side, so that a restarted step never finds the same event again. `states` is room for one element's
-/// states on the interpolant.
+/// states on the interpolant, `motion` for the displacements and velocities.
 fn earliest_event(
     sys: &System,
     (t0, y0): (f64, &[f64]),
     (t1, y1, dense): (f64, &[f64], &Dense),
-    states: &mut [f64],
+    (states, motion): (&mut [f64], &mut [f64]),
 ) -> Option<(f64, usize, Event)> {
     let mut first: Option<(f64, usize, Event)> = None;
     for (e, el) in sys.elements().iter().enumerate() {
@@ -93,7 +93,11 @@ fn earliest_event(
             // (the ends turn back inside it), the largest penetration.
             // An event is a crossing from positive to <= 0, or a function found negative at the step end; a
             // function that stays at exactly 0 (a storey at rest: its drift rate is identically 0) is no event.
-            let far = if gb < 0.0 || (gb == 0.0 && ga > 0.0) {
+            // A whole interval taken at once: an event function may dip below 0 and back inside it, which
+            // its ends do not show; its pieces' starts do, as a series-length step's ends would.
+            let far = if let Some(crossed) = piece_crossing(sys, (e, ev), (dense, y0), motion) {
+                Some(crossed)
+            } else if gb < 0.0 || (gb == 0.0 && ga > 0.0) {
                 Some((t1, gb))
             } else if w.may_graze
                 && va > 0.0
@@ -137,6 +141,28 @@ fn earliest_event(
 /// Whether a touch may come and go inside a step whose deformation turns from closing to opening: the
 /// distance at the turn, on the cubic Hermite of the deformation (within a few thousandths of the step's
 /// motion of the true one on the steps the engine takes), is not clearly positive.
+/// On a whole interval taken at once (more than one piece), the first start of a piece where the event
+/// function of `ev` of element `e` is <= 0, with its value there (the motion from the chain of pieces; `y0`
+/// the state at the step's start).
+fn piece_crossing(
+    sys: &System,
+    (e, ev): (usize, Event),
+    (dense, y0): (&Dense, &[f64]),
+    motion: &mut [f64],
+) -> Option<(f64, f64)> {
+    let m = dense.motion().filter(|m| m.pieces() > 1)?;
+    let el = &sys.elements()[e];
+    // Whole intervals are taken while every law is affine, whose own states (a work) do not enter its
+    // force or its events: the states at the step's start stand for them.
+    let states = &y0[sys.layout().block(e)];
+    (1..m.pieces()).find_map(|k| {
+        m.piece_start(k, motion);
+        let (x, v) = sys.deformation(e, motion);
+        let g = el.event_value(ev, x, v, states);
+        (g <= 0.0).then_some((dense.t0() + k as f64 * m.piece(), g))
+    })
+}
+
 fn grazes(
     el: &crate::element::Element,
     ev: Event,
@@ -286,12 +312,18 @@ pub fn run(
         .max()
         .unwrap_or(0);
     let mut states = vec![0.0; most];
+    let mut motion = vec![0.0; 2 * sys.layout().dofs()];
     let mut ending = Ending::Time;
     while t0 < t_end {
         let t_stop = kinks.next_after(t0).map_or(t_end, |t| t.min(t_end));
         dp.step_until(&*sys, t_stop)?;
         let t1 = dp.t();
-        let first = earliest_event(sys, (t0, &y0), (t1, dp.y(), dp.dense()), &mut states);
+        let first = earliest_event(
+            sys,
+            (t0, &y0),
+            (t1, dp.y(), dp.dense()),
+            (&mut states, &mut motion),
+        );
         let te = match first {
             Some((te, _, _)) => {
                 dp.state_at(sys, te, &mut ye);

@@ -6,12 +6,18 @@
 //! step length are built once and kept, a few configurations at a time. The energies and the laws' own
 //! integrated states (a contact's work) are integrated along the exact motion by three-point
 //! Gauss–Legendre quadrature. Events are located on the exact motion ([`crate::integrate::Motion`]).
+//!
+//! A configuration whose fast modes (a foundation on soil) would split an interval into many such steps takes
+//! each whole interval in one ([`Whole`]): its transitions by scaling and squaring, its energies as quadratic
+//! forms of `w` integrated over it ([`super::forms`], [`crate::integrate::form_integrals`]), its motion read
+//! inside on a chain of pieces. The rest of an interval after an event, and an interval whose motion the
+//! cubic Hermite screens would misread ([`HERMITE_MISS`]), are left to the Runge–Kutta stepper.
 
 use super::linear::{channel_at, forcing};
 use super::System;
 use crate::integrate::{
-    mat_vec, step_bound, transition, Dense, Motion, OdeSystem, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO,
-    OFFSETS, TERMS,
+    halvings, live_of, mat_vec_on, step_bound, transition, Dense, Motion, OdeSystem, Tolerance,
+    GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
 
 /// Configurations kept at a time.
@@ -38,6 +44,41 @@ struct Length {
     phi: [Vec<f64>; 4],
 }
 
+/// A whole record interval in one step ([`crate::integrate::exponential`]), for a configuration whose
+/// fast modes would split it into many series-length steps: its transitions, the pieces its motion is read
+/// on inside, and the integrals of the rates' forms over it.
+#[derive(Debug)]
+struct Whole {
+    /// The interval, s.
+    h: f64,
+    /// Its series-length pieces (a power of 2) and the transition rows over one.
+    pieces: usize,
+    piece_rows: Vec<f64>,
+    /// Transition rows to its end and to its three Gauss nodes.
+    phi: [Vec<f64>; 4],
+    /// Each integrated quantity whose rate is not 0, with its form's integral over the interval.
+    integrals: Vec<(usize, Vec<f64>)>,
+}
+
+/// How far the cubic Hermite of each displacement through the ends of a whole interval may miss the exact
+/// motion at the interval's Gauss nodes, relative to what the displacement can reach: the screens of events
+/// and peaks read the Hermite within 1 %; a step that misses by more is stepped instead (fast modes still
+/// ringing in it).
+const HERMITE_MISS: f64 = 1e-3;
+/// Most pieces of a whole interval: beyond (a stiff column, a very stiff contact spring) the chain of pieces
+/// that events and peaks are read on costs more than the Runge–Kutta stepper's stiff stretches.
+const MAX_PIECES: usize = 32;
+/// Fewest pieces of a whole interval: with fewer, the Runge–Kutta stepper takes about as few steps as
+/// that, each cheaper than a whole interval's (three rows of three buildings, 4 pieces, ran 8 % slower
+/// whole; two of 3 and 8 storeys, 4 pieces, the same; a pair on soil, 16 pieces, 1.2 to 1.3 times faster).
+const MIN_PIECES: usize = 8;
+/// Largest `w` taken a whole interval at a time: its transitions and forms are built in `nw^3` (a plan of
+/// four storeys, `nw` = 60, built them for each of its bilinear branches at a loss of 3 times).
+const MAX_WHOLE_DIM: usize = 40;
+/// Whole intervals a configuration is met in before its transitions and forms are built (they cost about
+/// as much as that many intervals stepped): a bilinear branch that lasts a few intervals is stepped.
+const WHOLE_AFTER: usize = 8;
+
 #[derive(Debug)]
 struct Configuration {
     key: Vec<u64>,
@@ -55,6 +96,38 @@ struct Configuration {
     offsets: Vec<(f64, Vec<f64>)>,
     /// Offsets asked without rows, with how many times: built into [`Self::offsets`] after [`BUILD_AFTER`].
     asked: Vec<(f64, usize)>,
+    /// For a configuration too costly in series-length steps: the rates of its integrated quantities as
+    /// forms (`None`: a law cannot give them, or a contact is closed), and the whole interval once built.
+    forms: Option<Vec<(usize, Vec<f64>)>>,
+    whole: Option<Whole>,
+    /// Whole intervals taken, and left to the stepper for their Hermite misses ([`HERMITE_MISS`]): a
+    /// configuration whose fast modes ring (lightly damped) misses nearly always, and stops trying.
+    taken: usize,
+    missed: usize,
+    /// Whole intervals met before [`Self::whole`] was built ([`WHOLE_AFTER`]).
+    met: usize,
+}
+
+/// The whole interval of length `h` of configuration `c` (with its forms).
+fn build_whole(c: &Configuration, nw: usize, mech: usize, h: f64) -> Whole {
+    use crate::integrate::{form_integrals, halvings, transition_rows};
+    let pieces = 1usize << halvings(c.r * h);
+    let piece = h / pieces as f64;
+    let forms = c.forms.as_deref().unwrap_or_default();
+    let qs: Vec<&[f64]> = forms.iter().map(|(_, q)| q.as_slice()).collect();
+    let gs = form_integrals(&c.m, nw, mech, (h, c.r), &qs);
+    Whole {
+        h,
+        pieces,
+        piece_rows: transition(&c.m, nw, mech, piece),
+        phi: [
+            transition_rows(&c.m, nw, mech, h, c.r),
+            transition_rows(&c.m, nw, mech, GAUSS_NODES[0] * h, c.r),
+            transition_rows(&c.m, nw, mech, GAUSS_NODES[1] * h, c.r),
+            transition_rows(&c.m, nw, mech, GAUSS_NODES[2] * h, c.r),
+        ],
+        integrals: forms.iter().map(|(k, _)| *k).zip(gs).collect(),
+    }
 }
 
 impl Configuration {
@@ -89,7 +162,8 @@ impl Configuration {
             return None;
         }
         let (tau, _) = self.asked.swap_remove(i);
-        self.offsets.push((tau, transition(&self.m, nw, mech, tau)));
+        let rows = crate::integrate::transition_rows(&self.m, nw, mech, tau, self.r);
+        self.offsets.push((tau, rows));
         Some(self.offsets.len() - 1)
     }
 }
@@ -119,6 +193,18 @@ pub struct Exact {
     dense_config: Option<usize>,
     steps: usize,
     last: f64,
+    /// The current configuration takes whole record intervals ([`Whole`]) and leaves the rest to the
+    /// Runge–Kutta stepper.
+    whole: bool,
+    /// Each integrated quantity's growth over a whole interval.
+    inc: Vec<f64>,
+    /// What each degree of freedom's displacement can reach, m or rad (its absolute tolerance over the
+    /// relative one): the size a Hermite miss is measured against.
+    scale: Vec<f64>,
+    /// The components of `w` that are not 0.
+    live: Vec<usize>,
+    /// The state and its rate before a whole interval, to return to if it is stepped instead.
+    before: (Vec<f64>, Vec<f64>),
     /// The record's time step, s (the shortest of supports' records; infinite under a constant
     /// acceleration).
     interval: f64,
@@ -127,14 +213,22 @@ pub struct Exact {
 }
 
 impl Exact {
-    /// A stepper for `sys`, or `None` when its `w` is too large to pay ([`MAX_EXACT_DIM`]).
-    pub fn new(sys: &System) -> Option<Self> {
+    /// A stepper for `sys`, or `None` when its `w` is too large to pay ([`MAX_EXACT_DIM`]); `tol` is the
+    /// run's (the sizes of its motion).
+    pub fn new(sys: &System, tol: &Tolerance) -> Option<Self> {
         let nw = sys.linear_dim();
         if nw > MAX_EXACT_DIM {
             return None;
         }
         let dim = sys.dim();
         let mech = 2 * sys.layout().dofs();
+        let scale: Vec<f64> = (0..mech / 2)
+            .map(|i| {
+                tol.atol
+                    .get(i)
+                    .map_or(0.0, |a| a / tol.rtol.max(f64::MIN_POSITIVE))
+            })
+            .collect();
         Some(Self {
             configs: Vec::new(),
             current: 0,
@@ -163,6 +257,11 @@ impl Exact {
                 super::Ground::Constant(_) => f64::INFINITY,
             },
             lines: vec![0.0; sys.forcing_dim()],
+            whole: false,
+            inc: vec![0.0; dim - mech],
+            scale,
+            live: Vec::with_capacity(nw),
+            before: (vec![0.0; dim], vec![0.0; dim]),
         })
     }
 
@@ -175,15 +274,33 @@ impl Exact {
             Some(i) => i,
             None => {
                 let m = sys.linear_matrix();
+                let r = step_bound(&m, self.nw, sys.layout().dofs());
+                // A closed contact's motion is read as one series per step by the impact recorders: no
+                // whole intervals then.
+                let closed = sys.elements().iter().any(|el| {
+                    el.law.as_contact().is_some()
+                        && el.affine().is_none_or(|a| a.k != 0.0 || a.c != 0.0)
+                });
                 let config = Configuration {
                     key: self.key.clone(),
-                    r: step_bound(&m, self.nw, sys.layout().dofs()),
+                    forms: (self.fine_work(r) > MAX_INTERVAL_WORK
+                        && !closed
+                        && self.nw <= MAX_WHOLE_DIM
+                        && (MIN_PIECES..=MAX_PIECES)
+                            .contains(&(1usize << halvings(r * self.interval))))
+                    .then(|| sys.rate_forms())
+                    .flatten(),
+                    r,
                     m,
                     lengths: Vec::new(),
                     seen: (f64::NAN, 0),
                     uses: 0,
                     offsets: Vec::new(),
                     asked: Vec::with_capacity(OFFSETS),
+                    whole: None,
+                    taken: 0,
+                    missed: 0,
+                    met: 0,
                 };
                 if self.configs.len() < KEPT {
                     self.configs.push(config);
@@ -200,14 +317,26 @@ impl Exact {
                 }
             }
         };
-        let steps = (self.configs[self.current].r * self.interval / MAX_RHO).ceil();
-        if steps * (self.mech * self.nw) as f64 > MAX_INTERVAL_WORK {
+        self.whole = self.fine_work(self.configs[self.current].r) > MAX_INTERVAL_WORK;
+        let c = &self.configs[self.current];
+        if self.whole && (c.forms.is_none() || (c.missed >= 8 && c.missed > c.taken)) {
             return false;
         }
         self.t = t0;
         self.y.copy_from_slice(y0);
         sys.rhs(t0, y0, &mut self.dydt);
         true
+    }
+
+    /// The work of a record interval in series-length steps for a configuration of step bound `r` (1/s):
+    /// see [`MAX_INTERVAL_WORK`].
+    fn fine_work(&self, r: f64) -> f64 {
+        (r * self.interval / MAX_RHO).ceil() * (self.mech * self.nw) as f64
+    }
+
+    /// Whether `[t, t_stop]` is a whole record interval.
+    pub fn is_interval(&self, t: f64, t_stop: f64) -> bool {
+        (t_stop - t - self.interval).abs() <= 1e-9 * self.interval
     }
 
     /// Current time, s.
@@ -244,9 +373,24 @@ impl Exact {
     }
 
     /// Takes one exact step towards `t_stop` (never past it). The ground's acceleration must be linear on
-    /// `[t, t_stop]` (the driver stops at its kinks).
-    pub fn step_until(&mut self, sys: &System, t_stop: f64) {
-        let h = self.length(t_stop);
+    /// `[t, t_stop]` (the driver stops at its kinks). `false`, with nothing done, when the configuration
+    /// takes whole record intervals only ([`Whole`]) and `[t, t_stop]` is not one, or when the Hermite
+    /// screens would misread it ([`HERMITE_MISS`]): the Runge–Kutta stepper takes it then.
+    pub fn step_until(&mut self, sys: &System, t_stop: f64) -> bool {
+        let whole = self.whole;
+        let h = if whole {
+            if !self.is_interval(self.t, t_stop) {
+                return false;
+            }
+            let c = &mut self.configs[self.current];
+            if c.whole.is_none() && c.met < WHOLE_AFTER {
+                c.met += 1;
+                return false;
+            }
+            t_stop - self.t
+        } else {
+            self.length(t_stop)
+        };
         let t0 = self.t;
         self.configs[self.current].uses += 1;
         // Each ground channel's acceleration on the interval, read inside it (a record's end is a jump).
@@ -258,7 +402,13 @@ impl Exact {
             line.copy_from_slice(&[ga - slope * (ta - t0), slope]);
         }
         sys.linear_state(&self.y, &self.lines, &self.f0, &mut self.w);
-        self.propagate(h);
+        if whole {
+            self.propagate_whole(h);
+            self.before.0.copy_from_slice(&self.y);
+            self.before.1.copy_from_slice(&self.dydt);
+        } else {
+            self.propagate(h);
+        }
         self.last = h;
         let t1 = if (t_stop - (t0 + h)).abs() <= 1e-12 * h {
             t_stop
@@ -266,7 +416,72 @@ impl Exact {
             t0 + h
         };
         self.finish(sys, t0, h, t1);
+        if whole && !self.hermite_holds(h) {
+            self.configs[self.current].missed += 1;
+            self.y.copy_from_slice(&self.before.0);
+            self.dydt.copy_from_slice(&self.before.1);
+            self.t = t0;
+            return false;
+        }
+        if whole {
+            self.configs[self.current].taken += 1;
+        }
         self.steps += 1;
+        true
+    }
+
+    /// `wn` (as [`Self::propagate`]) and [`Self::inc`] over a whole record interval of length `h`.
+    fn propagate_whole(&mut self, h: f64) {
+        let (nw, mech) = (self.nw, self.mech);
+        let c = &mut self.configs[self.current];
+        if c.whole.as_ref().is_none_or(|w| (w.h - h).abs() > 1e-9 * h) {
+            c.whole = Some(build_whole(c, nw, mech, h));
+        }
+        let whole = c.whole.as_ref().expect("built above");
+        // Over the components of w that are not 0 (constant forces of linear laws, a ground channel the
+        // record does not have).
+        live_of(&self.w, &mut self.live);
+        let (w, live) = (&self.w, &self.live);
+        for (p, out) in whole.phi.iter().zip(self.wn.iter_mut()) {
+            mat_vec_on(p, w, live, &mut out[..mech]);
+        }
+        self.inc.fill(0.0);
+        for (k, g) in &whole.integrals {
+            self.inc[*k] = live
+                .iter()
+                .map(|&i| {
+                    let row = &g[i * nw..(i + 1) * nw];
+                    w[i] * live.iter().map(|&j| row[j] * w[j]).sum::<f64>()
+                })
+                .sum();
+        }
+    }
+
+    /// Whether the cubic Hermite (values and rates at the ends) of each displacement meets the exact motion
+    /// at the step's Gauss nodes within [`HERMITE_MISS`] of its size (what it can reach, [`Self::scale`], or
+    /// more): what the screens of events and peaks read. An element's deformation, a combination of
+    /// displacements, then misses by at most the same fraction of what it can reach. (Accelerations, where a
+    /// foundation's fast modes ring after each kink of the record, are not checked: their peaks are
+    /// screened on their own cubic through the jerks, and read at the Gauss nodes as well.)
+    fn hermite_holds(&self, h: f64) -> bool {
+        let Some(motion) = self.dense.motion() else {
+            return true;
+        };
+        let holds = |value: &dyn Fn(&[f64]) -> (f64, f64), scale: f64| {
+            let ((a, ra), (b, rb)) = (value(&motion.w0), value(&self.wn[0]));
+            let p = crate::integrate::Hermite::new(a, b, ra, rb, h);
+            let mut size = scale.max(a.abs()).max(b.abs());
+            let mut worst = 0.0f64;
+            for (j, node) in GAUSS_NODES.iter().enumerate() {
+                let exact = value(&self.wn[j + 1]).0;
+                size = size.max(exact.abs());
+                worst = worst.max((p.at(*node) - exact).abs());
+            }
+            worst <= HERMITE_MISS * size
+        };
+        let n = self.mech / 2;
+        let scale = &self.scale;
+        (0..n).all(|i| holds(&|y| (y[i], y[n + i]), scale[i]))
     }
 
     /// `wn[0]` = `w` at the end of a step of length `h`, `wn[1..4]` at its Gauss nodes.
@@ -299,8 +514,9 @@ impl Exact {
         });
         match found {
             Some(i) => {
+                live_of(&self.w, &mut self.live);
                 for (p, out) in c.lengths[i].phi.iter().zip(self.wn.iter_mut()) {
-                    mat_vec(p, &self.w, &mut out[..mech]);
+                    mat_vec_on(p, &self.w, &self.live, &mut out[..mech]);
                 }
             }
             None => {
@@ -346,16 +562,21 @@ impl Exact {
         *dt0 = t0;
         *dh = h;
         if !same_matrix {
-            motion.m.copy_from_slice(&self.configs[motion_config].m);
+            motion.set_matrix(&self.configs[motion_config].m);
             motion.clear_offsets();
             for (tau, phi) in &self.configs[motion_config].offsets {
                 motion.add_offset(*tau, phi);
             }
         }
-        motion.w0.copy_from_slice(&self.w);
+        motion.set_start(&self.w);
         motion.acc0.copy_from_slice(&self.y[mech..]);
         motion.rates[0].copy_from_slice(&self.dydt);
-        motion.terms = crate::integrate::terms_for(self.configs[motion_config].r * h);
+        let whole = self.configs[motion_config]
+            .whole
+            .as_ref()
+            .filter(|_| self.whole);
+        let piece = whole.map_or(h, |w| w.h / w.pieces as f64);
+        motion.terms = crate::integrate::terms_for(self.configs[motion_config].r * piece);
         motion.invalidate();
         self.dense_config = Some(motion_config);
         motion.w1.copy_from_slice(&self.wn[0][..mech]);
@@ -371,11 +592,28 @@ impl Exact {
             );
             motion.rates[j + 1].copy_from_slice(&self.dynode);
         }
-        for k in 0..acc {
-            let inc: f64 = (0..3)
-                .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
-                .sum();
-            self.y[mech + k] += h * inc;
+        match whole {
+            Some(w) => {
+                for (y, inc) in self.y[mech..].iter_mut().zip(&self.inc) {
+                    *y += inc;
+                }
+                motion.chained(
+                    w.pieces,
+                    piece,
+                    &w.piece_rows,
+                    !same_matrix,
+                    &self.y[mech..],
+                );
+            }
+            None => {
+                for k in 0..acc {
+                    let inc: f64 = (0..3)
+                        .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
+                        .sum();
+                    self.y[mech + k] += h * inc;
+                }
+                motion.single();
+            }
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;
@@ -398,7 +636,8 @@ impl Exact {
     }
 
     /// The state at `t` inside the last step, its integrated quantities by three-point Gauss–Legendre
-    /// along the exact motion from the step's start (what an event carries on with).
+    /// along the exact motion from the step's start, piece by piece on a whole interval taken at once
+    /// (what an event carries on with).
     pub fn state_at(&mut self, sys: &System, t: f64, out: &mut [f64]) {
         let mech = self.mech;
         let Some(motion) = self.dense.motion() else {
@@ -406,19 +645,23 @@ impl Exact {
         };
         let t0 = self.dense.t0();
         let tau = t - t0;
-        let nw = self.nw;
-        motion.with_series(|c| {
-            self.scratch.copy_from_slice(&self.y);
-            for (i, o) in out[..mech].iter_mut().enumerate() {
-                *o = crate::integrate::series_at(c, nw, i, tau, motion.terms);
-            }
-            let acc = out.len() - mech;
-            out[mech..].copy_from_slice(&motion.acc0);
+        motion.on_series(tau, &mut out[..mech]);
+        self.scratch.copy_from_slice(&self.y);
+        let acc = out.len() - mech;
+        out[mech..].copy_from_slice(&motion.acc0);
+        let (pieces, piece) = match motion.pieces() {
+            1 => (1, tau),
+            _ => (
+                (tau / motion.piece()).ceil().max(1.0) as usize,
+                motion.piece(),
+            ),
+        };
+        for p in 0..pieces {
+            let a = p as f64 * piece;
+            let len = (tau - a).min(piece);
             for (j, node) in GAUSS_NODES.iter().enumerate() {
-                let s = node * tau;
-                for (i, x) in self.scratch[..mech].iter_mut().enumerate() {
-                    *x = crate::integrate::series_at(c, nw, i, s, motion.terms);
-                }
+                let s = a + node * len;
+                motion.on_series(s, &mut self.scratch[..mech]);
                 sys.rhs_in(
                     t0 + s,
                     forcing(&motion.w0, mech, s),
@@ -426,9 +669,9 @@ impl Exact {
                     &mut self.dynode,
                 );
                 for k in 0..acc {
-                    out[mech + k] += tau * GAUSS_WEIGHTS[j] * self.dynode[mech + k];
+                    out[mech + k] += len * GAUSS_WEIGHTS[j] * self.dynode[mech + k];
                 }
             }
-        });
+        }
     }
 }

@@ -1,6 +1,6 @@
 //! The motion of a [`System`] while every law is affine, as one linear system `w' = M w`.
 //!
-//! `w = [u (n), v (n), (g_c, s_c) per ground channel, f0 (one per element)]`: displacements and velocities of
+//! `w = [u (n), v (n), (g_c, s_c) per ground channel, f0 (one per element whose law may have one)]`: displacements and velocities of
 //! the degrees of freedom, each ground channel's acceleration (m/s^2) and its slope (m/s^3) on the current
 //! interval between the ground's kinks (so `g' = s`, `s' = 0`), and each element's constant force `f0` (N,
 //! `f0' = 0`). The channels are x and y for one record or two on one grid ([`Ground::Record`],
@@ -44,20 +44,30 @@ impl System<'_> {
     pub(crate) fn linear_now(&self, key: &mut Vec<u64>, f0: &mut Vec<f64>) -> bool {
         key.clear();
         f0.clear();
-        for el in &self.elements {
+        for (el, constant) in self.elements.iter().zip(&self.constants) {
             let Some(a) = el.affine() else {
                 return false;
             };
             key.push(a.k.to_bits());
             key.push(a.c.to_bits());
-            f0.push(a.f0);
+            match constant {
+                Some(_) => f0.push(a.f0),
+                // A law that said it has no constant force, and has one: not propagated exactly.
+                None if a.f0 != 0.0 => return false,
+                None => {}
+            }
         }
         true
     }
 
     /// The number of components of `w`.
     pub(crate) fn linear_dim(&self) -> usize {
-        2 * self.layout.dofs() + self.forcing_dim() + self.elements.len()
+        2 * self.layout.dofs() + self.forcing_dim() + self.constants.iter().flatten().count()
+    }
+
+    /// The component of `w` that holds element `e`'s constant force, if it has one.
+    pub(crate) fn constant_in(&self, e: usize) -> Option<usize> {
+        self.constants[e].map(|c| 2 * self.layout.dofs() + self.forcing_dim() + c)
     }
 
     /// The components of `w` that carry the ground channels (two per channel).
@@ -122,7 +132,9 @@ impl System<'_> {
                     m[row + j] -= ci * cj * a.k * inv;
                     m[row + n + j] -= ci * cj * a.c * inv;
                 }
-                m[row + 2 * n + fd + e] -= ci * inv;
+                if let Some(c) = self.constant_in(e) {
+                    m[row + c] -= ci * inv;
+                }
             }
         }
         m

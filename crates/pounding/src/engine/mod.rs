@@ -14,6 +14,7 @@
 
 mod driver;
 mod exact;
+mod forms;
 mod layout;
 mod linear;
 mod observe;
@@ -178,6 +179,9 @@ pub struct System<'a> {
     /// The driven degrees of freedom.
     driven: Vec<usize>,
     elements: Vec<Element>,
+    /// Each element's constant force's place among the constant forces of `w` ([`linear`]), if its law
+    /// has one ([`crate::element::ElementLaw::constant_force`]).
+    constants: Vec<Option<usize>>,
     layout: Layout,
     ground: Ground<'a>,
 }
@@ -216,6 +220,17 @@ impl<'a> System<'a> {
                 .collect(),
             axes: dofs.iter().map(|d| d.axis).collect(),
             driven: (0..dofs.len()).filter(|&i| driven(&dofs[i])).collect(),
+            constants: elements
+                .iter()
+                .scan(0, |count, el| {
+                    Some(
+                        crate::element::ElementLaw::constant_force(&el.law).then(|| {
+                            *count += 1;
+                            *count - 1
+                        }),
+                    )
+                })
+                .collect(),
             elements,
             layout,
             ground,

@@ -31,23 +31,29 @@ pub(super) struct Propagator {
     dp: Stepper,
     exact: Option<Exact>,
     on_exact: bool,
+    /// The exact stepper left a stretch to the Runge–Kutta stepper (not a whole record interval, in a
+    /// configuration that takes only those): it takes over again at the next whole one.
+    retry: bool,
 }
 
 impl Propagator {
     pub fn new(sys: &System, tol: Tolerance, how: Propagation) -> Self {
+        let exact = match how {
+            Propagation::Exact => Exact::new(sys, &tol),
+            Propagation::Stepping => None,
+        };
         Self {
             dp: Stepper::new(tol),
-            exact: match how {
-                Propagation::Exact => Exact::new(sys),
-                Propagation::Stepping => None,
-            },
+            exact,
             on_exact: false,
+            retry: false,
         }
     }
 
     /// (Re)starts at `(t0, y0)`: exactly if the laws allow it now, else with trial step `h0`.
     pub fn reset(&mut self, sys: &System, t0: f64, y0: &[f64], h0: f64) {
         self.on_exact = self.exact.as_mut().is_some_and(|e| e.reset(sys, t0, y0));
+        self.retry = false;
         if !self.on_exact {
             self.dp.reset(sys, t0, y0, h0);
         }
@@ -78,13 +84,34 @@ impl Propagator {
 
     /// One step that never passes `t_stop`.
     pub fn step_until(&mut self, sys: &System, t_stop: f64) -> Result<(), Error> {
-        match (&mut self.exact, self.on_exact) {
-            (Some(e), true) => {
-                e.step_until(sys, t_stop);
-                Ok(())
+        let Some(e) = self.exact.as_mut() else {
+            return self.dp.step_until(sys, t_stop);
+        };
+        if self.on_exact {
+            if e.step_until(sys, t_stop) {
+                return Ok(());
             }
-            _ => self.dp.step_until(sys, t_stop),
+            // Left to the Runge–Kutta stepper, from where the exact one stands.
+            self.on_exact = false;
+            self.retry = true;
+            // A trial step of a few per interval: the last one (an impact's) may be far shorter than what
+            // the free motion needs.
+            let span = t_stop - e.t();
+            let h0 = match self.dp.h() {
+                h if h > 0.0 && h.is_finite() => h.max(span / 8.0).min(span),
+                _ => span / 8.0,
+            };
+            self.dp.reset(sys, e.t(), e.y(), h0);
+        } else if self.retry
+            && e.is_interval(self.dp.t(), t_stop)
+            && e.reset(sys, self.dp.t(), self.dp.y())
+            && e.step_until(sys, t_stop)
+        {
+            // Back on the exact stepper at a whole interval; else the Runge–Kutta one goes on.
+            self.on_exact = true;
+            return Ok(());
         }
+        self.dp.step_until(sys, t_stop)
     }
 
     /// The state at `t` inside the last step (an event's).

@@ -54,6 +54,22 @@ pub fn mat_vec(a: &[f64], x: &[f64], y: &mut [f64]) {
     }
 }
 
+/// `y = A x` for a row-major `A` of `x.len()` columns, over the columns in `live` only (the others' `x`
+/// being 0).
+#[inline]
+pub fn mat_vec_on(a: &[f64], x: &[f64], live: &[usize], y: &mut [f64]) {
+    let n = x.len();
+    for (row, yi) in a.chunks_exact(n).zip(y.iter_mut()) {
+        *yi = live.iter().map(|&j| row[j] * x[j]).sum();
+    }
+}
+
+/// The components of `x` that are not 0, written to `live`.
+pub fn live_of(x: &[f64], live: &mut Vec<usize>) {
+    live.clear();
+    live.extend((0..x.len()).filter(|&j| x[j] != 0.0));
+}
+
 /// A bound `r` (1/s) on the rate at which the motion of `w' = M w` changes, for a state laid out as
 /// `[u (n), v (n), forcing...]`: `sqrt(max_i sum_j |M[v_i][u_j]|) + max_i sum_j |M[v_i][v_j]|`, the
 /// infinity norm of `M` once each displacement is weighted by the first term (the largest frequency by
@@ -181,9 +197,33 @@ pub struct Motion {
     /// how many times: what the stepper may build slots for.
     asked: RefCell<Vec<(f64, usize)>>,
     series: RefCell<Vec<f64>>,
-    built: Cell<bool>,
+    /// The piece whose series [`Self::series`] holds (`usize::MAX`: none).
+    series_of: Cell<usize>,
     acc_poly: RefCell<Vec<[f64; 5]>>,
     acc_built: Cell<bool>,
+    /// Pieces of the step: 1, or more for a whole record interval taken at once ([`Self::chain`]).
+    pieces: usize,
+    /// Length of a piece, s.
+    piece: f64,
+    /// Transition rows over one piece (`mech x nw`).
+    piece_rows: Vec<f64>,
+    /// The motion at the start of pieces 1, 2, ... (`mech` each), found on demand from the one before.
+    chain: RefCell<Vec<f64>>,
+    /// Pieces whose start is known (piece 0's is `w0`).
+    chained: Cell<usize>,
+    /// `w` at the start of the piece being read.
+    piece_w: RefCell<Vec<f64>>,
+    /// The rates of `w` past the motion (the forcing's slopes; 0 for constant forces).
+    forcing_rate: RefCell<Vec<f64>>,
+    /// The integrated quantities at the step's end, when the step gave them exactly (a whole interval):
+    /// what the quartics are bent to meet.
+    acc1: Option<Vec<f64>>,
+    /// The nonzero entries of `m` row by row (column, value), and where each row ends: the series in
+    /// `nnz` multiply-adds per term instead of `nw^2` (set by [`Self::set_matrix`]; empty, `m` is read).
+    nonzeros: Vec<(usize, f64)>,
+    row_ends: Vec<usize>,
+    /// The components of `w0` that are not 0 ([`Self::set_start`]).
+    live: Vec<usize>,
 }
 
 impl Motion {
@@ -203,16 +243,104 @@ impl Motion {
             offset_count: 0,
             asked: RefCell::new(Vec::with_capacity(OFFSETS)),
             series: RefCell::new(vec![0.0; TERMS * nw]),
-            built: Cell::new(false),
+            series_of: Cell::new(usize::MAX),
             acc_poly: RefCell::new(vec![[0.0; 5]; acc]),
             acc_built: Cell::new(false),
+            pieces: 1,
+            piece: 0.0,
+            piece_rows: Vec::new(),
+            chain: RefCell::new(Vec::new()),
+            chained: Cell::new(1),
+            piece_w: RefCell::new(vec![0.0; nw]),
+            forcing_rate: RefCell::new(vec![0.0; nw - mech]),
+            acc1: None,
+            nonzeros: Vec::new(),
+            row_ends: Vec::new(),
+            live: (0..nw).collect(),
+        }
+    }
+
+    /// Sets `w` at the step's start.
+    pub fn set_start(&mut self, w0: &[f64]) {
+        self.w0.copy_from_slice(w0);
+        live_of(&self.w0, &mut self.live);
+    }
+
+    /// Sets the system matrix (row-major `nw x nw`), keeping its nonzero entries for the series.
+    pub fn set_matrix(&mut self, m: &[f64]) {
+        self.m.copy_from_slice(m);
+        let nw = self.w0.len();
+        self.nonzeros.clear();
+        self.row_ends.clear();
+        for row in m.chunks_exact(nw) {
+            self.nonzeros.extend(
+                row.iter()
+                    .enumerate()
+                    .filter(|(_, x)| **x != 0.0)
+                    .map(|(j, x)| (j, *x)),
+            );
+            self.row_ends.push(self.nonzeros.len());
         }
     }
 
     /// Forgets the series (after `w0` or `m` changed).
     pub fn invalidate(&self) {
-        self.built.set(false);
+        self.series_of.set(usize::MAX);
+        self.chained.set(1);
         self.acc_built.set(false);
+    }
+
+    /// Makes the step one piece (an exact step within the series' reach).
+    pub fn single(&mut self) {
+        self.pieces = 1;
+        self.acc1 = None;
+    }
+
+    /// Makes the step `pieces` pieces of `piece` s each, the motion carried across each by `rows` (the
+    /// first `mech` rows of its transition; copied only when `fresh`, the matrix having changed), and the
+    /// integrated quantities at its end `acc1` (the quartics through the rates are bent to meet them).
+    pub fn chained(&mut self, pieces: usize, piece: f64, rows: &[f64], fresh: bool, acc1: &[f64]) {
+        let fresh = fresh || self.piece != piece;
+        self.pieces = pieces;
+        self.piece = piece;
+        if fresh || self.piece_rows.len() != rows.len() {
+            self.piece_rows.clear();
+            self.piece_rows.extend_from_slice(rows);
+        }
+        let need = pieces.saturating_sub(1) * self.mech;
+        let mut chain = self.chain.borrow_mut();
+        if chain.len() < need {
+            chain.resize(need, 0.0);
+        }
+        match &mut self.acc1 {
+            Some(a) => a.copy_from_slice(acc1),
+            None => self.acc1 = Some(acc1.to_vec()),
+        }
+    }
+
+    /// Pieces of the step (1 but for a whole interval taken at once).
+    pub fn pieces(&self) -> usize {
+        self.pieces
+    }
+
+    /// The piece holding `tau` and the offset into it, s.
+    #[inline]
+    fn locate(&self, tau: f64) -> (usize, f64) {
+        if self.pieces == 1 {
+            return (0, tau);
+        }
+        let k = ((tau / self.piece).max(0.0) as usize).min(self.pieces - 1);
+        (k, tau - k as f64 * self.piece)
+    }
+
+    /// `w` at `tau` into the step for its components past the motion (the forcing is linear in time, the
+    /// constant forces constant: `w_i + tau (M w)_i`, the rate `(M w)_i` kept in `rate`), written into
+    /// `out[mech..]`.
+    fn forcing_at(&self, tau: f64, rate: &[f64], out: &mut [f64]) {
+        let mech = self.mech;
+        for ((o, w), r) in out[mech..].iter_mut().zip(&self.w0[mech..]).zip(rate) {
+            *o = w + tau * r;
+        }
     }
 
     /// Forgets the offset slots (after `m` changed).
@@ -251,7 +379,7 @@ impl Motion {
             .iter()
             .find(|(t, _)| (t - tau).abs() <= slack)
         {
-            mat_vec(&phi[..out.len() * nw], &self.w0, out);
+            mat_vec_on(&phi[..out.len() * nw], &self.w0, &self.live, out);
         } else {
             if log {
                 let mut asked = self.asked.borrow_mut();
@@ -261,35 +389,153 @@ impl Motion {
                     asked.push((tau, 1));
                 }
             }
-            self.with_series(|c| {
+            self.with_piece(tau, |c, d| {
                 for (i, o) in out.iter_mut().enumerate() {
-                    *o = series_at(c, nw, i, tau, self.terms);
+                    *o = series_at(c, nw, i, d, self.terms);
                 }
             });
         }
     }
 
-    fn ensure(&self) {
-        if !self.built.get() {
-            let mut s = self.series.borrow_mut();
-            series(&self.m, self.mech, &self.w0, self.terms, &mut s);
-            // Rows past the step's terms stay 0 for readers of all of them.
-            let nw = self.w0.len();
-            s[self.terms * nw..].iter_mut().for_each(|x| *x = 0.0);
-            self.built.set(true);
+    /// `w[..out.len()]` at the start of piece `k`, along the chain (cheaper than a series: what a search
+    /// inside a whole interval narrows itself with first).
+    pub fn piece_start(&self, k: usize, out: &mut [f64]) {
+        let mech = self.mech;
+        if k > 0 && k < self.chained.get() && out.len() <= mech {
+            // Known: the motion is read off the chain as it stands.
+            out.copy_from_slice(&self.chain.borrow()[(k - 1) * mech..(k - 1) * mech + out.len()]);
+            return;
+        }
+        self.ensure_chain(k);
+        out.copy_from_slice(&self.piece_w.borrow()[..out.len()]);
+    }
+
+    /// The second rate of component `j` of `w` at the start of piece `k`.
+    pub fn second_rate_at(&self, k: usize, j: usize) -> f64 {
+        self.ensure_chain(k);
+        self.second_rate(&self.piece_w.borrow(), j)
+    }
+
+    /// The second rate of component `j` of `w` at `w` (`(M M w)_j`, on the nonzeros of `M`).
+    fn second_rate(&self, w: &[f64], j: usize) -> f64 {
+        let row = |i: usize| {
+            let start = if i == 0 { 0 } else { self.row_ends[i - 1] };
+            &self.nonzeros[start..self.row_ends[i]]
+        };
+        if self.row_ends.len() != w.len() {
+            let nw = w.len();
+            let rate = |c: usize| (0..nw).map(|d| self.m[c * nw + d] * w[d]).sum::<f64>();
+            return (0..nw).map(|c| self.m[j * nw + c] * rate(c)).sum();
+        }
+        row(j)
+            .iter()
+            .map(|&(c, a)| a * row(c).iter().map(|&(d, b)| b * w[d]).sum::<f64>())
+            .sum()
+    }
+
+    /// Sets [`Self::piece_w`] to `w` at the start of piece `k`, walking the chain as far as needed.
+    fn ensure_chain(&self, k: usize) {
+        let (nw, mech) = (self.w0.len(), self.mech);
+        let mut w = self.piece_w.borrow_mut();
+        w.copy_from_slice(&self.w0);
+        if k > 0 {
+            let mut rate = self.forcing_rate.borrow_mut();
+            if self.chained.get() == 1 {
+                // The forcing's rates, constant over the step: found with the chain's first link.
+                rate.resize(nw - mech, 0.0);
+                for (i, r) in rate.iter_mut().enumerate() {
+                    let row = &self.m[(mech + i) * nw + mech..(mech + i + 1) * nw];
+                    *r = row.iter().zip(&self.w0[mech..]).map(|(a, b)| a * b).sum();
+                }
+            }
+            let mut chain = self.chain.borrow_mut();
+            let mut known = self.chained.get();
+            while known <= k {
+                // The start of piece `known` from that of the one before.
+                let j = known - 1;
+                if j > 0 {
+                    w[..mech].copy_from_slice(&chain[(j - 1) * mech..j * mech]);
+                }
+                self.forcing_at(j as f64 * self.piece, &rate, &mut w);
+                mat_vec(
+                    &self.piece_rows,
+                    &w,
+                    &mut chain[(known - 1) * mech..known * mech],
+                );
+                known += 1;
+            }
+            self.chained.set(known);
+            w[..mech].copy_from_slice(&chain[(k - 1) * mech..k * mech]);
+            self.forcing_at(k as f64 * self.piece, &rate, &mut w);
         }
     }
 
-    /// The series coefficients of `w` (`TERMS x nw`).
+    /// Builds the series of piece `k` (from its start, found along the chain).
+    fn ensure(&self, k: usize) {
+        if self.series_of.get() == k {
+            return;
+        }
+        let (nw, mech) = (self.w0.len(), self.mech);
+        self.ensure_chain(k);
+        let w = self.piece_w.borrow();
+        let mut s = self.series.borrow_mut();
+        if self.row_ends.len() == nw {
+            // c_(k+1) = M c_k / (k + 1) on the nonzeros.
+            s[..nw].copy_from_slice(&w);
+            for k in 1..self.terms {
+                let (done, rest) = s.split_at_mut(k * nw);
+                let prev = &done[(k - 1) * nw..];
+                let f = 1.0 / k as f64;
+                let mut start = 0;
+                for (x, &end) in rest[..nw].iter_mut().zip(&self.row_ends) {
+                    *x = f * self.nonzeros[start..end]
+                        .iter()
+                        .map(|&(j, a)| a * prev[j])
+                        .sum::<f64>();
+                    start = end;
+                }
+            }
+        } else {
+            series(&self.m, mech, &w, self.terms, &mut s);
+        }
+        // Rows past the step's terms stay 0 for readers of all of them.
+        s[self.terms * nw..].iter_mut().for_each(|x| *x = 0.0);
+        self.series_of.set(k);
+    }
+
+    /// The series coefficients of `w` (`TERMS x nw`) on the step's first piece (the whole step but for a
+    /// whole interval taken at once, which is never taken while a contact is closed, where this is read).
     pub fn with_series<R>(&self, f: impl FnOnce(&[f64]) -> R) -> R {
-        self.ensure();
+        self.ensure(0);
         f(&self.series.borrow())
+    }
+
+    /// The series coefficients of the piece holding `tau`, and the offset into it.
+    fn with_piece<R>(&self, tau: f64, f: impl FnOnce(&[f64], f64) -> R) -> R {
+        let (k, d) = self.locate(tau);
+        self.ensure(k);
+        f(&self.series.borrow(), d)
+    }
+
+    /// The motion `w[..out.len()]` at `tau` on the series of its piece (no slot, no end taken as left).
+    pub fn on_series(&self, tau: f64, out: &mut [f64]) {
+        let nw = self.w0.len();
+        self.with_piece(tau, |c, d| {
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = series_at(c, nw, i, d, self.terms);
+            }
+        });
+    }
+
+    /// Length of a piece of the step, s (meaningful when [`Self::pieces`] is above 1).
+    pub fn piece(&self) -> f64 {
+        self.piece
     }
 
     /// Component `j` of `w` and its first and second rates at `tau`.
     pub fn w_at(&self, tau: f64, j: usize) -> [f64; 3] {
         let nw = self.w0.len();
-        self.with_series(|c| {
+        self.with_piece(tau, |c, tau| {
             let (mut p, mut d, mut dd) = (0.0, 0.0, 0.0);
             for k in (0..self.terms).rev() {
                 dd = dd * tau + 2.0 * d;
@@ -304,7 +550,7 @@ impl Motion {
     pub fn component(&self, tau: f64, h: f64, i: usize) -> f64 {
         if i < self.mech {
             let nw = self.w0.len();
-            self.with_series(|c| series_at(c, nw, i, tau, self.terms))
+            self.with_piece(tau, |c, d| series_at(c, nw, i, d, self.terms))
         } else {
             self.integrated(tau, h, i - self.mech)
         }
@@ -326,10 +572,18 @@ impl Motion {
         }
         let theta = tau / h;
         let c = self.acc_poly.borrow()[k];
-        let integral = (0..5)
-            .rev()
-            .fold(0.0, |acc, m| acc * theta + c[m] / (m + 1) as f64);
-        self.acc0[k] + tau * integral
+        let integral = |theta: f64| {
+            (0..5)
+                .rev()
+                .fold(0.0, |acc, m| acc * theta + c[m] / (m + 1) as f64)
+        };
+        let value = self.acc0[k] + tau * integral(theta);
+        match &self.acc1 {
+            // The quartic misses the fast modes of a whole interval by a little: its error at the end,
+            // known, is spread along the step so that the value meets the exact one there.
+            Some(acc1) => value + theta * (acc1[k] - self.acc0[k] - h * integral(1.0)),
+            None => value,
+        }
     }
 }
 
@@ -358,8 +612,20 @@ fn rate_quartic(rates: &[f64; 5]) -> [f64; 5] {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
+
+    /// `u'' + 2 zeta w u' + w^2 u = -g`, `g' = s`: `M` for `w = [u, v, g, s]`.
+    pub(in crate::integrate) fn oscillator(w: f64, zeta: f64) -> Vec<f64> {
+        #[rustfmt::skip]
+        let m = vec![
+            0.0, 1.0, 0.0, 0.0,
+            -w * w, -2.0 * zeta * w, -1.0, 0.0,
+            0.0, 0.0, 0.0, 1.0,
+            0.0, 0.0, 0.0, 0.0,
+        ];
+        m
+    }
 
     /// `u'' + 2 zeta w u' + w^2 u = -g(t)`, `g = g0 + s t`: the transition over `h` against the closed form of
     /// the free and forced motion.
@@ -425,13 +691,7 @@ mod tests {
     #[test]
     fn offset_rows_give_the_motion_of_the_series() {
         let (w, zeta) = (12.0f64, 0.05f64);
-        #[rustfmt::skip]
-        let m = vec![
-            0.0, 1.0, 0.0, 0.0,
-            -w * w, -2.0 * zeta * w, -1.0, 0.0,
-            0.0, 0.0, 0.0, 1.0,
-            0.0, 0.0, 0.0, 0.0,
-        ];
+        let m = oscillator(w, zeta);
         let h = MAX_RHO / step_bound(&m, 4, 1);
         let mut motion = Motion::new(2, 4, 0);
         motion.m.copy_from_slice(&m);
@@ -478,5 +738,53 @@ mod tests {
             let got = m.component(th * h, h, 2);
             assert!((got - exact).abs() < 1e-13 * exact, "{got} vs {exact}");
         }
+    }
+
+    /// A whole interval read piece by piece: the motion anywhere inside it, from the chain of pieces and
+    /// each piece's series, is `exp(M tau) w0` (scaling and squaring) to rounding; the pieces' starts and
+    /// the second rate there agree with it too.
+    #[test]
+    fn a_chained_step_is_the_exponential_anywhere_inside() {
+        let (w, zeta, h) = (300.0f64, 0.4f64, 0.02f64);
+        let m = oscillator(w, zeta);
+        let r = step_bound(&m, 4, 1);
+        let pieces = 1usize << super::super::halvings(r * h);
+        assert!(pieces >= 16);
+        let piece = h / pieces as f64;
+        let w0 = [0.01, -0.2, 1.5, -30.0];
+        let mut motion = Motion::new(2, 4, 0);
+        motion.set_matrix(&m);
+        motion.set_start(&w0);
+        motion.terms = terms_for(r * piece);
+        motion.chained(pieces, piece, &transition(&m, 4, 2, piece), true, &[]);
+        motion.invalidate();
+        let scale = 0.01 + 0.2 * h;
+        for tau in [0.3 * piece, 3.7 * piece, 0.55 * h, 0.999 * h] {
+            let e = super::super::exponential(&m, 4, 2, tau, r);
+            let mut want = [0.0; 2];
+            mat_vec(&e[..8], &w0, &mut want);
+            let mut got = [0.0; 2];
+            motion.on_series(tau, &mut got);
+            assert!(
+                (got[0] - want[0]).abs() < 1e-13 * scale,
+                "{tau}: {got:?} vs {want:?}"
+            );
+            assert!(
+                (got[1] - want[1]).abs() < 1e-13 * scale * w,
+                "{tau}: {got:?} vs {want:?}"
+            );
+            // The acceleration's rate: d/dt of (M w)_1 through the series, against the second rate there.
+            let [_, a, _] = motion.w_at(tau, 0);
+            assert!((a - got[1]).abs() < 1e-12 * scale * w);
+        }
+        let k = pieces / 2 + 1;
+        let mut start = [0.0; 2];
+        motion.piece_start(k, &mut start);
+        let e = super::super::exponential(&m, 4, 2, k as f64 * piece, r);
+        let mut want = [0.0; 2];
+        mat_vec(&e[..8], &w0, &mut want);
+        assert!((start[0] - want[0]).abs() < 1e-13 * scale);
+        let jerk = motion.w_at(k as f64 * piece, 1)[2];
+        assert!((motion.second_rate_at(k, 1) - jerk).abs() < 1e-9 * jerk.abs().max(1.0));
     }
 }

@@ -10,6 +10,7 @@
 //! Units follow the system being integrated; the stepper is unit-agnostic.
 
 mod exact;
+mod interval;
 pub(crate) mod lu;
 mod peaks;
 mod roots;
@@ -17,9 +18,10 @@ mod rosenbrock;
 mod switching;
 
 pub use exact::{
-    mat_vec, series, series_at, step_bound, terms_for, transition, Motion, GAUSS_NODES,
-    GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
+    live_of, mat_vec, mat_vec_on, series, series_at, step_bound, terms_for, transition, Motion,
+    GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
+pub use interval::{exponential, form_integrals, halvings, transition_rows};
 pub use peaks::{hermite_peak, Hermite, PeakTracker, Piece};
 pub use roots::{brent_root, golden_max};
 pub use rosenbrock::Rosenbrock;

@@ -103,6 +103,26 @@ fn a_storey_on_soil_is_its_three_equations() {
             );
             let f = resp.foundation.as_ref().unwrap();
             assert!(f.peak_sway > 0.0 && f.peak_rocking > 0.0);
+            if vs == 100.0 {
+                // Its foundation's fast modes would split each interval into many series-length steps; past
+                // the first 8 intervals (met before the interval's matrices are built) each of the 200 is
+                // one step (`engine/exact.rs`, `Whole`), its peaks located inside on the chain of pieces,
+                // and still within 1e-7 of the reference at 1e-10.
+                let first = s
+                    .clone()
+                    .with_duration(0.16)
+                    .unwrap()
+                    .run()
+                    .unwrap()
+                    .statistics
+                    .steps;
+                // (The first 0.16 s run alone, stepped from rest, bounds what those 8 intervals took.)
+                assert!(
+                    r.statistics.steps <= first + 192,
+                    "V_s {vs}, tol {tol}: {} steps, {first} in the first 0.16 s alone",
+                    r.statistics.steps
+                );
+            }
             assert!(
                 r.energy.relative_error < 1e-6,
                 "{}",
@@ -183,6 +203,51 @@ fn a_pair_on_soil_pounding_balances_its_energy() {
         r.energy.relative_error < 1e-6,
         "{}",
         r.energy.relative_error
+    );
+    // The foundations' fast modes would split each record interval into 15 series-length steps: the open
+    // stretches go a whole interval at a time (`engine/exact.rs`, `Whole`), the impacts and the rest of an
+    // interval after one are stepped. The same run stepped throughout: the same impacts, peaks and forces
+    // within the tolerance's reach (1e-5), and fewer than half the steps.
+    let stepped = s
+        .clone()
+        .with_propagation(pounding::engine::Propagation::Stepping)
+        .run()
+        .unwrap();
+    assert_eq!(r.impacts.len(), stepped.impacts.len());
+    for (a, b) in r.buildings.iter().zip(&stepped.buildings) {
+        let pairs = a
+            .peak_displacement
+            .iter()
+            .zip(&b.peak_displacement)
+            .chain(a.peak_drift.iter().zip(&b.peak_drift))
+            .chain(
+                a.peak_absolute_acceleration
+                    .iter()
+                    .zip(&b.peak_absolute_acceleration),
+            );
+        for (x, y) in pairs {
+            assert!((x - y).abs() <= 1e-5 * y, "{} vs {}", x, y);
+        }
+        let (fa, fb) = (
+            a.foundation.as_ref().unwrap(),
+            b.foundation.as_ref().unwrap(),
+        );
+        for (x, y) in [
+            (fa.peak_sway, fb.peak_sway),
+            (fa.peak_rocking, fb.peak_rocking),
+        ] {
+            assert!((x - y).abs() <= 1e-5 * y, "{} vs {}", x, y);
+        }
+    }
+    for (a, b) in r.impacts.iter().zip(&stepped.impacts) {
+        assert!((a.peak_force - b.peak_force).abs() <= 1e-5 * b.peak_force);
+        assert!((a.time - b.time).abs() < 1e-5);
+    }
+    assert!(
+        2 * r.statistics.steps < stepped.statistics.steps,
+        "{} vs {}",
+        r.statistics.steps,
+        stepped.statistics.steps
     );
     // nu = 0.4 > 1/3: the rocking dashpot uses 2 V_s and a trapped inertia joins the foundation's.
     let f = s.buildings()[0].structure.foundation().unwrap();

@@ -33,9 +33,15 @@ impl ElementLaw for Dashpot {
         0.0
     }
 
+    /// Its affine force has no constant part.
+    fn constant_force(&self) -> bool {
+        false
+    }
+
     fn affine(&self) -> Option<Affine> {
         Some(Affine {
             c: self.c,
+            viscous: self.c,
             ..Affine::default()
         })
     }

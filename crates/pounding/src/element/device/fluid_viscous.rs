@@ -79,9 +79,15 @@ impl ElementLaw for FluidViscous {
     }
 
     /// A damper of exponent 1 without a spring is a linear dashpot.
+    /// Its affine force has no constant part.
+    fn constant_force(&self) -> bool {
+        false
+    }
+
     fn affine(&self) -> Option<Affine> {
         (self.alpha == 1.0 && self.k.is_none()).then_some(Affine {
             c: self.c,
+            viscous: self.c,
             ..Affine::default()
         })
     }

@@ -27,11 +27,17 @@ impl ElementLaw for Kelvin {
         self.k * x
     }
 
+    /// Its affine force has no constant part.
+    fn constant_force(&self) -> bool {
+        false
+    }
+
     fn affine(&self) -> Option<Affine> {
         Some(Affine {
             k: self.k,
             c: self.c,
             f0: 0.0,
+            viscous: self.c,
         })
     }
 

@@ -54,6 +54,7 @@ impl ElementLaw for Restrainer {
             k,
             c: 0.0,
             f0: k * self.slack,
+            viscous: 0.0,
         })
     }
 

@@ -32,6 +32,11 @@ impl ElementLaw for Spring {
         self.k * x
     }
 
+    /// Its affine force has no constant part.
+    fn constant_force(&self) -> bool {
+        false
+    }
+
     fn affine(&self) -> Option<Affine> {
         Some(Affine {
             k: self.k,

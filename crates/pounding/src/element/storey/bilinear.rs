@@ -135,6 +135,7 @@ impl ElementLaw for Bilinear {
             k,
             c: 0.0,
             f0: f0 - k * x0,
+            viscous: 0.0,
         })
     }
 

@@ -1,0 +1,99 @@
+//! The rates of a [`System`]'s integrated quantities (input and damping energy, the laws' states) while
+//! every law is affine, as quadratic forms of the linear state `w` ([`super::linear`]): `q' = w^T Q w`.
+//! Integrated along the exact motion over a whole record interval (`int_0^h Φ(t)^T Q Φ(t) dt`,
+//! [`crate::integrate::form_integrals`]), they give the energies of an interval without stepping through it.
+
+use super::System;
+use crate::element::{ElementLaw, End};
+
+/// Adds `value w_a w_b` to the form `q` (`nw x nw`, row-major, kept symmetric).
+fn add(q: &mut [f64], nw: usize, a: usize, b: usize, value: f64) {
+    if a == b {
+        q[a * nw + a] += value;
+    } else {
+        q[a * nw + b] += 0.5 * value;
+        q[b * nw + a] += 0.5 * value;
+    }
+}
+
+/// The degrees of freedom and weights of an element's deformation `x = a - b`.
+fn signed_terms(a: End, b: End) -> impl Iterator<Item = (usize, f64)> {
+    let ta = a.terms();
+    let tb = b.terms();
+    let pa: Vec<(usize, f64)> = ta.terms().to_vec();
+    let pb: Vec<(usize, f64)> = tb.terms().iter().map(|&(i, c)| (i, -c)).collect();
+    pa.into_iter().chain(pb)
+}
+
+impl System<'_> {
+    /// The rate of each integrated quantity of the layout (index past the motion, `k` for layout component
+    /// `2 n + k`) that is not identically 0 in the current configuration, as a form on `w`; `None` when a
+    /// law cannot give its states' rates ([`ElementLaw::affine_rates`]) or a law is not affine.
+    pub(crate) fn rate_forms(&self) -> Option<Vec<(usize, Vec<f64>)>> {
+        let n = self.layout.dofs();
+        let nw = self.linear_dim();
+        let acc = self.layout.dim() - 2 * n;
+        let mut forms = vec![vec![0.0; nw * nw]; acc];
+        let (input, damping) = (self.layout.input() - 2 * n, self.layout.damping() - 2 * n);
+        // Input: the ground's inertia force on each mass, and the forces a driven support takes.
+        for i in 0..n {
+            let m = self.mass[i];
+            for (c, p) in self.channels_of(i) {
+                add(&mut forms[input], nw, n + i, 2 * n + 2 * c, -m * p);
+            }
+            add(&mut forms[damping], nw, n + i, n + i, self.a0[i] * m);
+        }
+        let mut rates = [[0.0; 3]; 8];
+        for (e, el) in self.elements.iter().enumerate() {
+            let a = el.affine()?;
+            let x: Vec<(usize, f64)> = signed_terms(el.a, el.b).collect();
+            let f0 = self.constant_in(e);
+            for &(i, ci) in &x {
+                for &(j, cj) in &x {
+                    add(&mut forms[damping], nw, n + i, n + j, a.viscous * ci * cj);
+                }
+            }
+            // A driven support's share: the element's whole force times the support's velocity.
+            for &d in &self.driven {
+                for &(i, ci) in x.iter().filter(|(i, _)| *i == d) {
+                    // x = ... + ci u_d: the force acts -ci F on d, and -(-ci F) v_d is the input.
+                    for &(j, cj) in &x {
+                        add(&mut forms[input], nw, n + i, j, ci * a.k * cj);
+                        add(&mut forms[input], nw, n + i, n + j, ci * a.c * cj);
+                    }
+                    if let Some(f0) = f0 {
+                        add(&mut forms[input], nw, n + i, f0, ci);
+                    }
+                }
+            }
+            let states = self.layout.block(e);
+            if states.is_empty() {
+                continue;
+            }
+            let law = el.law.affine()?;
+            let out = rates.get_mut(..states.len())?;
+            if !el.law.affine_rates(&law, out) {
+                return None;
+            }
+            for (s, &[p, q, r]) in states.zip(out.iter()) {
+                let form = &mut forms[s - 2 * n];
+                for &(i, ci) in &x {
+                    for &(j, cj) in &x {
+                        add(form, nw, i, n + j, p * ci * cj);
+                        add(form, nw, n + i, n + j, q * ci * cj);
+                    }
+                    if let Some(f0) = f0.filter(|_| r != 0.0) {
+                        add(form, nw, f0, n + i, r * ci);
+                    }
+                }
+            }
+        }
+        Some(
+            forms
+                .into_iter()
+                .enumerate()
+                .filter(|(_, q)| q.iter().any(|&x| x != 0.0))
+                .collect(),
+        )
+    }
+}
