@@ -4534,6 +4534,28 @@ fn same_files(made: &std::path::Path, folder: &str, files: &[&str]) {
     }
 }
 
+/// `pounding record coherent` with `args` writes nothing to `out` and says, in one line with exit code 2,
+/// `want`.
+fn refused_record(args: &[&str], out: &std::path::Path, want: &str) {
+    let mut all = vec!["record", "coherent"];
+    all.extend(args);
+    all.extend(["--out", out.to_str().unwrap()]);
+    let err = one_line_error(&all);
+    assert!(err.contains(want), "{err}");
+    assert!(!out.exists());
+}
+
+/// `pounding record coherent` with `args` (an example's recipe) writes into `out` the example folder's
+/// `files`, byte for byte.
+fn remakes(args: &[&str], out: &std::path::Path, folder: &str, files: &[&str]) {
+    let mut all = vec!["record", "coherent"];
+    all.extend(args);
+    all.extend(["--out", out.to_str().unwrap()]);
+    let o = pounding(&all);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    same_files(out, folder, files);
+}
+
 /// Records that lose coherence with distance as a user makes them: one file per support, stating its units,
 /// that a scenario's supports read (examples/coherent-supports.toml's recipe); the same seed gives the same
 /// files; the first support's PGA is --pga; bad options name themselves.
@@ -4573,23 +4595,20 @@ fn coherent_records_feed_supports_and_name_their_options() {
         serde_json::from_str(&std::fs::read_to_string(dir.join("coherent/coherent.json")).unwrap())
             .unwrap();
     assert!((about["pga_m_per_s2"][0].as_f64().unwrap() - 2.5).abs() < 1e-12);
-    // The example's scenario, its records beside it.
     // The example's records are what its recipe makes.
-    let shipped = dir.join("shipped");
-    let o = pounding(&[
-        "record",
+    remakes(
+        &[
+            "--seed",
+            "1",
+            "--positions",
+            "0,40",
+            "--model",
+            "harichandran-vanmarcke",
+        ],
+        &dir.join("shipped"),
         "coherent",
-        "--seed",
-        "1",
-        "--positions",
-        "0,40",
-        "--model",
-        "harichandran-vanmarcke",
-        "--out",
-        shipped.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    same_files(&shipped, "coherent", &["support-1.csv", "support-2.csv"]);
+        &["support-1.csv", "support-2.csv"],
+    );
     // The example's scenario on the records made here (their folder beside it).
     let text = std::fs::read_to_string(example("coherent-supports.toml")).unwrap();
     std::fs::write(dir.join("pair.toml"), text).unwrap();
@@ -4605,15 +4624,9 @@ fn coherent_records_feed_supports_and_name_their_options() {
             "--hv-b = 0 is not allowed",
         ),
     ] {
-        let mut all = vec!["record", "coherent", "--seed", "1", "--positions", "0,40"];
+        let mut all = vec!["--seed", "1", "--positions", "0,40"];
         all.extend(args);
-        let out = dir.join("bad");
-        all.extend(["--out", out.to_str().unwrap()]);
-        let o = pounding(&all);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{err}");
-        assert!(err.contains(want), "{err}");
-        assert!(!out.exists());
+        refused_record(&all, &dir.join("bad"), want);
     }
 }
 
@@ -4625,11 +4638,8 @@ fn coherent_records_feed_supports_and_name_their_options() {
 #[test]
 fn records_conditioned_on_a_record_feed_supports() {
     let dir = tmp("conditioned");
-    let make = |out: &str, record: &str, more: &[&str]| {
-        let out = dir.join(out);
-        let mut all = vec![
-            "record",
-            "coherent",
+    fn recipe(record: &str) -> Vec<&str> {
+        vec![
             "--seed",
             "2",
             "--positions",
@@ -4640,10 +4650,14 @@ fn records_conditioned_on_a_record_feed_supports() {
             "3e-4",
             "--record",
             record,
-            "--out",
-            out.to_str().unwrap(),
-        ];
+        ]
+    }
+    let make = |out: &str, record: &str, more: &[&str]| {
+        let out = dir.join(out);
+        let mut all = vec!["record", "coherent"];
+        all.extend(recipe(record));
         all.extend(more);
+        all.extend(["--out", out.to_str().unwrap()]);
         (pounding(&all), out)
     };
     let (o, out) = make("el", "el-centro-1940", &["--plots"]);
@@ -4686,31 +4700,23 @@ fn records_conditioned_on_a_record_feed_supports() {
         (vec!["--low-cut", "20"], "--low-cut = 20 is not allowed"),
         (vec!["--pga", "2"], "cannot be used with"),
     ] {
-        let (o, bad) = make("bad", "el-centro-1940", &more);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{err}");
-        assert!(err.contains(want), "{err}");
-        assert!(!bad.exists());
+        let mut all = recipe("el-centro-1940");
+        all.extend(more);
+        refused_record(&all, &dir.join("bad"), want);
     }
     // The example's records are what its recipe makes, and the example runs balanced.
-    let shipped = dir.join("shipped");
-    let o = pounding(&[
-        "record",
-        "coherent",
-        "--seed",
-        "1",
-        "--positions",
-        "0,100",
-        "--model",
-        "harichandran-vanmarcke",
-        "--record",
-        "el-centro-1940",
-        "--out",
-        shipped.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    same_files(
-        &shipped,
+    remakes(
+        &[
+            "--seed",
+            "1",
+            "--positions",
+            "0,100",
+            "--model",
+            "harichandran-vanmarcke",
+            "--record",
+            "el-centro-1940",
+        ],
+        &dir.join("shipped"),
         "conditioned",
         &["support-1.csv", "support-2.csv", "coherent.json"],
     );
@@ -4718,24 +4724,20 @@ fn records_conditioned_on_a_record_feed_supports() {
         std::path::Path::new(&example("conditioned-supports.toml")),
         &dir.join("example"),
     );
-    let bad = dir.join("bad");
-    let o = pounding(&[
-        "record",
-        "coherent",
-        "--seed",
-        "1",
-        "--positions",
-        "0,40",
-        "--model",
-        "luco-wong",
-        "--alpha",
-        "2e-4",
-        "--window",
-        "1",
-        "--out",
-        bad.to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("--record"));
-    assert!(!bad.exists());
+    refused_record(
+        &[
+            "--seed",
+            "1",
+            "--positions",
+            "0,40",
+            "--model",
+            "luco-wong",
+            "--alpha",
+            "2e-4",
+            "--window",
+            "1",
+        ],
+        &dir.join("bad"),
+        "--record",
+    );
 }

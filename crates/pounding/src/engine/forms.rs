@@ -3,8 +3,9 @@
 //! Integrated along the exact motion over a whole record interval (`int_0^h Φ(t)^T Q Φ(t) dt`,
 //! [`crate::integrate::form_integrals`]), they give the energies of an interval without stepping through it.
 
+use super::linear::deformation_terms;
 use super::System;
-use crate::element::{ElementLaw, End};
+use crate::element::ElementLaw;
 
 /// Adds `value w_a w_b` to the form `q` (`nw x nw`, row-major, kept symmetric).
 fn add(q: &mut [f64], nw: usize, a: usize, b: usize, value: f64) {
@@ -14,15 +15,6 @@ fn add(q: &mut [f64], nw: usize, a: usize, b: usize, value: f64) {
         q[a * nw + b] += 0.5 * value;
         q[b * nw + a] += 0.5 * value;
     }
-}
-
-/// The degrees of freedom and weights of an element's deformation `x = a - b`.
-fn signed_terms(a: End, b: End) -> impl Iterator<Item = (usize, f64)> {
-    let ta = a.terms();
-    let tb = b.terms();
-    let pa: Vec<(usize, f64)> = ta.terms().to_vec();
-    let pb: Vec<(usize, f64)> = tb.terms().iter().map(|&(i, c)| (i, -c)).collect();
-    pa.into_iter().chain(pb)
 }
 
 impl System<'_> {
@@ -46,7 +38,7 @@ impl System<'_> {
         let mut rates = [[0.0; 3]; 8];
         for (e, el) in self.elements.iter().enumerate() {
             let a = el.affine()?;
-            let x: Vec<(usize, f64)> = signed_terms(el.a, el.b).collect();
+            let x = deformation_terms(el);
             let f0 = self.constant_in(e);
             for &(i, ci) in &x {
                 for &(j, cj) in &x {

@@ -38,6 +38,15 @@ pub(crate) fn forcing(w: &[f64], mech: usize, tau: f64) -> (f64, f64) {
     (f[0] + f[1] * tau, f[2] + f[3] * tau)
 }
 
+/// The degrees of freedom and weights of element `el`'s deformation `x = sum over a's terms - sum over b's
+/// terms`.
+pub(super) fn deformation_terms(el: &crate::element::Element) -> Vec<(usize, f64)> {
+    let (ta, tb) = (el.a.terms(), el.b.terms());
+    let a = ta.terms().iter().copied();
+    let b = tb.terms().iter().map(|&(i, c)| (i, -c));
+    a.chain(b).collect()
+}
+
 impl System<'_> {
     /// Whether the motion can be written as `w' = M w` now: every law affine. Writes the configuration's key (the laws' stiffnesses
     /// and viscous coefficients, bit for bit) to `key` and each element's `f0` to `f0`.
@@ -117,14 +126,8 @@ impl System<'_> {
         }
         for (e, el) in self.elements.iter().enumerate() {
             let a = el.affine().expect("an affine configuration");
-            // x = sum over a's terms - sum over b's terms; the force acts -F on a's, +F on b's.
-            let ta = el.a.terms();
-            let tb = el.b.terms();
-            let signed = |side: usize| -> Vec<(usize, f64)> {
-                let (t, sign) = if side == 0 { (&ta, 1.0) } else { (&tb, -1.0) };
-                t.terms().iter().map(|&(i, c)| (i, sign * c)).collect()
-            };
-            let x: Vec<(usize, f64)> = signed(0).into_iter().chain(signed(1)).collect();
+            // The force acts -F on a's terms, +F on b's.
+            let x = deformation_terms(el);
             for &(i, ci) in x.iter().filter(|(i, _)| !self.driven.contains(i)) {
                 let row = (n + i) * nw;
                 let inv = self.inv_mass[i];

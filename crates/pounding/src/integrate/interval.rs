@@ -17,8 +17,8 @@ pub fn halvings(rho: f64) -> u32 {
     s
 }
 
-/// `out = a b` for square row-major `nw x nw` matrices.
-fn mat_mul(a: &[f64], b: &[f64], nw: usize, out: &mut [f64]) {
+/// `out = a b` for square row-major `nw x nw` matrices (each entry summed over `k` in order).
+pub fn mat_mul(a: &[f64], b: &[f64], nw: usize, out: &mut [f64]) {
     for (row, arow) in out.chunks_exact_mut(nw).zip(a.chunks_exact(nw)) {
         row.fill(0.0);
         for (&aik, brow) in arow.iter().zip(b.chunks_exact(nw)) {

@@ -10,7 +10,7 @@
 use crate::analysis::Scenario;
 use crate::error::check;
 use crate::ground_motion::synthetic::Filter;
-use crate::integrate::lu;
+use crate::integrate::{lu, mat_mul};
 use crate::Error;
 
 /// A linear time-invariant system `x' = A x + b w`, `A` row-major `n` x `n`.
@@ -218,10 +218,16 @@ pub fn stationary_covariance(sys: &StateSpace, s0: f64) -> Result<Vec<f64>, Erro
     }
     let mut tmp = vec![0.0; n * n];
     let mut tmp2 = vec![0.0; n * n];
+    let mut adt = vec![0.0; n * n];
     for _ in 0..200 {
         // P += A_d P A_d^T; A_d = A_d^2.
-        matmul(&ad, &pm, &mut tmp, n, false);
-        matmul(&tmp, &ad, &mut tmp2, n, true);
+        mat_mul(&ad, &pm, n, &mut tmp);
+        for i in 0..n {
+            for j in 0..n {
+                adt[i * n + j] = ad[j * n + i];
+            }
+        }
+        mat_mul(&tmp, &adt, n, &mut tmp2);
         let mut grow = 0.0f64;
         let mut size = 0.0f64;
         for (x, d) in pm.iter_mut().zip(&tmp2) {
@@ -229,7 +235,7 @@ pub fn stationary_covariance(sys: &StateSpace, s0: f64) -> Result<Vec<f64>, Erro
             grow = grow.max(d.abs());
             size = size.max(x.abs());
         }
-        matmul(&ad, &ad.clone(), &mut tmp, n, false);
+        mat_mul(&ad, &ad, n, &mut tmp);
         std::mem::swap(&mut ad, &mut tmp);
         let norm = ad.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         if !norm.is_finite() || !size.is_finite() {
@@ -248,24 +254,6 @@ pub fn stationary_covariance(sys: &StateSpace, s0: f64) -> Result<Vec<f64>, Erro
         }
     }
     Err(unstable())
-}
-
-/// `out = x y` (`transpose_y`: `x y^T`), `n` x `n` row-major.
-fn matmul(x: &[f64], y: &[f64], out: &mut [f64], n: usize, transpose_y: bool) {
-    for i in 0..n {
-        for j in 0..n {
-            let mut s = 0.0;
-            for k in 0..n {
-                let yk = if transpose_y {
-                    y[j * n + k]
-                } else {
-                    y[k * n + j]
-                };
-                s += x[i * n + k] * yk;
-            }
-            out[i * n + j] = s;
-        }
-    }
 }
 
 fn unstable() -> Error {
