@@ -317,7 +317,7 @@ impl Scenario {
     }
 
     /// Adds a support of its own called `name` (multi-support excitation), shaken by `record` (its own, or the
-    /// scenario's delayed, [`Record::delayed`]): structures put on it ([`Scenario::on_support`]) are shaken by
+    /// scenario's delayed, [`Record::delayed`]): structures put on it ([`Scenario::with_building_on`]) are shaken by
     /// it, and a contact or wall between structures on different supports closes by their displacements'
     /// difference as well (each support's displacement integrated from rest). Buildings in one line only.
     pub fn with_support(mut self, name: &str, record: Record) -> Result<Self, Error> {

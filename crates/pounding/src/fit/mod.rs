@@ -1,5 +1,5 @@
 //! Contact laws fitted to measurements (docs/contact-models.md section 2.8): restitution measured against
-//! the impact velocity ([`restitution`]), and the force history of one impact ([`force_history`]). Each
+//! the impact velocity ([`restitution`]), and the force history of one impact ([`force_history()`]). Each
 //! fit is least squares ([`least_squares`]) and gives its parameters under their scenario key names, with
 //! standard errors from the fit's Jacobian and the residual.
 

@@ -246,8 +246,8 @@ fn comment_units(line: &str) -> Option<String> {
 }
 
 /// What a two-column or values text says about its units before its data: a comment stating
-/// `units = "..."` ([`comment_units`]) and the name of the acceleration column of a header line
-/// ([`column_units`]: the last name of the line). `None` if it says nothing; an error if two statements
+/// `units = "..."` (`comment_units`) and the name of the acceleration column of a header line
+/// (`column_units`: the last name of the line). `None` if it says nothing; an error if two statements
 /// disagree. A stated word that is not a unit known here has `units: None`.
 pub fn text_units(text: &str) -> Result<Option<StatedUnits>, ParseError> {
     let mut found: Option<StatedUnits> = None;

@@ -120,7 +120,7 @@ impl Stepper {
     }
 
     /// The work done so far in explicit steps (accepted and rejected): an implicit step counts as
-    /// [`implicit_step_cost`] of them.
+    /// `implicit_step_cost` of them.
     pub fn work(&self) -> f64 {
         let (explicit, implicit) = self.attempts();
         let n = self.explicit.y().len() as f64;
