@@ -138,12 +138,10 @@ fn earliest_event(
     first
 }
 
-/// Whether a touch may come and go inside a step whose deformation turns from closing to opening: the
-/// distance at the turn, on the cubic Hermite of the deformation (within a few thousandths of the step's
-/// motion of the true one on the steps the engine takes), is not clearly positive.
 /// On a whole interval taken at once (more than one piece), the first start of a piece where the event
-/// function of `ev` of element `e` is <= 0, with its value there (the motion from the chain of pieces; `y0`
-/// the state at the step's start).
+/// function of `ev` of element `e` is <= 0, with its value there (the element's deformation from its probe
+/// rows, [`crate::integrate::Motion::probe`], else from the chain of pieces; `y0` the state at the step's
+/// start).
 fn piece_crossing(
     sys: &System,
     (e, ev): (usize, Event),
@@ -156,13 +154,18 @@ fn piece_crossing(
     // force or its events: the states at the step's start stand for them.
     let states = &y0[sys.layout().block(e)];
     (1..m.pieces()).find_map(|k| {
-        m.piece_start(k, motion);
-        let (x, v) = sys.deformation(e, motion);
+        let (x, v) = m.probe(e, k).unwrap_or_else(|| {
+            m.piece_start(k, motion);
+            sys.deformation(e, motion)
+        });
         let g = el.event_value(ev, x, v, states);
         (g <= 0.0).then_some((dense.t0() + k as f64 * m.piece(), g))
     })
 }
 
+/// Whether a touch may come and go inside a step whose deformation turns from closing to opening: the
+/// distance at the turn, on the cubic Hermite of the deformation (within a few thousandths of the step's
+/// motion of the true one on the steps the engine takes), is not clearly positive.
 fn grazes(
     el: &crate::element::Element,
     ev: Event,

@@ -10,8 +10,10 @@
 //! A configuration whose fast modes (a foundation on soil) would split an interval into many such steps takes
 //! each whole interval in one ([`Whole`]): its transitions by scaling and squaring, its energies as quadratic
 //! forms of `w` integrated over it ([`super::forms`], [`crate::integrate::form_integrals`]), its motion read
-//! inside on a chain of pieces. The rest of an interval after an event, and an interval whose motion the
-//! cubic Hermite screens would misread ([`HERMITE_MISS`]), are left to the Runge–Kutta stepper.
+//! inside on a chain of pieces. The rest of an interval after an event is taken in blocks of `2^i` pieces
+//! (their transitions and forms are the doubling's intermediate results), after one series-length step to
+//! the grid of pieces; so is an interval whose motion the cubic Hermite screens would misread
+//! ([`HERMITE_MISS`]), in blocks half as long.
 
 use super::linear::{channel_at, forcing};
 use super::System;
@@ -46,18 +48,27 @@ struct Length {
 
 /// A whole record interval in one step ([`crate::integrate::exponential`]), for a configuration whose
 /// fast modes would split it into many series-length steps: its transitions, the pieces its motion is read
-/// on inside, and the integrals of the rates' forms over it.
+/// on inside, and the integrals of the rates' forms over it; and the same over blocks of `1, 2, 4, ...` of
+/// its pieces, which take the rest of an interval after an event, and an interval whose motion a whole step's
+/// screens would misread ([`HERMITE_MISS`]), in a few exact steps.
 #[derive(Debug)]
 struct Whole {
     /// The interval, s.
     h: f64,
-    /// Its series-length pieces (a power of 2) and the transition rows over one.
+    /// Its series-length pieces (a power of 2).
     pieces: usize,
-    piece_rows: Vec<f64>,
-    /// Transition rows to its end and to its three Gauss nodes.
-    phi: [Vec<f64>; 4],
-    /// Each integrated quantity whose rate is not 0, with its form's integral over the interval.
-    integrals: Vec<(usize, Vec<f64>)>,
+    /// Transition rows to the three Gauss nodes of each block (built when a block is first taken).
+    nodes: Vec<Option<[Vec<f64>; 3]>>,
+    /// The blocks of `2^i` pieces, `i = 0 ..= log2(pieces)`: the last is the interval.
+    blocks: Vec<crate::integrate::Block>,
+    /// The integrated quantities whose rate is not 0, in the order of each block's form integrals.
+    quantities: Vec<usize>,
+    /// The elements with events watched, and the rows of their deformations and rates at the pieces'
+    /// starts ([`Motion::probe`]): where the driver reads their event functions inside a step.
+    probe_keys: Vec<usize>,
+    probe_rows: Vec<f64>,
+    /// The blocks' transition rows one after the other ([`Motion::chained`]).
+    jumps: Vec<f64>,
 }
 
 /// How far the cubic Hermite of each displacement through the ends of a whole interval may miss the exact
@@ -65,9 +76,12 @@ struct Whole {
 /// and peaks read the Hermite within 1 %; a step that misses by more is stepped instead (fast modes still
 /// ringing in it).
 const HERMITE_MISS: f64 = 1e-3;
-/// Most pieces of a whole interval: beyond (a stiff column, a very stiff contact spring) the chain of pieces
-/// that events and peaks are read on costs more than the Runge–Kutta stepper's stiff stretches.
-const MAX_PIECES: usize = 32;
+/// Most pieces of a whole interval (a bound on the rows of its probes, `2 nw` per piece and watched element):
+/// the chain of pieces is read by jumps over blocks and the events by probe rows, so the count matters
+/// little below it. Measured (`docs/performance.md`): 256 pieces, the floor-to-column example 1.14 times
+/// faster than stepped, a storey on V_s = 400 m/s soil 8 times; with 32 pieces at most and the chain walked
+/// piece by piece, both ran slower whole.
+const MAX_PIECES: usize = 1024;
 /// Fewest pieces of a whole interval: with fewer, the Runge–Kutta stepper takes about as few steps as
 /// that, each cheaper than a whole interval's (three rows of three buildings, 4 pieces, ran 8 % slower
 /// whole; two of 3 and 8 storeys, 4 pieces, the same; a pair on soil, 16 pieces, 1.2 to 1.3 times faster).
@@ -108,26 +122,58 @@ struct Configuration {
     met: usize,
 }
 
-/// The whole interval of length `h` of configuration `c` (with its forms).
-fn build_whole(c: &Configuration, nw: usize, mech: usize, h: f64) -> Whole {
-    use crate::integrate::{form_integrals, halvings, transition_rows};
-    let pieces = 1usize << halvings(c.r * h);
-    let piece = h / pieces as f64;
+/// The whole interval of length `h` of configuration `c` (with its forms) of `sys`.
+fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f64) -> Whole {
+    use crate::integrate::{form_blocks, functional_at_pieces, halvings};
     let forms = c.forms.as_deref().unwrap_or_default();
     let qs: Vec<&[f64]> = forms.iter().map(|(_, q)| q.as_slice()).collect();
-    let gs = form_integrals(&c.m, nw, mech, (h, c.r), &qs);
+    let pieces = 1usize << halvings(c.r * h);
+    let blocks = form_blocks(&c.m, nw, mech, (h, c.r), &qs);
+    let (mut probe_keys, mut probe_rows) = (Vec::new(), Vec::new());
+    for (e, el) in sys.elements().iter().enumerate() {
+        if el.watched().is_empty() {
+            continue;
+        }
+        probe_keys.push(e);
+        let terms = super::linear::deformation_terms(el);
+        for shift in [0, mech / 2] {
+            let mut a = vec![0.0; nw];
+            for &(i, k) in &terms {
+                a[shift + i] += k;
+            }
+            let at = (h / pieces as f64, pieces);
+            functional_at_pieces(&a, (&c.m, &blocks[0].rows), (nw, mech), at, &mut probe_rows);
+        }
+    }
     Whole {
         h,
         pieces,
-        piece_rows: transition(&c.m, nw, mech, piece),
-        phi: [
-            transition_rows(&c.m, nw, mech, h, c.r),
-            transition_rows(&c.m, nw, mech, GAUSS_NODES[0] * h, c.r),
-            transition_rows(&c.m, nw, mech, GAUSS_NODES[1] * h, c.r),
-            transition_rows(&c.m, nw, mech, GAUSS_NODES[2] * h, c.r),
-        ],
-        integrals: forms.iter().map(|(k, _)| *k).zip(gs).collect(),
+        nodes: (0..blocks.len()).map(|_| None).collect(),
+        quantities: forms.iter().map(|(k, _)| *k).collect(),
+        probe_keys,
+        probe_rows,
+        jumps: blocks.iter().flat_map(|b| b.rows.iter().copied()).collect(),
+        blocks,
     }
+}
+
+/// Transition rows (`mech x nw`) over `tau` s (at most the interval) of the configuration of matrix `m`
+/// that takes whole intervals `whole`: a series-length step within the piece holding `tau`, carried on by the
+/// blocks of the binary digits of the pieces before it ([`crate::integrate::times_transition`]), in a few
+/// products where scaling and squaring would take a dozen.
+fn rows_at(m: &[f64], whole: &Whole, tau: f64, (nw, mech): (usize, usize)) -> Vec<f64> {
+    let piece = whole.h / whole.pieces as f64;
+    let before = ((tau / piece).floor() as usize).min(whole.pieces);
+    let mut rows = transition(m, nw, mech, (tau - before as f64 * piece).max(0.0));
+    let mut next = rows.clone();
+    for (b, block) in whole.blocks.iter().enumerate() {
+        if before >> b & 1 == 1 {
+            let t = (1usize << b) as f64 * piece;
+            crate::integrate::times_transition(&rows, (m, &block.rows), (nw, mech), t, &mut next);
+            std::mem::swap(&mut rows, &mut next);
+        }
+    }
+    rows
 }
 
 impl Configuration {
@@ -162,7 +208,10 @@ impl Configuration {
             return None;
         }
         let (tau, _) = self.asked.swap_remove(i);
-        let rows = crate::integrate::transition_rows(&self.m, nw, mech, tau, self.r);
+        let rows = match &self.whole {
+            Some(w) if tau <= w.h => rows_at(&self.m, w, tau, (nw, mech)),
+            _ => crate::integrate::transition_rows(&self.m, nw, mech, tau, self.r),
+        };
         self.offsets.push((tau, rows));
         Some(self.offsets.len() - 1)
     }
@@ -196,8 +245,11 @@ pub struct Exact {
     /// The current configuration takes whole record intervals ([`Whole`]) and leaves the rest to the
     /// Runge–Kutta stepper.
     whole: bool,
-    /// Each integrated quantity's growth over a whole interval.
+    /// Each integrated quantity's growth over a block of a whole interval.
     inc: Vec<f64>,
+    /// The largest block of the current interval's pieces to try (`log2` of its pieces): lowered by a
+    /// Hermite miss for the rest of the interval.
+    cap: usize,
     /// What each degree of freedom's displacement can reach, m or rad (its absolute tolerance over the
     /// relative one): the size a Hermite miss is measured against.
     scale: Vec<f64>,
@@ -259,6 +311,7 @@ impl Exact {
             lines: vec![0.0; sys.forcing_dim()],
             whole: false,
             inc: vec![0.0; dim - mech],
+            cap: usize::MAX,
             scale,
             live: Vec::with_capacity(nw),
             before: (vec![0.0; dim], vec![0.0; dim]),
@@ -373,27 +426,87 @@ impl Exact {
     }
 
     /// Takes one exact step towards `t_stop` (never past it). The ground's acceleration must be linear on
-    /// `[t, t_stop]` (the driver stops at its kinks). `false`, with nothing done, when the configuration
-    /// takes whole record intervals only ([`Whole`]) and `[t, t_stop]` is not one, or when the Hermite
-    /// screens would misread it ([`HERMITE_MISS`]): the Runge–Kutta stepper takes it then.
+    /// `[t, t_stop]` (the driver stops at its kinks). `false`, with nothing done, when a configuration that
+    /// takes whole record intervals ([`Whole`]) has not built them yet, or misses its Hermite screens more
+    /// often than not ([`HERMITE_MISS`]): the Runge–Kutta stepper takes `[t, t_stop]` then.
     pub fn step_until(&mut self, sys: &System, t_stop: f64) -> bool {
-        let whole = self.whole;
-        let h = if whole {
-            if !self.is_interval(self.t, t_stop) {
+        if self.whole {
+            return self.step_whole(sys, t_stop);
+        }
+        let (t0, h) = (self.t, self.length(t_stop));
+        self.begin(sys, h);
+        self.propagate(h);
+        self.finish(sys, (t0, h, self.end_time(t0, h, t_stop)), None);
+        self.steps += 1;
+        true
+    }
+
+    /// A step of a configuration that takes whole record intervals: a whole interval in one; else, towards
+    /// `t_stop`, a series-length step to the grid of pieces counted back from `t_stop` (after an event),
+    /// then the largest blocks of pieces that fit. A block whose motion the Hermite screens would misread
+    /// is taken again as blocks half as long, down to one piece (a series-length step, as exact as any).
+    fn step_whole(&mut self, sys: &System, t_stop: f64) -> bool {
+        let interval = self.is_interval(self.t, t_stop);
+        let (nw, mech, length) = (self.nw, self.mech, self.interval);
+        let c = &mut self.configs[self.current];
+        if c.whole.is_none() {
+            if !interval || c.met < WHOLE_AFTER {
+                c.met += usize::from(interval);
                 return false;
             }
+            c.whole = Some(build_whole(sys, c, (nw, mech), length));
+        }
+        if interval {
+            self.cap = usize::MAX;
+        }
+        let whole = c.whole.as_ref().expect("built above");
+        let (top, piece) = (whole.blocks.len() - 1, whole.h / whole.pieces as f64);
+        let (t0, span) = (self.t, t_stop - self.t);
+        let count = (span / piece + 1e-9).floor();
+        let rest = span - count * piece;
+        if count < 1.0 || rest > 1e-9 * piece {
+            let h = if count < 1.0 { span } else { rest };
+            self.begin(sys, h);
+            self.propagate(h);
+            self.finish(sys, (t0, h, self.end_time(t0, h, t_stop)), None);
+            self.steps += 1;
+            return true;
+        }
+        let mut i = ((count as usize).ilog2() as usize).min(top).min(self.cap);
+        self.begin(sys, span);
+        self.before.0.copy_from_slice(&self.y);
+        self.before.1.copy_from_slice(&self.dydt);
+        loop {
+            let h = (1usize << i) as f64 * piece;
+            self.propagate_block(i);
+            self.finish(sys, (t0, h, self.end_time(t0, h, t_stop)), Some(i));
+            if i == 0 || self.hermite_holds(h) {
+                self.configs[self.current].taken += usize::from(i == top);
+                self.steps += 1;
+                return true;
+            }
+            self.y.copy_from_slice(&self.before.0);
+            self.dydt.copy_from_slice(&self.before.1);
+            self.t = t0;
             let c = &mut self.configs[self.current];
-            if c.whole.is_none() && c.met < WHOLE_AFTER {
-                c.met += 1;
-                return false;
+            if i == top {
+                c.missed += 1;
+                if c.missed >= 8 && c.missed > c.taken {
+                    // Fast modes that ring (lightly damped): the stepper is cheaper.
+                    return false;
+                }
             }
-            t_stop - self.t
-        } else {
-            self.length(t_stop)
-        };
+            i -= 1;
+            self.cap = i;
+        }
+    }
+
+    /// Readies a step of length `h` from the current state: counts a use of the configuration, reads each
+    /// ground channel's line on the step and sets `w`.
+    fn begin(&mut self, sys: &System, h: f64) {
         let t0 = self.t;
         self.configs[self.current].uses += 1;
-        // Each ground channel's acceleration on the interval, read inside it (a record's end is a jump).
+        // Each ground channel's acceleration on the step, read inside it (a record's end is a jump).
         let ground = sys.ground();
         let (ta, tb) = (t0 + 0.25 * h, t0 + 0.75 * h);
         for (c, line) in self.lines.chunks_exact_mut(2).enumerate() {
@@ -402,51 +515,39 @@ impl Exact {
             line.copy_from_slice(&[ga - slope * (ta - t0), slope]);
         }
         sys.linear_state(&self.y, &self.lines, &self.f0, &mut self.w);
-        if whole {
-            self.propagate_whole(h);
-            self.before.0.copy_from_slice(&self.y);
-            self.before.1.copy_from_slice(&self.dydt);
-        } else {
-            self.propagate(h);
-        }
-        self.last = h;
-        let t1 = if (t_stop - (t0 + h)).abs() <= 1e-12 * h {
+    }
+
+    /// The end of a step of length `h` from `t0` towards `t_stop`: `t_stop` itself when within rounding.
+    fn end_time(&self, t0: f64, h: f64, t_stop: f64) -> f64 {
+        if (t_stop - (t0 + h)).abs() <= 1e-12 * h {
             t_stop
         } else {
             t0 + h
-        };
-        self.finish(sys, t0, h, t1);
-        if whole && !self.hermite_holds(h) {
-            self.configs[self.current].missed += 1;
-            self.y.copy_from_slice(&self.before.0);
-            self.dydt.copy_from_slice(&self.before.1);
-            self.t = t0;
-            return false;
         }
-        if whole {
-            self.configs[self.current].taken += 1;
-        }
-        self.steps += 1;
-        true
     }
 
-    /// `wn` (as [`Self::propagate`]) and [`Self::inc`] over a whole record interval of length `h`.
-    fn propagate_whole(&mut self, h: f64) {
+    /// `wn` (as [`Self::propagate`]) and [`Self::inc`] over block `i` of the whole interval (`2^i` pieces).
+    fn propagate_block(&mut self, i: usize) {
         let (nw, mech) = (self.nw, self.mech);
         let c = &mut self.configs[self.current];
-        if c.whole.as_ref().is_none_or(|w| (w.h - h).abs() > 1e-9 * h) {
-            c.whole = Some(build_whole(c, nw, mech, h));
+        let whole = c.whole.as_mut().expect("built by step_whole");
+        if whole.nodes[i].is_none() {
+            let length = (1usize << i) as f64 * whole.h / whole.pieces as f64;
+            let rows = GAUSS_NODES.map(|g| rows_at(&c.m, whole, g * length, (nw, mech)));
+            whole.nodes[i] = Some(rows);
         }
-        let whole = c.whole.as_ref().expect("built above");
+        let block = &whole.blocks[i];
         // Over the components of w that are not 0 (constant forces of linear laws, a ground channel the
         // record does not have).
         live_of(&self.w, &mut self.live);
         let (w, live) = (&self.w, &self.live);
-        for (p, out) in whole.phi.iter().zip(self.wn.iter_mut()) {
+        mat_vec_on(&block.rows, w, live, &mut self.wn[0][..mech]);
+        let nodes = whole.nodes[i].as_ref().expect("built above");
+        for (p, out) in nodes.iter().zip(self.wn[1..].iter_mut()) {
             mat_vec_on(p, w, live, &mut out[..mech]);
         }
         self.inc.fill(0.0);
-        for (k, g) in &whole.integrals {
+        for (k, g) in whole.quantities.iter().zip(&block.integrals) {
             self.inc[*k] = live
                 .iter()
                 .map(|&i| {
@@ -537,11 +638,13 @@ impl Exact {
         }
     }
 
-    /// Integrates the energies and states along the step from `wn`, sets the state at `t1 = t0 + h` and
-    /// the dense output.
-    fn finish(&mut self, sys: &System, t0: f64, h: f64, t1: f64) {
+    /// Integrates the energies and states along the step from `wn` (by three-point Gauss, or on block `i` of
+    /// the whole interval by its form integrals, [`Self::inc`]), sets the state at `t1` (`t0 + h` to rounding)
+    /// and the dense output.
+    fn finish(&mut self, sys: &System, (t0, h, t1): (f64, f64, f64), block: Option<usize>) {
         let mech = self.mech;
         let acc = self.y.len() - mech;
+        self.last = h;
         let motion_config = self.current;
         let same_matrix = self.dense_config == Some(motion_config);
         let Some((dt0, dh, motion)) = self.dense.motion_mut() else {
@@ -561,26 +664,36 @@ impl Exact {
         }
         *dt0 = t0;
         *dh = h;
+        let config = &self.configs[motion_config];
         if !same_matrix {
-            motion.set_matrix(&self.configs[motion_config].m);
+            motion.set_matrix(&config.m);
             motion.clear_offsets();
-            for (tau, phi) in &self.configs[motion_config].offsets {
+            for (tau, phi) in &config.offsets {
                 motion.add_offset(*tau, phi);
             }
         }
         motion.set_start(&self.w);
         motion.acc0.copy_from_slice(&self.y[mech..]);
         motion.rates[0].copy_from_slice(&self.dydt);
-        let whole = self.configs[motion_config]
-            .whole
-            .as_ref()
-            .filter(|_| self.whole);
-        let piece = whole.map_or(h, |w| w.h / w.pieces as f64);
-        motion.terms = crate::integrate::terms_for(self.configs[motion_config].r * piece);
+        let whole = block.and_then(|i| Some((i, config.whole.as_ref()?)));
+        let piece = whole.map_or(h, |(_, w)| w.h / w.pieces as f64);
+        motion.terms = crate::integrate::terms_for(config.r * piece);
         motion.invalidate();
         self.dense_config = Some(motion_config);
         motion.w1.copy_from_slice(&self.wn[0][..mech]);
         self.ynode.copy_from_slice(&self.y);
+        if let Some((i, w)) = whole {
+            for (y, inc) in self.y[mech..].iter_mut().zip(&self.inc) {
+                *y += inc;
+            }
+            motion.chained(
+                (1 << i, piece),
+                &w.jumps,
+                (&w.probe_keys, &w.probe_rows),
+                !same_matrix,
+                &self.y[mech..],
+            );
+        }
         for (j, node) in GAUSS_NODES.iter().enumerate() {
             self.ynode[..mech].copy_from_slice(&self.wn[j + 1][..mech]);
             let tau = node * h;
@@ -592,28 +705,14 @@ impl Exact {
             );
             motion.rates[j + 1].copy_from_slice(&self.dynode);
         }
-        match whole {
-            Some(w) => {
-                for (y, inc) in self.y[mech..].iter_mut().zip(&self.inc) {
-                    *y += inc;
-                }
-                motion.chained(
-                    w.pieces,
-                    piece,
-                    &w.piece_rows,
-                    !same_matrix,
-                    &self.y[mech..],
-                );
+        if whole.is_none() {
+            for k in 0..acc {
+                let inc: f64 = (0..3)
+                    .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
+                    .sum();
+                self.y[mech + k] += h * inc;
             }
-            None => {
-                for k in 0..acc {
-                    let inc: f64 = (0..3)
-                        .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
-                        .sum();
-                    self.y[mech + k] += h * inc;
-                }
-                motion.single();
-            }
+            motion.single();
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;

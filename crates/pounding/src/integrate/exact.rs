@@ -45,12 +45,34 @@ pub const GAUSS_NODES: [f64; 3] = [
 /// Their weights (summing to 1).
 pub const GAUSS_WEIGHTS: [f64; 3] = [5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0];
 
-/// `y = A x` for a row-major `n x n` matrix `A`.
+/// `a . b` over the shorter length, in four interleaved partial sums: rows of a transition are short
+/// (tens of entries), and one running sum would wait on each addition in turn.
+#[inline]
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len().min(b.len());
+    let (a, b) = (&a[..n], &b[..n]);
+    let mut s = [0.0; 4];
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let tail: f64 = ca
+        .remainder()
+        .iter()
+        .zip(cb.remainder())
+        .map(|(p, q)| p * q)
+        .sum();
+    for (p, q) in ca.zip(cb) {
+        for k in 0..4 {
+            s[k] += p[k] * q[k];
+        }
+    }
+    (s[0] + s[2]) + (s[1] + s[3]) + tail
+}
+
+/// `y = A x` for a row-major `A` of `x.len()` columns.
 #[inline]
 pub fn mat_vec(a: &[f64], x: &[f64], y: &mut [f64]) {
     let n = x.len();
     for (row, yi) in a.chunks_exact(n).zip(y.iter_mut()) {
-        *yi = row.iter().zip(x).map(|(p, q)| p * q).sum();
+        *yi = dot(row, x);
     }
 }
 
@@ -59,6 +81,9 @@ pub fn mat_vec(a: &[f64], x: &[f64], y: &mut [f64]) {
 #[inline]
 pub fn mat_vec_on(a: &[f64], x: &[f64], live: &[usize], y: &mut [f64]) {
     let n = x.len();
+    if live.len() == n {
+        return mat_vec(a, x, y);
+    }
     for (row, yi) in a.chunks_exact(n).zip(y.iter_mut()) {
         *yi = live.iter().map(|&j| row[j] * x[j]).sum();
     }
@@ -224,6 +249,16 @@ pub struct Motion {
     row_ends: Vec<usize>,
     /// The components of `w0` that are not 0 ([`Self::set_start`]).
     live: Vec<usize>,
+    /// Probes of a chained step: for each key (an element), the rows of its two functionals (deformation
+    /// and rate) at the start of pieces 1, 2, ... ([`super::functional_at_pieces`]): the first's rows,
+    /// then the second's, `nw` each.
+    probe_keys: Vec<usize>,
+    probe_rows: Vec<f64>,
+    /// Transition rows over `1, 2, 4, ...` pieces (`mech x nw` each): a piece's start far along the chain
+    /// in a few products ([`Self::ensure_chain`]).
+    jump_rows: Vec<f64>,
+    /// Room for one jump's product (`mech`).
+    jumped: RefCell<Vec<f64>>,
 }
 
 impl Motion {
@@ -257,6 +292,10 @@ impl Motion {
             nonzeros: Vec::new(),
             row_ends: Vec::new(),
             live: (0..nw).collect(),
+            probe_keys: Vec::new(),
+            probe_rows: Vec::new(),
+            jump_rows: Vec::new(),
+            jumped: RefCell::new(vec![0.0; mech]),
         }
     }
 
@@ -299,13 +338,30 @@ impl Motion {
     /// Makes the step `pieces` pieces of `piece` s each, the motion carried across each by `rows` (the
     /// first `mech` rows of its transition; copied only when `fresh`, the matrix having changed), and the
     /// integrated quantities at its end `acc1` (the quartics through the rates are bent to meet them).
-    pub fn chained(&mut self, pieces: usize, piece: f64, rows: &[f64], fresh: bool, acc1: &[f64]) {
+    /// `jumps` are the rows over `1, 2, 4, ...` pieces one after the other (`rows` first), and `probes` keys
+    /// (elements) and the rows of their two functionals at the pieces' starts ([`Self::probe`]), for as many
+    /// pieces as any step of this matrix and piece length has; both copied when `fresh` too.
+    pub fn chained(
+        &mut self,
+        (pieces, piece): (usize, f64),
+        jumps: &[f64],
+        probes: (&[usize], &[f64]),
+        fresh: bool,
+        acc1: &[f64],
+    ) {
         let fresh = fresh || self.piece != piece;
         self.pieces = pieces;
         self.piece = piece;
-        if fresh || self.piece_rows.len() != rows.len() {
+        let rows = &jumps[..self.mech * self.w0.len()];
+        if fresh || self.jump_rows.len() != jumps.len() {
+            self.jump_rows.clear();
+            self.jump_rows.extend_from_slice(jumps);
             self.piece_rows.clear();
             self.piece_rows.extend_from_slice(rows);
+            self.probe_keys.clear();
+            self.probe_keys.extend_from_slice(probes.0);
+            self.probe_rows.clear();
+            self.probe_rows.extend_from_slice(probes.1);
         }
         let need = pieces.saturating_sub(1) * self.mech;
         let mut chain = self.chain.borrow_mut();
@@ -368,7 +424,7 @@ impl Motion {
     /// Writes the motion `w[..out.len()]` (at most `mech` components) at `tau` into a step of length `h`:
     /// the ends as the step left them, an offset with a slot by one row product each (exact to rounding
     /// when `tau` is within `slack` of it, s), else from the series. With `log`, an interior offset
-    /// without a slot is counted for the stepper ([`Self::drain_asked`]).
+    /// without a slot is counted for the stepper ([`Self::take_asked`]).
     pub fn motion_at(&self, tau: f64, h: f64, slack: f64, out: &mut [f64], log: bool) {
         let nw = self.w0.len();
         if tau <= 0.0 {
@@ -410,6 +466,22 @@ impl Motion {
         out.copy_from_slice(&self.piece_w.borrow()[..out.len()]);
     }
 
+    /// The two functionals of probe `key` (an element's deformation and its rate) at the start of piece `k`
+    /// of a chained step, one row product each; `None` without such a probe or piece.
+    pub fn probe(&self, key: usize, k: usize) -> Option<(f64, f64)> {
+        if k == 0 || k >= self.pieces {
+            return None;
+        }
+        let nw = self.w0.len();
+        let i = self.probe_keys.iter().position(|&p| p == key)?;
+        // Each key's rows: the deformation's at every piece's start, then its rate's.
+        let half = self.probe_rows.len() / self.probe_keys.len() / 2;
+        let rows = &self.probe_rows[2 * i * half..2 * (i + 1) * half];
+        let (x, v) = rows.split_at(half);
+        let at = (k - 1) * nw..k * nw;
+        Some((dot(x.get(at.clone())?, &self.w0), dot(&v[at], &self.w0)))
+    }
+
     /// The second rate of component `j` of `w` at the start of piece `k`.
     pub fn second_rate_at(&self, k: usize, j: usize) -> f64 {
         self.ensure_chain(k);
@@ -448,8 +520,23 @@ impl Motion {
                     *r = row.iter().zip(&self.w0[mech..]).map(|(a, b)| a * b).sum();
                 }
             }
-            let mut chain = self.chain.borrow_mut();
             let mut known = self.chained.get();
+            let levels = self.jump_rows.len() / (mech * nw);
+            if k + 1 - known.min(k + 1) > k.count_ones() as usize && k >> levels == 0 {
+                // Far along: from the start by the blocks of the binary digits of k (the chain as it was).
+                let mut at = 0;
+                let mut next = self.jumped.borrow_mut();
+                for b in (0..levels).filter(|b| k >> b & 1 == 1) {
+                    self.forcing_at(at as f64 * self.piece, &rate, &mut w);
+                    let rows = &self.jump_rows[b * mech * nw..(b + 1) * mech * nw];
+                    mat_vec(rows, &w, &mut next);
+                    w[..mech].copy_from_slice(&next);
+                    at += 1 << b;
+                }
+                self.forcing_at(k as f64 * self.piece, &rate, &mut w);
+                return;
+            }
+            let mut chain = self.chain.borrow_mut();
             while known <= k {
                 // The start of piece `known` from that of the one before.
                 let j = known - 1;
@@ -756,7 +843,12 @@ pub(super) mod tests {
         motion.set_matrix(&m);
         motion.set_start(&w0);
         motion.terms = terms_for(r * piece);
-        motion.chained(pieces, piece, &transition(&m, 4, 2, piece), true, &[]);
+        // Rows over 1, 2, 4, ... pieces: a start far along is found by a few jumps, the next by one link.
+        let jumps: Vec<f64> = super::super::form_blocks(&m, 4, 2, (h, r), &[])
+            .iter()
+            .flat_map(|b| b.rows.clone())
+            .collect();
+        motion.chained((pieces, piece), &jumps, (&[], &[]), true, &[]);
         motion.invalidate();
         let scale = 0.01 + 0.2 * h;
         for tau in [0.3 * piece, 3.7 * piece, 0.55 * h, 0.999 * h] {
@@ -786,5 +878,30 @@ pub(super) mod tests {
         assert!((start[0] - want[0]).abs() < 1e-13 * scale);
         let jerk = motion.w_at(k as f64 * piece, 1)[2];
         assert!((motion.second_rate_at(k, 1) - jerk).abs() < 1e-9 * jerk.abs().max(1.0));
+        // A probe of `u - 0.01 v` and of `v`, keyed 7: its rows give the chain's values at every piece's
+        // start (the driver reads events there); no rows, no value.
+        let mut rows = Vec::new();
+        let one = transition(&m, 4, 2, piece);
+        for a in [[1.0, -0.01, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]] {
+            super::super::functional_at_pieces(&a, (&m, &one), (4, 2), (piece, pieces), &mut rows);
+        }
+        assert_eq!(rows.len(), 2 * (pieces - 1) * 4);
+        motion.chained((pieces, piece), &jumps, (&[7], &rows), true, &[]);
+        motion.invalidate();
+        for k in (1..pieces).rev() {
+            motion.piece_start(k, &mut start);
+            let e = super::super::exponential(&m, 4, 2, k as f64 * piece, r);
+            mat_vec(&e[..8], &w0, &mut want);
+            assert!((start[0] - want[0]).abs() < 1e-13 * scale, "{k}");
+            assert!((start[1] - want[1]).abs() < 1e-13 * scale * w, "{k}");
+            let (x, v) = motion.probe(7, k).expect("a probe");
+            assert!(
+                (x - (start[0] - 0.01 * start[1])).abs() < 1e-13 * scale,
+                "{k}"
+            );
+            assert!((v - start[1]).abs() < 1e-13 * scale * w, "{k}");
+        }
+        assert_eq!(motion.probe(7, pieces), None);
+        assert_eq!(motion.probe(6, 1), None);
     }
 }

@@ -21,7 +21,10 @@ pub use exact::{
     live_of, mat_vec, mat_vec_on, series, series_at, step_bound, terms_for, transition, Motion,
     GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
-pub use interval::{exponential, form_integrals, halvings, mat_mul, transition_rows};
+pub use interval::{
+    exponential, form_blocks, functional_at_pieces, halvings, mat_mul, times_transition,
+    transition_rows, Block,
+};
 pub use peaks::{hermite_peak, Hermite, PeakTracker, Piece};
 pub use roots::{brent_root, golden_max};
 pub use rosenbrock::Rosenbrock;

@@ -164,10 +164,9 @@ fn stiff_soil_is_the_fixed_base() {
     }
 }
 
-/// Two buildings on soft soil pounding: the energy balances to 1e-6, the soil's dashpots dissipating.
-#[test]
-fn a_pair_on_soil_pounding_balances_its_energy() {
-    let rec = Record::el_centro_1940();
+/// Two buildings on soft soil (periods 0.4 and 0.8 s fixed; V_s 150 and 250 m/s) 10 mm apart, Hertz-damped,
+/// under El Centro for 8 s.
+fn soil_pair() -> Scenario {
     let b = |name: &str, t: f64, vs: f64| {
         let soil = Soil::HalfSpace {
             vs,
@@ -185,18 +184,29 @@ fn a_pair_on_soil_pounding_balances_its_energy() {
             structure: st,
         }
     };
-    let s = Scenario::new(vec![b("A", 0.4, 150.0), b("B", 0.8, 250.0)], rec)
-        .unwrap()
-        .with_duration(8.0)
-        .unwrap()
-        .with_link(
-            "A",
-            "B",
-            0.01,
-            &ContactModel::new(Model::Hertzdamp, 2.0e10, 0.65).unwrap(),
-            None,
-        )
-        .unwrap();
+    Scenario::new(
+        vec![b("A", 0.4, 150.0), b("B", 0.8, 250.0)],
+        Record::el_centro_1940(),
+    )
+    .unwrap()
+    .with_duration(8.0)
+    .unwrap()
+    .with_link(
+        "A",
+        "B",
+        0.01,
+        &ContactModel::new(Model::Hertzdamp, 2.0e10, 0.65).unwrap(),
+        None,
+    )
+    .unwrap()
+}
+
+/// `s` run as it is (its foundations' fast modes would split each record interval into 16 series-length
+/// steps: the open stretches go a whole interval at a time, `engine/exact.rs`, `Whole`; the rest of an
+/// interval after an impact in blocks of pieces; the impacts stepped) against `s` stepped throughout: the
+/// energy balances to 1e-6; the same impacts, peaks and forces within the tolerance's reach (1e-5), and
+/// fewer than half the steps.
+fn whole_intervals_are_the_stepped_run(s: &Scenario) {
     let r = s.run().unwrap();
     assert!(!r.impacts.is_empty());
     assert!(
@@ -204,10 +214,6 @@ fn a_pair_on_soil_pounding_balances_its_energy() {
         "{}",
         r.energy.relative_error
     );
-    // The foundations' fast modes would split each record interval into 15 series-length steps: the open
-    // stretches go a whole interval at a time (`engine/exact.rs`, `Whole`), the impacts and the rest of an
-    // interval after one are stepped. The same run stepped throughout: the same impacts, peaks and forces
-    // within the tolerance's reach (1e-5), and fewer than half the steps.
     let stepped = s
         .clone()
         .with_propagation(pounding::engine::Propagation::Stepping)
@@ -249,7 +255,28 @@ fn a_pair_on_soil_pounding_balances_its_energy() {
         r.statistics.steps,
         stepped.statistics.steps
     );
+}
+
+/// Two buildings on soft soil pounding: the energy balances to 1e-6, the soil's dashpots dissipating; whole
+/// intervals give the stepped run.
+#[test]
+fn a_pair_on_soil_pounding_balances_its_energy() {
+    let s = soil_pair();
+    whole_intervals_are_the_stepped_run(&s);
     // nu = 0.4 > 1/3: the rocking dashpot uses 2 V_s and a trapped inertia joins the foundation's.
     let f = s.buildings()[0].structure.foundation().unwrap();
     assert!(f.inertia > 4.0e5 * 12.0 * 12.0 / 12.0);
+}
+
+/// The same pair with B on a support the wave reaches 0.2 s later (ten record steps: its intervals stay whole):
+/// whole intervals carry the work the supports do through the contact (the forms of `engine/forms.rs`), and
+/// still give the stepped run.
+#[test]
+fn a_pair_on_soil_under_wave_passage_is_the_stepped_run() {
+    let s = soil_pair()
+        .with_support("far", Record::el_centro_1940().delayed(0.2).unwrap())
+        .unwrap()
+        .with_building_on("B", "far")
+        .unwrap();
+    whole_intervals_are_the_stepped_run(&s);
 }
