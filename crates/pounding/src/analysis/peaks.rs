@@ -206,21 +206,36 @@ impl Peaks {
         let n = sys.layout().dofs();
         let (t0, t1) = (seg.t0, seg.t1);
         let h = t1 - t0;
+        // A segment an event cut short ends inside the step: its end's rates are the segment's own, and
+        // what the step holds past it (the motion as if no event) is not offered.
+        let step = seg.dense.t1() - t0;
+        let cut = h < step - 4.0 * f64::EPSILON * t1.abs();
         let tol = 4.0 * f64::EPSILON * t1.abs();
         for i in 0..n {
             let ground = |tau: f64| sys.ground_in(i, &motion.w0, 2 * n, tau).0;
             let slope = sys.ground_in(i, &motion.w0, 2 * n, 0.0).1;
             let (a0, a1) = (
                 motion.rates[0][n + i] + ground(0.0),
-                motion.rates[4][n + i] + ground(h),
+                if cut {
+                    seg.rate1[n + i]
+                } else {
+                    motion.rates[4][n + i]
+                } + ground(h),
             );
-            let (j0, j1) = (motion.jerk[0][i] + slope, motion.jerk[1][i] + slope);
+            let j1 = if cut {
+                motion.w_at(h, n + i)[2]
+            } else {
+                motion.jerk[1][i]
+            };
+            let (j0, j1) = (motion.jerk[0][i] + slope, j1 + slope);
             if motion.pieces() > 1 {
                 // A whole interval: its exact accelerations at the Gauss nodes too (a foundation's fast
                 // modes ring inside it, which the cubic through the ends may not show).
                 for (j, node) in crate::integrate::GAUSS_NODES.iter().enumerate() {
-                    let a = motion.rates[j + 1][n + i] + ground(node * h);
-                    self.acceleration[i].offer(a.abs(), t0 + node * h);
+                    if node * step <= h {
+                        let a = motion.rates[j + 1][n + i] + ground(node * step);
+                        self.acceleration[i].offer(a.abs(), t0 + node * step);
+                    }
                 }
             }
             let (_, p) = hermite_peak(a0, a1, j0, j1, h);

@@ -95,7 +95,8 @@ fn earliest_event(
             // function that stays at exactly 0 (a storey at rest: its drift rate is identically 0) is no event.
             // A whole interval taken at once: an event function may dip below 0 and back inside it, which
             // its ends do not show; its pieces' starts do, as a series-length step's ends would.
-            let far = if let Some(crossed) = piece_crossing(sys, (e, ev), (dense, y0), motion) {
+            let crossed = piece_crossing(sys, (e, ev), (dense, y0), motion);
+            let far = if let Some((_, crossed)) = crossed {
                 Some(crossed)
             } else if gb < 0.0 || (gb == 0.0 && ga > 0.0) {
                 Some((t1, gb))
@@ -110,10 +111,15 @@ fn earliest_event(
                 None
             };
             let Some((tb, gb)) = far else { continue };
-            // A function that starts at 0 (a touch watched from the separation that just ended an impact)
-            // may rise and come back within one step (the ends part and close again): its crossing is
-            // searched from its largest value.
-            let (ta, ga) = if ga <= 0.0 {
+            // Inside a whole interval, the crossing is bracketed by the pieces' starts on either side of it:
+            // the function may cross and come back between the step's start and there. A function that
+            // starts at 0 (a touch watched from the separation that just ended an impact) may rise and come
+            // back within one step (the ends part and close again): its crossing is searched from its largest
+            // value.
+            let near = crossed.and_then(|(near, _)| near);
+            let (ta, ga) = if let Some(near) = near {
+                near
+            } else if ga <= 0.0 {
                 let (tm, gm) = golden_max(&mut g, t0, tb, 1e-12 * (tb - t0));
                 if gm > 0.0 {
                     (tm, gm)
@@ -138,29 +144,38 @@ fn earliest_event(
     first
 }
 
+/// A time and an event function's value there, s and the function's unit.
+type Sample = (f64, f64);
+
 /// On a whole interval taken at once (more than one piece), the first start of a piece where the event
-/// function of `ev` of element `e` is <= 0, with its value there (the element's deformation from its probe
-/// rows, [`crate::integrate::Motion::probe`], else from the chain of pieces; `y0` the state at the step's
-/// start).
+/// function of `ev` of element `e` is <= 0, with its value there, and the start of the piece before it when
+/// that is inside the step and the function positive there (the element's deformation from its probe rows,
+/// [`crate::integrate::Motion::probe`], else from the chain of pieces; `y0` the state at the step's start).
 fn piece_crossing(
     sys: &System,
     (e, ev): (usize, Event),
     (dense, y0): (&Dense, &[f64]),
     motion: &mut [f64],
-) -> Option<(f64, f64)> {
+) -> Option<(Option<Sample>, Sample)> {
     let m = dense.motion().filter(|m| m.pieces() > 1)?;
     let el = &sys.elements()[e];
     // Whole intervals are taken while every law is affine, whose own states (a work) do not enter its
     // force or its events: the states at the step's start stand for them.
     let states = &y0[sys.layout().block(e)];
-    (1..m.pieces()).find_map(|k| {
+    let mut before = None;
+    for k in 1..m.pieces() {
         let (x, v) = m.probe(e, k).unwrap_or_else(|| {
             m.piece_start(k, motion);
             sys.deformation(e, motion)
         });
         let g = el.event_value(ev, x, v, states);
-        (g <= 0.0).then_some((dense.t0() + k as f64 * m.piece(), g))
-    })
+        let here = (dense.t0() + k as f64 * m.piece(), g);
+        if g <= 0.0 {
+            return Some((before, here));
+        }
+        before = Some(here);
+    }
+    None
 }
 
 /// Whether a touch may come and go inside a step whose deformation turns from closing to opening: the

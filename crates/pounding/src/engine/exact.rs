@@ -240,6 +240,9 @@ pub struct Exact {
     asked: Vec<(f64, usize)>,
     /// The configuration whose matrix the dense output holds.
     dense_config: Option<usize>,
+    /// The configuration whose whole interval's rows (jumps, probes) the dense output holds: a
+    /// series-length step between two blocks of another configuration changes the matrix, not them.
+    chain_config: Option<usize>,
     steps: usize,
     last: f64,
     /// The current configuration takes whole record intervals ([`Whole`]) and leaves the rest to the
@@ -300,6 +303,7 @@ impl Exact {
             dynode: vec![0.0; dim],
             asked: Vec::with_capacity(OFFSETS),
             dense_config: None,
+            chain_config: None,
             steps: 0,
             last: 0.0,
             interval: match sys.ground() {
@@ -364,6 +368,9 @@ impl Exact {
                         .expect("configurations kept");
                     if self.dense_config == Some(i) {
                         self.dense_config = None;
+                    }
+                    if self.chain_config == Some(i) {
+                        self.chain_config = None;
                     }
                     self.configs[i] = config;
                     i
@@ -690,9 +697,10 @@ impl Exact {
                 (1 << i, piece),
                 &w.jumps,
                 (&w.probe_keys, &w.probe_rows),
-                !same_matrix,
+                self.chain_config != Some(motion_config),
                 &self.y[mech..],
             );
+            self.chain_config = Some(motion_config);
         }
         for (j, node) in GAUSS_NODES.iter().enumerate() {
             self.ynode[..mech].copy_from_slice(&self.wn[j + 1][..mech]);
