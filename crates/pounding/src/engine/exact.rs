@@ -55,20 +55,43 @@ struct Length {
 struct Whole {
     /// The interval, s.
     h: f64,
-    /// Its series-length pieces (a power of 2).
-    pieces: usize,
     /// Transition rows to the three Gauss nodes of each block (built when a block is first taken).
     nodes: Vec<Option<[Vec<f64>; 3]>>,
-    /// The blocks of `2^i` pieces, `i = 0 ..= log2(pieces)`: the last is the interval.
-    blocks: Vec<crate::integrate::Block>,
+    /// The transition rows of the blocks of `2^i` pieces, `i = 0 ..= log2(pieces)`, one after the other
+    /// (`mech x nw` each; the last is the interval's): what the dense output's chain jumps with too
+    /// ([`Motion::chained`]).
+    jumps: Vec<f64>,
+    /// Each block's form integrals, in the order of [`Self::quantities`].
+    integrals: Vec<Vec<Vec<f64>>>,
     /// The integrated quantities whose rate is not 0, in the order of each block's form integrals.
     quantities: Vec<usize>,
     /// The elements with events watched, and the rows of their deformations and rates at the pieces'
     /// starts ([`Motion::probe`]): where the driver reads their event functions inside a step.
     probe_keys: Vec<usize>,
     probe_rows: Vec<f64>,
-    /// The blocks' transition rows one after the other ([`Motion::chained`]).
-    jumps: Vec<f64>,
+}
+
+impl Whole {
+    /// Blocks: `log2(pieces) + 1`.
+    fn blocks(&self) -> usize {
+        self.integrals.len()
+    }
+
+    /// The interval's series-length pieces (a power of 2).
+    fn pieces(&self) -> usize {
+        1 << (self.blocks() - 1)
+    }
+
+    /// Length of a piece, s.
+    fn piece(&self) -> f64 {
+        self.h / self.pieces() as f64
+    }
+
+    /// The transition rows of block `i` (`2^i` pieces).
+    fn rows(&self, i: usize) -> &[f64] {
+        let n = self.jumps.len() / self.blocks();
+        &self.jumps[i * n..(i + 1) * n]
+    }
 }
 
 /// How far the cubic Hermite of each displacement through the ends of a whole interval may miss the exact
@@ -124,11 +147,11 @@ struct Configuration {
 
 /// The whole interval of length `h` of configuration `c` (with its forms) of `sys`.
 fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f64) -> Whole {
-    use crate::integrate::{form_blocks, functional_at_pieces, halvings};
+    use crate::integrate::{form_blocks, functional_at_pieces};
     let forms = c.forms.as_deref().unwrap_or_default();
     let qs: Vec<&[f64]> = forms.iter().map(|(_, q)| q.as_slice()).collect();
-    let pieces = 1usize << halvings(c.r * h);
     let blocks = form_blocks(&c.m, nw, mech, (h, c.r), &qs);
+    let pieces = 1usize << (blocks.len() - 1);
     let (mut probe_keys, mut probe_rows) = (Vec::new(), Vec::new());
     for (e, el) in sys.elements().iter().enumerate() {
         if el.watched().is_empty() {
@@ -147,13 +170,12 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
     }
     Whole {
         h,
-        pieces,
         nodes: (0..blocks.len()).map(|_| None).collect(),
         quantities: forms.iter().map(|(k, _)| *k).collect(),
         probe_keys,
         probe_rows,
         jumps: blocks.iter().flat_map(|b| b.rows.iter().copied()).collect(),
-        blocks,
+        integrals: blocks.into_iter().map(|b| b.integrals).collect(),
     }
 }
 
@@ -162,14 +184,15 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
 /// blocks of the binary digits of the pieces before it ([`crate::integrate::times_transition`]), in a few
 /// products where scaling and squaring would take a dozen.
 fn rows_at(m: &[f64], whole: &Whole, tau: f64, (nw, mech): (usize, usize)) -> Vec<f64> {
-    let piece = whole.h / whole.pieces as f64;
-    let before = ((tau / piece).floor() as usize).min(whole.pieces);
+    let piece = whole.piece();
+    let before = ((tau / piece).floor() as usize).min(whole.pieces());
     let mut rows = transition(m, nw, mech, (tau - before as f64 * piece).max(0.0));
     let mut next = rows.clone();
-    for (b, block) in whole.blocks.iter().enumerate() {
+    for b in 0..whole.blocks() {
         if before >> b & 1 == 1 {
             let t = (1usize << b) as f64 * piece;
-            crate::integrate::times_transition(&rows, (m, &block.rows), (nw, mech), t, &mut next);
+            let block = whole.rows(b);
+            crate::integrate::times_transition(&rows, (m, block), (nw, mech), t, &mut next);
             std::mem::swap(&mut rows, &mut next);
         }
     }
@@ -467,7 +490,7 @@ impl Exact {
             self.cap = usize::MAX;
         }
         let whole = c.whole.as_ref().expect("built above");
-        let (top, piece) = (whole.blocks.len() - 1, whole.h / whole.pieces as f64);
+        let (top, piece) = (whole.blocks() - 1, whole.piece());
         let (t0, span) = (self.t, t_stop - self.t);
         let count = (span / piece + 1e-9).floor();
         let rest = span - count * piece;
@@ -548,22 +571,21 @@ impl Exact {
         let c = &mut self.configs[self.current];
         let whole = c.whole.as_mut().expect("built by step_whole");
         if whole.nodes[i].is_none() {
-            let length = (1usize << i) as f64 * whole.h / whole.pieces as f64;
+            let length = (1usize << i) as f64 * whole.piece();
             let rows = GAUSS_NODES.map(|g| rows_at(&c.m, whole, g * length, (nw, mech)));
             whole.nodes[i] = Some(rows);
         }
-        let block = &whole.blocks[i];
         // Over the components of w that are not 0 (constant forces of linear laws, a ground channel the
         // record does not have).
         live_of(&self.w, &mut self.live);
         let (w, live) = (&self.w, &self.live);
-        mat_vec_on(&block.rows, w, live, &mut self.wn[0][..mech]);
+        mat_vec_on(whole.rows(i), w, live, &mut self.wn[0][..mech]);
         let nodes = whole.nodes[i].as_ref().expect("built above");
         for (p, out) in nodes.iter().zip(self.wn[1..].iter_mut()) {
             mat_vec_on(p, w, live, &mut out[..mech]);
         }
         self.inc.fill(0.0);
-        for (k, g) in whole.quantities.iter().zip(&block.integrals) {
+        for (k, g) in whole.quantities.iter().zip(&whole.integrals[i]) {
             self.inc[*k] = live
                 .iter()
                 .map(|&i| {
@@ -692,7 +714,7 @@ impl Exact {
         motion.acc0.copy_from_slice(&self.y[mech..]);
         motion.rates[0].copy_from_slice(&self.dydt);
         let whole = block.and_then(|i| Some((i, config.whole.as_ref()?)));
-        let piece = whole.map_or(h, |(_, w)| w.h / w.pieces as f64);
+        let piece = whole.map_or(h, |(_, w)| w.piece());
         motion.terms = crate::integrate::terms_for(config.r * piece);
         motion.invalidate();
         self.dense_config = Some(motion_config);

@@ -230,8 +230,6 @@ pub struct Motion {
     pieces: usize,
     /// Length of a piece, s.
     piece: f64,
-    /// Transition rows over one piece (`mech x nw`).
-    piece_rows: Vec<f64>,
     /// The motion at the start of pieces 1, 2, ... (`mech` each), found on demand from the one before.
     chain: RefCell<Vec<f64>>,
     /// Pieces whose start is known (piece 0's is `w0`).
@@ -254,8 +252,8 @@ pub struct Motion {
     /// then the second's, `nw` each.
     probe_keys: Vec<usize>,
     probe_rows: Vec<f64>,
-    /// Transition rows over `1, 2, 4, ...` pieces (`mech x nw` each): a piece's start far along the chain
-    /// in a few products ([`Self::ensure_chain`]).
+    /// Transition rows over `1, 2, 4, ...` pieces (`mech x nw` each): the chain's links (one piece), and a
+    /// piece's start far along the chain in a few products ([`Self::ensure_chain`]).
     jump_rows: Vec<f64>,
     /// Room for one jump's product (`mech`).
     jumped: RefCell<Vec<f64>>,
@@ -283,7 +281,6 @@ impl Motion {
             acc_built: Cell::new(false),
             pieces: 1,
             piece: 0.0,
-            piece_rows: Vec::new(),
             chain: RefCell::new(Vec::new()),
             chained: Cell::new(1),
             piece_w: RefCell::new(vec![0.0; nw]),
@@ -352,12 +349,9 @@ impl Motion {
         let fresh = fresh || self.piece != piece;
         self.pieces = pieces;
         self.piece = piece;
-        let rows = &jumps[..self.mech * self.w0.len()];
         if fresh || self.jump_rows.len() != jumps.len() {
             self.jump_rows.clear();
             self.jump_rows.extend_from_slice(jumps);
-            self.piece_rows.clear();
-            self.piece_rows.extend_from_slice(rows);
             self.probe_keys.clear();
             self.probe_keys.extend_from_slice(probes.0);
             self.probe_rows.clear();
@@ -545,7 +539,7 @@ impl Motion {
                 }
                 self.forcing_at(j as f64 * self.piece, &rate, &mut w);
                 mat_vec(
-                    &self.piece_rows,
+                    &self.jump_rows[..mech * nw],
                     &w,
                     &mut chain[(known - 1) * mech..known * mech],
                 );
