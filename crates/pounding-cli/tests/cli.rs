@@ -2836,9 +2836,10 @@ fn an_elastic_contact_dissipates_nothing_and_no_impact_dissipates_less_than_noth
         let e: f64 = cells[energy].parse().unwrap();
         if cells[contact] == "span2|span3" {
             elastic += 1;
-            // 0 but for the elastic energy at the located touch and separation, whose penetrations are
-            // rounding, about 1e-16 m: k d^2.5 / 2.5 < 1e-29 J.
-            assert!(e.abs() < 1e-20, "{row}");
+            // 0 but for the elastic energy at the located touch and separation. Their penetrations are
+            // what is left of the event's root on the steps' solution, below the decks' displacement
+            // tolerance (1e-7 of 4.69 / 10^2 m, span 2): k d^2.5 / 2.5 < 2e10 (4.7e-9)^2.5 / 2.5 = 1.2e-11 J.
+            assert!(e.abs() < 1.2e-11, "{row}");
         } else {
             assert!(e > 0.0, "{row}");
         }

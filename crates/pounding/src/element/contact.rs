@@ -351,6 +351,11 @@ impl ElementLaw for Contact {
         out[1] = out[0];
     }
 
+    /// Both works grow impact after impact: each impact is held as closely as the first.
+    fn work_states(&self) -> std::ops::Range<usize> {
+        0..2
+    }
+
     #[inline]
     fn evaluate(&self, x: f64, v: f64, _s: &[f64], ds: &mut [f64]) -> (f64, f64) {
         let f = self.law_force(x, v);

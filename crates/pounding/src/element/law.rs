@@ -171,6 +171,12 @@ pub trait ElementLaw {
     /// scale, from the scales of its ends' motion; written to `out` (one per state).
     fn state_tolerances(&self, _scales: &Scales, _out: &mut [f64]) {}
 
+    /// Those of its states that accumulate a work over the whole run (J), held to their absolute tolerance
+    /// alone ([`crate::integrate::Tolerance::absolute`]).
+    fn work_states(&self) -> std::ops::Range<usize> {
+        0..0
+    }
+
     /// The force of the law and the viscous force it adds (N, resisting a growing `x`) at deformation `x`
     /// (m), rate `v` (m/s) and states `s`; the rates of its states go to `ds`. The viscous part is counted
     /// as viscous damping in the energy balance.

@@ -59,6 +59,9 @@ macro_rules! registry {
             fn state_tolerances(&self, scales: &Scales, out: &mut [f64]) {
                 dispatch!(self, l => l.state_tolerances(scales, out))
             }
+            fn work_states(&self) -> std::ops::Range<usize> {
+                dispatch!(self, l => l.work_states())
+            }
             #[inline]
             fn evaluate(&self, x: f64, v: f64, s: &[f64], ds: &mut [f64]) -> (f64, f64) {
                 dispatch!(self, l => l.evaluate(x, v, s, ds))

@@ -25,7 +25,7 @@ pub use layout::Layout;
 pub use observe::{EventInfo, Observer, Segment};
 pub use propagator::Propagation;
 
-use crate::element::{Element, End};
+use crate::element::{Element, ElementLaw, End};
 use crate::ground_motion::Record;
 use crate::integrate::{Dense, DenseComponent, OdeSystem};
 
@@ -315,6 +315,17 @@ impl<'a> System<'a> {
         }
         quiet.sort_unstable();
         quiet
+    }
+
+    /// The state components that accumulate a work over the whole run
+    /// ([`crate::integrate::Tolerance::absolute`]): the elements' work states.
+    pub fn work_components(&self) -> Vec<usize> {
+        let l = &self.layout;
+        self.elements
+            .iter()
+            .enumerate()
+            .flat_map(|(e, el)| el.law.work_states().map(move |k| l.block(e).start + k))
+            .collect()
     }
 
     /// Deformation `x = u_a - u_b` (m) and its rate (m/s) of element `e` in state `y`.

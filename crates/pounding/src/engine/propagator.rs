@@ -64,6 +64,11 @@ impl Propagator {
         self.exact.as_ref().filter(|_| self.on_exact)
     }
 
+    /// Whether the exact stepper is the one in use.
+    pub fn is_exact(&self) -> bool {
+        self.active().is_some()
+    }
+
     pub fn t(&self) -> f64 {
         self.active().map_or_else(|| self.dp.t(), Exact::t)
     }
@@ -112,6 +117,27 @@ impl Propagator {
             return Ok(());
         }
         self.dp.step_until(sys, t_stop)
+    }
+
+    /// The state at an event's time `te` inside the last step, which started at `(t0, y0)`, to `out`: on
+    /// the exact solution, or from the Runge–Kutta step taken again to end at `te`. False when that step
+    /// was refused and a shorter one taken instead (the event then lies beyond the step).
+    pub fn settle_at(
+        &mut self,
+        sys: &System,
+        (t0, y0): (f64, &[f64]),
+        te: f64,
+        out: &mut [f64],
+    ) -> Result<bool, Error> {
+        if self.is_exact() || te == self.t() || te <= t0 {
+            self.state_at(sys, te, out);
+            return Ok(true);
+        }
+        let reached = self.dp.redo_to(sys, (t0, y0), te)?;
+        if reached {
+            out.copy_from_slice(self.dp.y());
+        }
+        Ok(reached)
     }
 
     /// The state at `t` inside the last step (an event's).

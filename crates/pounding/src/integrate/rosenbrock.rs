@@ -42,6 +42,8 @@ pub struct Rosenbrock {
     n: usize,
     controlled: usize,
     tol: Tolerance,
+    /// Each component's relative tolerance ([`Tolerance::relative`]).
+    rel: Vec<f64>,
     t: f64,
     h: f64,
     y: Vec<f64>,
@@ -71,6 +73,7 @@ impl Rosenbrock {
         Self {
             n,
             controlled,
+            rel: tol.relative(),
             tol,
             t: 0.0,
             h: 0.0,
@@ -217,7 +220,7 @@ impl Rosenbrock {
             let mut err = 0.0;
             for i in 0..n {
                 let e = h / 6.0 * (k1[i] - 2.0 * k2[i] + k3[i]);
-                let sc = self.tol.atol[i] + self.tol.rtol * self.y[i].abs().max(self.ynew[i].abs());
+                let sc = self.tol.atol[i] + self.rel[i] * self.y[i].abs().max(self.ynew[i].abs());
                 err += (e / sc) * (e / sc);
             }
             let counted = if self.tol.quiet.is_empty() {

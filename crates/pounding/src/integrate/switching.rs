@@ -59,6 +59,7 @@ impl Stepper {
                 rtol: IMPLICIT_TOLERANCE * tol.rtol,
                 atol: tol.atol.iter().map(|a| IMPLICIT_TOLERANCE * a).collect(),
                 quiet: tol.quiet.clone(),
+                absolute: tol.absolute.clone(),
             })
         });
         Self {
@@ -144,6 +145,29 @@ impl Stepper {
                 r.step_until(sys, t_stop)
             }
             _ => self.explicit.step_until(sys, t_stop),
+        }
+    }
+
+    /// Takes the step from `(t0, y0)` to `t1` again with the stepper in use, and says whether it was
+    /// accepted (else a shorter one was taken). An event's state then comes from a step that ends at it,
+    /// held to the tolerance, not from the interpolant of a longer step (whose error nothing controls).
+    pub fn redo_to<S: OdeSystem>(
+        &mut self,
+        sys: &S,
+        (t0, y0): (f64, &[f64]),
+        t1: f64,
+    ) -> Result<bool, Error> {
+        match (self.stretch, self.implicit.as_mut()) {
+            (Some(_), Some(r)) => {
+                r.reset(sys, t0, y0, t1 - t0);
+                r.step_until(sys, t1)?;
+                Ok(r.t() == t1)
+            }
+            _ => {
+                self.explicit.reset(sys, t0, y0, t1 - t0);
+                self.explicit.step_until(sys, t1)?;
+                Ok(self.explicit.t() == t1)
+            }
         }
     }
 

@@ -131,6 +131,34 @@ fn a_bumper_never_consumed_is_its_soft_law_alone() {
     }
 }
 
+/// The state at an event is the steps' solution, not an interpolant's: the rebound of a block on a
+/// Hertz-damped bumper at tolerance 1e-10 is that of a 1e-12 run to 1e-9 (it was 3e-8 off, and 1e-7 once
+/// the contact's work was held more closely: the interpolant of the step that crossed the separation gave
+/// its velocity). So is the peak force.
+#[test]
+fn an_impact_rebounds_as_the_tolerance_says() {
+    let soft = ContactModel::new(Model::Hertzdamp, 1.0e9, 0.4).unwrap();
+    let run = |tol: f64| {
+        let s = Scenario::new(
+            vec![building("block", &[M], &[M * 1e-6], 0.0)],
+            pulse(-2.0, 0.1),
+        )
+        .unwrap()
+        .with_wall(wall("block", Side::Right, 0.05, &soft))
+        .unwrap()
+        .with_duration(1.0)
+        .unwrap()
+        .with_tolerance(tol)
+        .unwrap();
+        let r = s.run().unwrap();
+        assert_eq!(r.impacts.len(), 1);
+        (r.impacts[0].e_post.unwrap(), r.impacts[0].peak_force)
+    };
+    let ((e, f), (e_ref, f_ref)) = (run(1e-10), run(1e-12));
+    assert!((e / e_ref - 1.0).abs() < 1e-9, "e_post {e} vs {e_ref}");
+    assert!((f / f_ref - 1.0).abs() < 1e-8, "peak force {f} vs {f_ref}");
+}
+
 #[test]
 fn a_consumed_bumper_of_two_springs_stores_the_impact_energy_in_both() {
     // Elastic layer k1 and elastic hard law k2 (Hooke, e = 1): at the largest penetration d the block's
