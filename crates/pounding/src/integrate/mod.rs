@@ -162,6 +162,23 @@ impl Dense {
         }
     }
 
+    /// The interpolant of component `i` of a Runge–Kutta step as a polynomial in `theta = (t - t0) / h`:
+    /// its coefficients of `theta^0 .. theta^4`; `None` on a step propagated exactly.
+    pub fn quartic(&self, i: usize) -> Option<[f64; 5]> {
+        if self.exact.is_some() {
+            return None;
+        }
+        // r0 + th r1 + th (1 - th) r2 + th^2 (1 - th) r3 + th^2 (1 - th)^2 r4, expanded.
+        let r = |k: usize| self.r[k][i];
+        Some([
+            r(0),
+            r(1) + r(2),
+            r(3) + r(4) - r(2),
+            -r(3) - 2.0 * r(4),
+            r(4),
+        ])
+    }
+
     /// Interpolated component `i` at time `t` (in the step): the cheap form of [`Self::eval`] when only a
     /// few components are needed.
     #[inline]
