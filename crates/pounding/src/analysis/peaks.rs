@@ -4,7 +4,7 @@
 use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
 use crate::engine::{EventInfo, Observer, Segment, System};
-use crate::integrate::{brent_root, golden_max, hermite_peak, Hermite, OdeSystem};
+use crate::integrate::{brent_root, golden_max, hermite_peak, quadratic_roots, Hermite, OdeSystem};
 
 /// A largest value and its time, s.
 #[derive(Clone, Copy, Debug, Default)]
@@ -492,23 +492,6 @@ fn parabolic_max(mut f: impl FnMut(f64) -> f64, t: f64, (a, b): (f64, f64), h: f
         }
     }
     best
-}
-
-/// The real roots of `a x^2 + b x + c` (none, one or two; a linear or constant one when `a` is 0).
-fn quadratic_roots(a: f64, b: f64, c: f64) -> impl Iterator<Item = f64> {
-    let roots = if a == 0.0 {
-        [(b != 0.0).then(|| -c / b), None]
-    } else {
-        let d = b * b - 4.0 * a * c;
-        if d < 0.0 {
-            [None, None]
-        } else {
-            // The root of larger magnitude first, the other from the product (no cancellation).
-            let q = -0.5 * (b + b.signum() * d.sqrt());
-            [Some(q / a), (q != 0.0).then(|| c / q)]
-        }
-    };
-    roots.into_iter().flatten()
 }
 
 /// The force of element `e` in state `y`, elastic and viscous, N; `ds` is room for the rates of its states.

@@ -26,7 +26,7 @@ pub use interval::{
     transition_rows, Block,
 };
 pub use peaks::{hermite_peak, Hermite, PeakTracker, Piece};
-pub use roots::{brent_root, golden_max};
+pub use roots::{brent_root, golden_max, quadratic_roots};
 pub use rosenbrock::Rosenbrock;
 pub use switching::Stepper;
 

@@ -1,7 +1,7 @@
 //! Peaks of a quantity between integration nodes: the cubic Hermite interpolant of a step, and the largest
 //! value of a history given piece by piece, located by golden-section search on its interpolant.
 
-use super::roots::golden_max;
+use super::roots::{golden_max, quadratic_roots};
 
 /// The cubic Hermite interpolant on a step of length `h` of a quantity with values `pa`, `pb` and slopes
 /// `va`, `vb` at its ends.
@@ -41,24 +41,11 @@ impl Hermite {
     /// The fractions of the step (in [0, 1]) where the slope vanishes, when the slopes at the ends differ in
     /// sign (the case of one interior extremum; `NaN` for none).
     pub fn extrema(&self) -> [f64; 2] {
-        let mut roots = [f64::NAN; 2];
         if self.va * self.vb > 0.0 || self.h <= 0.0 {
-            return roots;
+            return [f64::NAN; 2];
         }
         // p'(s) = h va + 2 b s + 3 c s^2.
-        let (qa, qb, qc) = (3.0 * self.c, 2.0 * self.b, self.d);
-        if qa.abs() <= 1e-14 * (qb.abs() + qc.abs()) {
-            if qb != 0.0 {
-                roots[0] = -qc / qb;
-            }
-        } else {
-            let disc = qb * qb - 4.0 * qa * qc;
-            if disc >= 0.0 {
-                let q = -0.5 * (qb + disc.sqrt().copysign(qb));
-                roots = [q / qa, if q != 0.0 { qc / q } else { f64::NAN }];
-            }
-        }
-        roots.map(|s| {
+        quadratic_roots(3.0 * self.c, 2.0 * self.b, self.d).map(|s| {
             if (0.0..=1.0).contains(&s) {
                 s
             } else {

@@ -1,5 +1,20 @@
 //! Scalar root finding and maximisation used for event location and calibration.
 
+/// The real roots of `a x^2 + b x + c`, `NaN` for each one missing: the linear root when `a` is negligible
+/// against `b` and `c` (1e-14), else the root of larger magnitude and the other from their product (no
+/// cancellation).
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> [f64; 2] {
+    if a.abs() <= 1e-14 * (b.abs() + c.abs()) {
+        return [if b != 0.0 { -c / b } else { f64::NAN }, f64::NAN];
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return [f64::NAN; 2];
+    }
+    let q = -0.5 * (b + disc.sqrt().copysign(b));
+    [q / a, if q != 0.0 { c / q } else { f64::NAN }]
+}
+
 /// Brent's method (Brent 1973, *Algorithms for Minimization without Derivatives*, ch. 4): a root of `f`
 /// in `[a, b]` given `f(a)` and `f(b)` of opposite signs (or one of them zero), to an absolute tolerance
 /// `xtol` on the argument. Returns `None` if the bracket does not change sign.

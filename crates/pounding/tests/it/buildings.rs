@@ -251,6 +251,12 @@ fn isolated_impact_delivers_the_single_impact_e() {
 
 /// The two-SDOF example (examples/two-sdof.toml): T = 0.5 s and 1.0 s, 5 %, 20 mm, papi e = 0.65.
 fn two_sdof(model: Model, k: f64) -> Scenario {
+    two_sdof_at(model, k, 0.02)
+}
+
+/// Two SDOFs of 5e5 kg (T 0.5 s and 1 s, 5 %) `gap` m apart under El Centro, contact `model` of stiffness
+/// `k` and e 0.65.
+pub fn two_sdof_at(model: Model, k: f64, gap: f64) -> Scenario {
     Scenario::new(
         vec![
             building("left", &[5.0e5], &[7.8957e7], 0.05),
@@ -262,7 +268,7 @@ fn two_sdof(model: Model, k: f64) -> Scenario {
     .with_link(
         "left",
         "right",
-        0.02,
+        gap,
         &ContactModel::new(model, k, 0.65).unwrap(),
         None,
     )

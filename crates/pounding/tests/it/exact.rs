@@ -3,7 +3,7 @@
 //! storeys), its peaks located inside the intervals included, to 1e-10 at the default tolerance; and the
 //! exact and stepped propagations of a pounding run agree within the tolerance.
 
-use super::buildings::building;
+use super::buildings::{building, two_sdof_at};
 use pounding::analysis::Scenario;
 use pounding::contact::{ContactModel, Model};
 use pounding::engine::Propagation;
@@ -332,25 +332,10 @@ fn stepped_pounding_peaks_in_absolute_acceleration_fall_inside_steps() {
         } else {
             2.0e10
         };
-        let s = Scenario::new(
-            vec![
-                building("left", &[5.0e5], &[7.8957e7], 0.05),
-                building("right", &[5.0e5], &[1.9739e7], 0.05),
-            ],
-            Record::el_centro_1940(),
-        )
-        .unwrap()
-        .with_duration(4.0)
-        .unwrap()
-        .with_link(
-            "left",
-            "right",
-            0.01,
-            &ContactModel::new(model, k, 0.65).unwrap(),
-            None,
-        )
-        .unwrap()
-        .with_propagation(Propagation::Stepping);
+        let s = two_sdof_at(model, k, 0.01)
+            .with_duration(4.0)
+            .unwrap()
+            .with_propagation(Propagation::Stepping);
         let r = s.clone().run().unwrap();
         let reference = s
             .with_tolerance(1e-11)
