@@ -5,7 +5,8 @@
 //! the transition matrices of a configuration (keyed by its laws' stiffnesses and viscous coefficients) and
 //! step length are built once and kept, a few configurations at a time. The energies and the laws' own
 //! integrated states (a contact's work) are integrated along the exact motion by three-point
-//! Gauss–Legendre quadrature. Events are located on the exact motion ([`crate::integrate::Motion`]).
+//! Gauss–Legendre quadrature, their rates at the nodes (and the state's at a step's end) read off the
+//! configuration's matrix and forms ([`AffineRates`]) rather than the laws. Events are located on the exact motion ([`crate::integrate::Motion`]).
 //!
 //! A configuration whose fast modes (a foundation on soil) would split an interval into many such steps takes
 //! each whole interval in one ([`Whole`]): its transitions by scaling and squaring, its energies as quadratic
@@ -15,6 +16,7 @@
 //! the grid of pieces; so is an interval whose motion the cubic Hermite screens would misread
 //! ([`HERMITE_MISS`]), in blocks half as long.
 
+use super::forms::AffineRates;
 use super::linear::{channel_at, forcing};
 use super::System;
 use crate::integrate::{
@@ -136,6 +138,9 @@ struct Configuration {
     /// For a configuration too costly in series-length steps: the rates of its integrated quantities as
     /// forms (`None`: a law cannot give them, or a contact is closed), and the whole interval once built.
     forms: Option<Vec<(usize, Vec<f64>)>>,
+    /// The rates of the state at any `w` (`None`: a law cannot give its states' rates): at a step's Gauss
+    /// nodes and end in place of the right-hand side.
+    rates: Option<AffineRates>,
     whole: Option<Whole>,
     /// Whole intervals taken, and left to the stepper for their Hermite misses ([`HERMITE_MISS`]): a
     /// configuration whose fast modes ring (lightly damped) misses nearly always, and stops trying.
@@ -176,6 +181,17 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
         probe_rows,
         jumps: blocks.iter().flat_map(|b| b.rows.iter().copied()).collect(),
         integrals: blocks.into_iter().map(|b| b.integrals).collect(),
+    }
+}
+
+/// `w` at `tau` into a step that started at `w0`, its motion `motion` (`mech` components, the rest unread)
+/// there: the ground channels carried along their lines, the constant forces as they were.
+/// `fd` components after the motion carry the channels (`[g_0, s_0, g_1, s_1, ...]`).
+fn w_at(motion: &[f64], (w0, mech, fd): (&[f64], usize, usize), tau: f64, out: &mut [f64]) {
+    out.copy_from_slice(w0);
+    out[..mech].copy_from_slice(&motion[..mech]);
+    for c in (mech..mech + fd).step_by(2) {
+        out[c] += w0[c + 1] * tau;
     }
 }
 
@@ -259,6 +275,8 @@ pub struct Exact {
     series: Vec<f64>,
     ynode: Vec<f64>,
     dynode: Vec<f64>,
+    /// `w` at a Gauss node or a step's end, whole (the motion and the forcing there).
+    wfull: Vec<f64>,
     /// Offsets the last step's observers asked of its motion (room for [`OFFSETS`]).
     asked: Vec<(f64, usize)>,
     /// The configuration whose matrix the dense output holds.
@@ -324,6 +342,7 @@ impl Exact {
             series: vec![0.0; TERMS * nw],
             ynode: vec![0.0; dim],
             dynode: vec![0.0; dim],
+            wfull: vec![0.0; nw],
             asked: Vec::with_capacity(OFFSETS),
             dense_config: None,
             chain_config: None,
@@ -361,15 +380,20 @@ impl Exact {
                     el.law.as_contact().is_some()
                         && el.affine().is_none_or(|a| a.k != 0.0 || a.c != 0.0)
                 });
+                let fine = self.fine_work(r) <= MAX_INTERVAL_WORK;
+                let whole = !fine
+                    && !closed
+                    && self.nw <= MAX_WHOLE_DIM
+                    && (MIN_PIECES..=MAX_PIECES).contains(&(1usize << halvings(r * self.interval)));
+                // Forms only for a configuration that will be stepped exactly (many are met and refused).
+                let forms = (fine || whole).then(|| sys.rate_forms()).flatten();
+                let rates = forms
+                    .as_deref()
+                    .map(|f| AffineRates::new(&m, self.nw, self.mech / 2, f));
                 let config = Configuration {
                     key: self.key.clone(),
-                    forms: (self.fine_work(r) > MAX_INTERVAL_WORK
-                        && !closed
-                        && self.nw <= MAX_WHOLE_DIM
-                        && (MIN_PIECES..=MAX_PIECES)
-                            .contains(&(1usize << halvings(r * self.interval))))
-                    .then(|| sys.rate_forms())
-                    .flatten(),
+                    forms: forms.filter(|_| whole),
+                    rates,
                     r,
                     m,
                     lengths: Vec::new(),
@@ -734,15 +758,28 @@ impl Exact {
             self.chain_config = Some(motion_config);
         }
         for (j, node) in GAUSS_NODES.iter().enumerate() {
-            self.ynode[..mech].copy_from_slice(&self.wn[j + 1][..mech]);
             let tau = node * h;
-            sys.rhs_in(
-                t0 + tau,
-                forcing(&self.w, mech, tau),
-                &self.ynode,
-                &mut self.dynode,
-            );
-            motion.rates[j + 1].copy_from_slice(&self.dynode);
+            match &config.rates {
+                Some(rates) => {
+                    w_at(
+                        &self.wn[j + 1],
+                        (&self.w, mech, self.lines.len()),
+                        tau,
+                        &mut self.wfull,
+                    );
+                    rates.write(&self.wfull, &mut motion.rates[j + 1]);
+                }
+                None => {
+                    self.ynode[..mech].copy_from_slice(&self.wn[j + 1][..mech]);
+                    sys.rhs_in(
+                        t0 + tau,
+                        forcing(&self.w, mech, tau),
+                        &self.ynode,
+                        &mut self.dynode,
+                    );
+                    motion.rates[j + 1].copy_from_slice(&self.dynode);
+                }
+            }
         }
         if whole.is_none() {
             for k in 0..acc {
@@ -755,7 +792,18 @@ impl Exact {
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;
-        sys.rhs_in(t1, forcing(&self.w, mech, h), &self.y, &mut self.dydt);
+        match &config.rates {
+            Some(rates) => {
+                w_at(
+                    &self.wn[0],
+                    (&self.w, mech, self.lines.len()),
+                    h,
+                    &mut self.wfull,
+                );
+                rates.write(&self.wfull, &mut self.dydt);
+            }
+            None => sys.rhs_in(t1, forcing(&self.w, mech, h), &self.y, &mut self.dydt),
+        }
         motion.rates[4].copy_from_slice(&self.dydt);
         // The jerks: the velocities' rows of M on the rates (the forcing's rates are its slopes).
         let (nw, n, fd) = (self.nw, mech / 2, self.lines.len());

@@ -89,3 +89,65 @@ impl System<'_> {
         )
     }
 }
+
+/// Nonzero entries `(a, b, value)` of a sparse matrix or form.
+type Entries = Vec<(usize, usize, f64)>;
+
+/// The rate of every layout component at any `w` of one configuration, without evaluating the laws: the
+/// displacements' rates are the velocities, the velocities' the rows of `M` (m/s^2 or rad/s^2), and the
+/// integrated quantities' their forms ([`System::rate_forms`]; 0 where a quantity has none). Sparse: a
+/// configuration's `M` and forms have a few entries per row, so the rates at a step's Gauss nodes and end
+/// cost a small part of the right-hand side they stand for.
+#[derive(Debug)]
+pub(crate) struct AffineRates {
+    /// Degrees of freedom.
+    n: usize,
+    /// The nonzero entries `(i, j, M[n + i][j])` of the velocities' rows.
+    rows: Entries,
+    /// For each integrated quantity with a form (layout component `2 n + k`): `k` and the form's entries
+    /// `(a, b, c)` for `c w_a w_b`, each pair once (`a <= b`).
+    forms: Vec<(usize, Entries)>,
+}
+
+impl AffineRates {
+    /// The rates of the configuration of matrix `m` (`nw x nw`, row-major) with `n` degrees of freedom and
+    /// the integrated quantities' `forms`.
+    pub(crate) fn new(m: &[f64], nw: usize, n: usize, forms: &[(usize, Vec<f64>)]) -> Self {
+        let rows = (0..n)
+            .flat_map(|i| (0..nw).map(move |j| (i, j, m[(n + i) * nw + j])))
+            .filter(|&(_, _, v)| v != 0.0)
+            .collect();
+        let forms = forms
+            .iter()
+            .map(|(k, q)| {
+                let entries = (0..nw)
+                    .flat_map(|a| (a..nw).map(move |b| (a, b)))
+                    .map(|(a, b)| {
+                        let c = if a == b {
+                            q[a * nw + a]
+                        } else {
+                            q[a * nw + b] + q[b * nw + a]
+                        };
+                        (a, b, c)
+                    })
+                    .filter(|&(_, _, c)| c != 0.0)
+                    .collect();
+                (*k, entries)
+            })
+            .collect();
+        Self { n, rows, forms }
+    }
+
+    /// Writes the rate of each layout component at `w` to `out` (the layout's length).
+    pub(crate) fn write(&self, w: &[f64], out: &mut [f64]) {
+        let n = self.n;
+        out[..n].copy_from_slice(&w[n..2 * n]);
+        out[n..].fill(0.0);
+        for &(i, j, v) in &self.rows {
+            out[n + i] += v * w[j];
+        }
+        for (k, entries) in &self.forms {
+            out[2 * n + k] = entries.iter().map(|&(a, b, c)| c * w[a] * w[b]).sum();
+        }
+    }
+}
