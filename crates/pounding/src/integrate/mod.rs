@@ -465,6 +465,22 @@ impl DormandPrince {
         sys.rhs(t0, &self.y, &mut self.k[0]);
     }
 
+    /// Restarts at the start `(t0, y0)` of the last accepted step with first trial step `h0`, as
+    /// [`Self::reset`] would, but keeping the rate there that the step began with (first-same-as-last left
+    /// it in the seventh stage): one evaluation of the right-hand side fewer when a step is taken again
+    /// (an event's, [`crate::engine`]'s settling). `false`, with nothing done, when the last accepted step
+    /// did not start at `(t0, y0)`.
+    pub fn restart_last(&mut self, t0: f64, y0: &[f64], h0: f64) -> bool {
+        if self.accepted == 0 || self.dense.t0 != t0 || self.dense.r[0] != y0 {
+            return false;
+        }
+        self.k.swap(0, 6);
+        self.t = t0;
+        self.y.copy_from_slice(y0);
+        self.h = h0.min(self.h_max);
+        true
+    }
+
     /// Current time.
     pub fn t(&self) -> f64 {
         self.t

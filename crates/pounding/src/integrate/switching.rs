@@ -164,7 +164,9 @@ impl Stepper {
                 Ok(r.t() == t1)
             }
             _ => {
-                self.explicit.reset(sys, t0, y0, t1 - t0);
+                if !self.explicit.restart_last(t0, y0, t1 - t0) {
+                    self.explicit.reset(sys, t0, y0, t1 - t0);
+                }
                 self.explicit.step_until(sys, t1)?;
                 Ok(self.explicit.t() == t1)
             }
