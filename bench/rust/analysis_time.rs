@@ -4,8 +4,9 @@
 //! whole command, in one session, and builds it against an older commit too.
 //!
 //!     cargo run --release --manifest-path bench/rust/Cargo.toml --bin analysis-time -- [--repeat N]
-//!         [--stepping] FILE...
+//!         [--stepping] [--summary-only] FILE...
 //!
+//! `--summary-only` runs as a study's runs do (`RunOptions::summary_only`: no histories, the summary alone).
 //! `--stepping` runs every scenario with `[analysis] propagation = "stepping"` (the adaptive stepper
 //! throughout) instead of its own setting: the same binary times both ways.
 
@@ -21,6 +22,13 @@ fn main() {
     }
     let stepping = args.iter().any(|a| a == "--stepping");
     args.retain(|a| a != "--stepping");
+    let summary_only = args.iter().any(|a| a == "--summary-only");
+    args.retain(|a| a != "--summary-only");
+    let options = if summary_only {
+        pounding::analysis::RunOptions::summary_only()
+    } else {
+        pounding::analysis::RunOptions::default()
+    };
     for file in &args {
         let loaded = pounding_study::input::ScenarioFile::read(std::path::Path::new(file))
             .and_then(|f| f.load())
@@ -38,7 +46,7 @@ fn main() {
         for k in 0..=repeat {
             let t0 = Instant::now();
             let r = s
-                .run_with(&mut |_| ControlFlow::Continue(()))
+                .run_with_options(&options, &mut |_| ControlFlow::Continue(()))
                 .expect("the analysis runs");
             let dt = t0.elapsed().as_secs_f64();
             steps = r.statistics.steps;
