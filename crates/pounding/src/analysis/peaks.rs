@@ -4,7 +4,9 @@
 use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
 use crate::engine::{EventInfo, Observer, Segment, System};
-use crate::integrate::{brent_root, golden_max, hermite_peak, quadratic_roots, Hermite, OdeSystem};
+use crate::integrate::{
+    brent_root, golden_max, hermite_peak, quadratic_roots, Hermite, OdeSystem, TERMS,
+};
 
 /// A largest value and its time, s.
 #[derive(Clone, Copy, Debug, Default)]
@@ -85,14 +87,21 @@ pub(super) fn exact_extremum(
         m.piece_start(k, motion);
         value(motion, n)
     });
-    let mut rate = |t: f64| {
-        seg.dense.eval_prefix(t, motion);
-        value(motion, n)
+    // The bracket lies in one piece: the quantity and its rate as polynomials there (one series built,
+    // each of the search's readings a scalar Horner instead of the whole motion).
+    let m = seg.dense.motion()?;
+    let t0 = seg.dense.t0();
+    let (mut q, mut r) = ([0.0; TERMS], [0.0; TERMS]);
+    let mid = 0.5 * (ta + tb) - t0;
+    let (start, terms) = m.functional_series(mid, |c| value(c, 0), &mut q);
+    m.functional_series(mid, |c| value(c, n), &mut r);
+    let at = |c: &[f64; TERMS], t: f64| {
+        let d = t - t0 - start;
+        c[..terms].iter().rev().fold(0.0, |acc, &x| acc * d + x)
     };
     let tol = 4.0 * f64::EPSILON * seg.t1.abs();
-    let tm = brent_root(&mut rate, ta, tb, ra, rb, tol)?;
-    seg.dense.eval_prefix(tm, motion);
-    Some((tm, value(motion, 0)))
+    let tm = brent_root(|t| at(&r, t), ta, tb, ra, rb, tol)?;
+    Some((tm, at(&q, tm)))
 }
 
 /// Room for the states of the element with the most.

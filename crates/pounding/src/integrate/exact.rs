@@ -591,6 +591,26 @@ impl Motion {
         f(&self.series.borrow())
     }
 
+    /// A linear functional `f` of the motion (read on a vector's first `mech` components: a displacement, a
+    /// drift) as a polynomial in the offset into the piece holding `tau`: its coefficients, `f` of each of the
+    /// piece's series coefficients, to `out` (room for [`TERMS`]). Returns the piece's start (s into the step)
+    /// and the terms written. A search inside one piece then reads a scalar polynomial, not the whole motion.
+    pub fn functional_series(
+        &self,
+        tau: f64,
+        f: impl Fn(&[f64]) -> f64,
+        out: &mut [f64],
+    ) -> (f64, usize) {
+        let (nw, mech, terms) = (self.w0.len(), self.mech, self.terms);
+        let (k, _) = self.locate(tau);
+        self.ensure(k);
+        let c = self.series.borrow();
+        for (j, o) in out[..terms].iter_mut().enumerate() {
+            *o = f(&c[j * nw..j * nw + mech]);
+        }
+        (k as f64 * self.piece, terms)
+    }
+
     /// The series coefficients of the piece holding `tau`, and the offset into it.
     fn with_piece<R>(&self, tau: f64, f: impl FnOnce(&[f64], f64) -> R) -> R {
         let (k, d) = self.locate(tau);
