@@ -108,11 +108,13 @@ const HERMITE_MISS: f64 = 1e-3;
 /// piece by piece, both ran slower whole.
 const MAX_PIECES: usize = 1024;
 /// Fewest pieces of a whole interval: with fewer, the Runge–Kutta stepper takes about as few steps as
-/// that, each cheaper than a whole interval's. Measured 8 at first (three rows of three buildings, 4 pieces,
-/// then ran 8 % slower whole); since rates come off the forms and peaks off polynomials, 4 pays
-/// (`docs/performance.md`, seventh session: the 3-vs-8-storey pair 0.82, the condensed frame 0.76 to 0.81,
-/// three in a row 0.98 to 0.99 of their stepped times, each nearer its converged run).
-const MIN_PIECES: usize = 4;
+/// that, each cheaper than a whole interval's (three rows of three buildings, 4 pieces, ran 8 % slower
+/// whole; two of 3 and 8 storeys, 4 pieces, the same; a pair on soil, 16 pieces, 1.2 to 1.3 times faster).
+/// Measured again in the seventh session (`docs/performance.md`): at 4, elastic structures gain (the
+/// 3-vs-8-storey pair 0.82 of its time, the condensed frame 0.8), but a pair of 3 and 8 bilinear storeys
+/// costs 11 to 19 % more instructions, already in its first configurations (its `w` carries 11 constant
+/// forces more); a rule by law or by `w` would step a bilinear storey that never yields unlike a linear one.
+const MIN_PIECES: usize = 8;
 /// Largest `w` taken a whole interval at a time: its transitions and forms are built in `nw^3` (a plan of
 /// four storeys, `nw` = 60, built them for each of its bilinear branches at a loss of 3 times).
 const MAX_WHOLE_DIM: usize = 40;
