@@ -191,7 +191,7 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
 /// `w` at `tau` into a step that started at `w0`, its motion `motion` (`mech` components, the rest unread)
 /// there: the ground channels carried along their lines, the constant forces as they were.
 /// `fd` components after the motion carry the channels (`[g_0, s_0, g_1, s_1, ...]`).
-fn w_at(motion: &[f64], (w0, mech, fd): (&[f64], usize, usize), tau: f64, out: &mut [f64]) {
+fn full_w_at(motion: &[f64], (w0, mech, fd): (&[f64], usize, usize), tau: f64, out: &mut [f64]) {
     out.copy_from_slice(w0);
     out[..mech].copy_from_slice(&motion[..mech]);
     for c in (mech..mech + fd).step_by(2) {
@@ -765,7 +765,7 @@ impl Exact {
             let tau = node * h;
             match &config.rates {
                 Some(rates) => {
-                    w_at(
+                    full_w_at(
                         &self.wn[j + 1],
                         (&self.w, mech, self.lines.len()),
                         tau,
@@ -798,7 +798,7 @@ impl Exact {
         self.t = t1;
         match &config.rates {
             Some(rates) => {
-                w_at(
+                full_w_at(
                     &self.wn[0],
                     (&self.w, mech, self.lines.len()),
                     h,
