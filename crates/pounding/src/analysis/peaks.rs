@@ -196,7 +196,7 @@ impl Peaks {
         let l = sys.layout();
         let g = sys.ground().at_xy(t);
         for (i, p) in self.acceleration.iter_mut().enumerate() {
-            p.offer((rate[l.v(i)] + ground_of(sys, i, t, g)).abs(), t);
+            p.offer((rate[l.v(i)] + sys.ground_from(i, t, g)).abs(), t);
         }
     }
 
@@ -278,7 +278,7 @@ impl Peaks {
                 return;
             };
             // The ground's acceleration is linear on a step (steps end at the records' samples).
-            let (g0, g1) = (ground_of(sys, i, t0, ga), ground_of(sys, i, t0 + h, gb));
+            let (g0, g1) = (sys.ground_from(i, t0, ga), sys.ground_from(i, t0 + h, gb));
             // The absolute acceleration's rate in theta: 2 c2 + 6 c3 th + 12 c4 th^2 (over h^2) plus the
             // ground's; its roots inside the segment are where the interpolant's acceleration turns.
             let (qa, qb, qc) = (12.0 * c[4], 6.0 * c[3], 2.0 * c[2] + (g1 - g0) * h);
@@ -295,7 +295,7 @@ impl Peaks {
                 let true_acc = |t: f64| {
                     dense.eval(t, at_y);
                     sys.rhs(t, at_y, at_f);
-                    (at_f[l.v(i)] + ground_of(sys, i, t, sys.ground().at_xy(t))).abs()
+                    (at_f[l.v(i)] + sys.ground_at(i, t)).abs()
                 };
                 let (tm, am) = parabolic_max(true_acc, t0 + th * h, (t0 + lo * h, t0 + hi * h), h);
                 self.acceleration[i].offer(am, tm);
@@ -450,21 +450,6 @@ impl Observer for Peaks {
     fn event(&mut self, ev: &EventInfo<'_, '_>) {
         // The acceleration just after the event (a contact force may jump at touch).
         self.accelerations(ev.system, ev.t, ev.rate);
-    }
-}
-
-/// The ground's acceleration that floor `i` takes at `t`, m/s^2: its support's, or along its pull the
-/// record's `(gx, gy)` at `t`; written so that a floor in one line adds exactly the ground's acceleration.
-#[inline]
-fn ground_of(sys: &System, i: usize, t: f64, (gx, gy): (f64, f64)) -> f64 {
-    if sys.sourced(i) {
-        return sys.ground_at(i, t);
-    }
-    let (px, py) = sys.pull(i);
-    if py == 0.0 {
-        px * gx
-    } else {
-        px * gx + py * gy
     }
 }
 

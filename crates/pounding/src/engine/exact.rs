@@ -6,7 +6,8 @@
 //! step length are built once and kept, a few configurations at a time. The energies and the laws' own
 //! integrated states (a contact's work) are integrated along the exact motion by three-point
 //! Gauss–Legendre quadrature, their rates at the nodes (and the state's at a step's end) read off the
-//! configuration's matrix and forms ([`AffineRates`]) rather than the laws. Events are located on the exact motion ([`crate::integrate::Motion`]).
+//! configuration's matrix and forms ([`AffineRates`]) rather than the laws. Events are located on the
+//! exact motion ([`crate::integrate::Motion`]).
 //!
 //! A configuration whose fast modes (a foundation on soil) would split an interval into many such steps takes
 //! each whole interval in one ([`Whole`]): its transitions by scaling and squaring, its energies as quadratic
@@ -17,7 +18,7 @@
 //! ([`HERMITE_MISS`]), in blocks half as long.
 
 use super::forms::AffineRates;
-use super::linear::{channel_at, forcing};
+use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
     halvings, live_of, mat_vec_on, step_bound, transition, Dense, Motion, OdeSystem, Tolerance,
@@ -185,17 +186,6 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
         probe_rows,
         jumps: blocks.iter().flat_map(|b| b.rows.iter().copied()).collect(),
         integrals: blocks.into_iter().map(|b| b.integrals).collect(),
-    }
-}
-
-/// `w` at `tau` into a step that started at `w0`, its motion `motion` (`mech` components, the rest unread)
-/// there: the ground channels carried along their lines, the constant forces as they were.
-/// `fd` components after the motion carry the channels (`[g_0, s_0, g_1, s_1, ...]`).
-fn full_w_at(motion: &[f64], (w0, mech, fd): (&[f64], usize, usize), tau: f64, out: &mut [f64]) {
-    out.copy_from_slice(w0);
-    out[..mech].copy_from_slice(&motion[..mech]);
-    for c in (mech..mech + fd).step_by(2) {
-        out[c] += w0[c + 1] * tau;
     }
 }
 

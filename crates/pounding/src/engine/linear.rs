@@ -38,6 +38,22 @@ pub(crate) fn forcing(w: &[f64], mech: usize, tau: f64) -> (f64, f64) {
     (f[0] + f[1] * tau, f[2] + f[3] * tau)
 }
 
+/// `w` at `tau` into a step that started at `w0`, its motion `motion` (`mech` components, the rest unread)
+/// there: the ground channels carried along their lines, the constant forces as they were.
+/// `fd` components after the motion carry the channels (`[g_0, s_0, g_1, s_1, ...]`).
+pub(super) fn full_w_at(
+    motion: &[f64],
+    (w0, mech, fd): (&[f64], usize, usize),
+    tau: f64,
+    out: &mut [f64],
+) {
+    out.copy_from_slice(w0);
+    out[..mech].copy_from_slice(&motion[..mech]);
+    for c in (mech..mech + fd).step_by(2) {
+        out[c] += w0[c + 1] * tau;
+    }
+}
+
 /// The degrees of freedom and weights of element `el`'s deformation `x = sum over a's terms - sum over b's
 /// terms`.
 pub(super) fn deformation_terms(el: &crate::element::Element) -> Vec<(usize, f64)> {

@@ -275,11 +275,17 @@ impl<'a> System<'a> {
     /// The ground's acceleration that shakes degree of freedom `i` at `t`, m/s^2 (0 for a rotation; a driven
     /// support's own acceleration).
     pub fn ground_at(&self, i: usize, t: f64) -> f64 {
+        self.ground_from(i, t, self.ground.at_xy(t))
+    }
+
+    /// [`Self::ground_at`] with the record's accelerations `(g_x, g_y)` at `t` already read (m/s^2): a support
+    /// of its own reads its record, any other degree of freedom takes them along its pull, written so that a
+    /// floor in one line adds exactly `g_x`.
+    #[inline]
+    pub fn ground_from(&self, i: usize, t: f64, (gx, gy): (f64, f64)) -> f64 {
         match (self.source[i], self.ground) {
-            (Some((k, false)), Ground::Many(rs)) => rs[k].at(t),
-            (Some((k, true)), Ground::Many(rs)) => rs[k].at(t),
+            (Some((k, _)), Ground::Many(rs)) => rs[k].at(t),
             _ => {
-                let (gx, gy) = self.ground.at_xy(t);
                 let (px, py) = self.pull[i];
                 if py == 0.0 {
                     px * gx
