@@ -547,15 +547,18 @@ impl Observer for DevicePeaks {
                 }
                 let fa = total_force(sys, e, seg.y0, &mut self.rates).abs();
                 if fa.max(force) >= 0.9 * self.force[k] {
-                    let (motion, rates) = (&mut self.motion, &mut self.rates);
-                    let states = &self.states[..sys.layout().block(e).len()];
-                    let mut at = |t: f64| {
-                        seg.dense.eval_prefix(t, motion);
-                        let (x, v) = sys.deformation(e, motion);
-                        let (fe, fv) = el.evaluate(x, v, states, &mut rates[..states.len()]);
-                        (fe + fv).abs()
-                    };
-                    let (_, fm) = golden_max(&mut at, seg.t0, seg.t1, 1e-12 * h);
+                    // An affine law's force is a polynomial on a one-piece step: searched there.
+                    let fm = affine_force_max(seg, el).unwrap_or_else(|| {
+                        let (motion, rates) = (&mut self.motion, &mut self.rates);
+                        let states = &self.states[..sys.layout().block(e).len()];
+                        let mut at = |t: f64| {
+                            seg.dense.eval_prefix(t, motion);
+                            let (x, v) = sys.deformation(e, motion);
+                            let (fe, fv) = el.evaluate(x, v, states, &mut rates[..states.len()]);
+                            (fe + fv).abs()
+                        };
+                        golden_max(&mut at, seg.t0, seg.t1, 1e-12 * h).1
+                    });
                     force = force.max(fm);
                 }
                 self.force[k] = self.force[k].max(force);
@@ -590,6 +593,32 @@ impl Observer for DevicePeaks {
             self.opening[k] = self.opening[k].max(lo);
         }
     }
+}
+
+/// The largest `|force|` of element `el` on a step propagated exactly in one piece, its law affine
+/// (`k x + c v + f0`), N: the force as a polynomial on the step's series
+/// ([`crate::integrate::Motion::functional_series`]), searched by golden section, each reading a scalar
+/// Horner instead of the whole motion and the law.
+/// `None` for a whole interval taken at once (a polynomial per piece) or a law that is not affine.
+fn affine_force_max(seg: &Segment<'_, '_>, el: &crate::element::Element) -> Option<f64> {
+    let m = seg.dense.motion().filter(|m| m.pieces() == 1)?;
+    let a = el.affine()?;
+    let n = seg.system.layout().dofs();
+    let q = |c: &[f64], off: usize| el.a.value(c, off) - el.b.value(c, off);
+    let mut poly = [0.0; TERMS];
+    let (start, terms) = m.functional_series(0.0, |c| a.k * q(c, 0) + a.c * q(c, n), &mut poly);
+    poly[0] += a.f0;
+    let t0 = seg.dense.t0() + start;
+    let at = |t: f64| {
+        let d = t - t0;
+        poly[..terms]
+            .iter()
+            .rev()
+            .fold(0.0, |acc, &x| acc * d + x)
+            .abs()
+    };
+    let h = seg.t1 - seg.t0;
+    Some(golden_max(at, seg.t0, seg.t1, 1e-12 * h).1)
 }
 
 /// The worst energy imbalance over the run, at every node.

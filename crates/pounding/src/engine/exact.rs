@@ -21,8 +21,8 @@ use super::forms::AffineRates;
 use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
-    halvings, live_of, mat_vec_on, step_bound, transition, Dense, Motion, OdeSystem, Tolerance,
-    GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
+    halvings, live_of, mat_vec_on, step_bound, transition, Dense, Motion, OdeSystem, Sparse,
+    Tolerance, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
 
 /// Configurations kept at a time.
@@ -64,8 +64,9 @@ struct Whole {
     /// (`mech x nw` each; the last is the interval's): what the dense output's chain jumps with too
     /// ([`Motion::chained`]).
     jumps: Vec<f64>,
-    /// Each block's form integrals, in the order of [`Self::quantities`].
-    integrals: Vec<Vec<Vec<f64>>>,
+    /// Each block's form integrals, in the order of [`Self::quantities`], one after the other, each packed
+    /// symmetric ([`pack_symmetric`]).
+    integrals: Vec<Vec<f64>>,
     /// The integrated quantities whose rate is not 0, in the order of each block's form integrals.
     quantities: Vec<usize>,
     /// The elements with events watched, and the rows of their deformations and rates at the pieces'
@@ -109,13 +110,21 @@ const HERMITE_MISS: f64 = 1e-3;
 /// piece by piece, both ran slower whole.
 const MAX_PIECES: usize = 1024;
 /// Fewest pieces of a whole interval: with fewer, the Runge–Kutta stepper takes about as few steps as
-/// that, each cheaper than a whole interval's (three rows of three buildings, 4 pieces, ran 8 % slower
-/// whole; two of 3 and 8 storeys, 4 pieces, the same; a pair on soil, 16 pieces, 1.2 to 1.3 times faster).
-/// Measured again in the seventh session (`docs/performance.md`): at 4, elastic structures gain (the
-/// 3-vs-8-storey pair 0.82 of its time, the condensed frame 0.8), but a pair of 3 and 8 bilinear storeys
-/// costs 11 to 19 % more instructions, already in its first configurations (its `w` carries 11 constant
-/// forces more); a rule by law or by `w` would step a bilinear storey that never yields unlike a linear one.
+/// that, each cheaper than a whole interval's. From 4 to [`FEW_PIECES`], a whole interval saves little
+/// against the stepper's two or three steps, and pays for its building only over a long stretch
+/// ([`FEW_PIECES_AFTER`]).
 const MIN_PIECES: usize = 8;
+/// Pieces per interval below which a configuration must be met in [`FEW_PIECES_AFTER`] whole intervals,
+/// not [`WHOLE_AFTER`], before its transitions and forms are built.
+const FEW_PIECES: usize = 8;
+/// Whole intervals a configuration of fewer than [`FEW_PIECES`] pieces is met in before it is built: its
+/// saving per interval is small, so only a configuration that lasts pays for the building (`nw^3` per
+/// block and form). Measured (`docs/performance.md`, eighth session; instructions per run): built after 8,
+/// the elastic 3-vs-8-storey pair and the condensed frame gain 27 and 31 %, but a pair of 3 and 8 bilinear
+/// storeys, whose branches change configuration at every yield, costs 4 to 10 % more; after 64 (1.3 s of
+/// a 0.02-s record), all gain: 27, 29 and 4 %, and three buildings in a row 9 %. A rule by law or by `w`
+/// would step a bilinear storey that never yields unlike a linear one.
+const FEW_PIECES_AFTER: usize = 64;
 /// Largest `w` taken a whole interval at a time: its transitions and forms are built in `nw^3` (a plan of
 /// four storeys, `nw` = 60, built them for each of its bilinear branches at a loss of 3 times).
 const MAX_WHOLE_DIM: usize = 40;
@@ -127,6 +136,8 @@ const WHOLE_AFTER: usize = 8;
 struct Configuration {
     key: Vec<u64>,
     m: Vec<f64>,
+    /// The nonzeros of `m` (for a configuration stepped exactly): a step's series built on them.
+    sparse: Sparse,
     /// Bound on the rate of change of the motion, 1/s ([`crate::integrate::step_bound`]).
     r: f64,
     lengths: Vec<Length>,
@@ -185,7 +196,43 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
         probe_keys,
         probe_rows,
         jumps: blocks.iter().flat_map(|b| b.rows.iter().copied()).collect(),
-        integrals: blocks.into_iter().map(|b| b.integrals).collect(),
+        integrals: blocks
+            .into_iter()
+            .map(|b| {
+                b.integrals
+                    .iter()
+                    .flat_map(|g| pack_symmetric(g, nw))
+                    .collect()
+            })
+            .collect(),
+    }
+}
+
+/// The upper triangle, row by row, of the symmetric part of the `nw x nw` matrix `g` (`g_ij + g_ji` off the
+/// diagonal): `w^T g w` is then its dot product with the products `w_i w_j`, `i <= j`, in the same order
+/// ([`pair_products`]), half the multiply-adds, and in partial sums ([`crate::integrate::dot`]).
+fn pack_symmetric(g: &[f64], nw: usize) -> Vec<f64> {
+    (0..nw)
+        .flat_map(|i| {
+            (i..nw).map(move |j| {
+                if i == j {
+                    g[i * nw + i]
+                } else {
+                    g[i * nw + j] + g[j * nw + i]
+                }
+            })
+        })
+        .collect()
+}
+
+/// The products `w_i w_j`, `i <= j`, in the order of [`pack_symmetric`].
+fn pair_products(w: &[f64], out: &mut [f64]) {
+    let mut p = 0;
+    for (i, &wi) in w.iter().enumerate() {
+        for &wj in &w[i..] {
+            out[p] = wi * wj;
+            p += 1;
+        }
     }
 }
 
@@ -267,6 +314,8 @@ pub struct Exact {
     wn: [Vec<f64>; 4],
     scratch: Vec<f64>,
     series: Vec<f64>,
+    /// The last step built [`Self::series`] (one piece): the dense output adopts it.
+    series_built: bool,
     ynode: Vec<f64>,
     dynode: Vec<f64>,
     /// `w` at a Gauss node or a step's end, whole (the motion and the forcing there).
@@ -285,6 +334,8 @@ pub struct Exact {
     whole: bool,
     /// Each integrated quantity's growth over a block of a whole interval.
     inc: Vec<f64>,
+    /// The products of the components of `w` for its form integrals ([`pair_products`]).
+    pairs: Vec<f64>,
     /// The largest block of the current interval's pieces to try (`log2` of its pieces): lowered by a
     /// Hermite miss for the rest of the interval.
     cap: usize,
@@ -334,6 +385,7 @@ impl Exact {
             wn: std::array::from_fn(|_| vec![0.0; nw]),
             scratch: vec![0.0; dim],
             series: vec![0.0; TERMS * nw],
+            series_built: false,
             ynode: vec![0.0; dim],
             dynode: vec![0.0; dim],
             wfull: vec![0.0; nw],
@@ -351,6 +403,7 @@ impl Exact {
             lines: vec![0.0; sys.forcing_dim()],
             whole: false,
             inc: vec![0.0; dim - mech],
+            pairs: vec![0.0; nw * (nw + 1) / 2],
             cap: usize::MAX,
             scale,
             live: Vec::with_capacity(nw),
@@ -389,6 +442,11 @@ impl Exact {
                     forms: forms.filter(|_| whole),
                     rates,
                     r,
+                    sparse: if fine || whole {
+                        Sparse::of(&m, self.nw)
+                    } else {
+                        Sparse::default()
+                    },
                     m,
                     lengths: Vec::new(),
                     seen: (f64::NAN, 0),
@@ -498,7 +556,12 @@ impl Exact {
         let (nw, mech, length) = (self.nw, self.mech, self.interval);
         let c = &mut self.configs[self.current];
         if c.whole.is_none() {
-            if !interval || c.met < WHOLE_AFTER {
+            let after = if (1usize << halvings(c.r * length)) < FEW_PIECES {
+                FEW_PIECES_AFTER
+            } else {
+                WHOLE_AFTER
+            };
+            if !interval || c.met < after {
                 c.met += usize::from(interval);
                 return false;
             }
@@ -603,14 +666,10 @@ impl Exact {
             mat_vec_on(p, w, live, &mut out[..mech]);
         }
         self.inc.fill(0.0);
-        for (k, g) in whole.quantities.iter().zip(&whole.integrals[i]) {
-            self.inc[*k] = live
-                .iter()
-                .map(|&i| {
-                    let row = &g[i * nw..(i + 1) * nw];
-                    w[i] * live.iter().map(|&j| row[j] * w[j]).sum::<f64>()
-                })
-                .sum();
+        pair_products(w, &mut self.pairs);
+        let forms = whole.integrals[i].chunks_exact(self.pairs.len());
+        for (k, g) in whole.quantities.iter().zip(forms) {
+            self.inc[*k] = crate::integrate::dot(g, &self.pairs);
         }
     }
 
@@ -643,6 +702,7 @@ impl Exact {
 
     /// `wn[0]` = `w` at the end of a step of length `h`, `wn[1..4]` at its Gauss nodes.
     fn propagate(&mut self, h: f64) {
+        self.series_built = false;
         let (nw, mech) = (self.nw, self.mech);
         let c = &mut self.configs[self.current];
         let found = c.lengths.iter().position(|l| (l.h - h).abs() <= 1e-12 * h);
@@ -678,7 +738,12 @@ impl Exact {
             }
             None => {
                 let terms = crate::integrate::terms_for(c.r * h);
-                crate::integrate::series(&c.m, mech, &self.w, terms, &mut self.series);
+                if c.sparse.rows() == nw {
+                    c.sparse.series(&self.w, terms, &mut self.series);
+                } else {
+                    crate::integrate::series(&c.m, mech, &self.w, terms, &mut self.series);
+                }
+                self.series_built = true;
                 let at = [
                     h,
                     GAUSS_NODES[0] * h,
@@ -735,6 +800,9 @@ impl Exact {
         let piece = whole.map_or(h, |(_, w)| w.piece());
         motion.terms = crate::integrate::terms_for(config.r * piece);
         motion.invalidate();
+        if std::mem::take(&mut self.series_built) && block.is_none() {
+            motion.adopt_series(&self.series);
+        }
         self.dense_config = Some(motion_config);
         motion.w1.copy_from_slice(&self.wn[0][..mech]);
         self.ynode.copy_from_slice(&self.y);

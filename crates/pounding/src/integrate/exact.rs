@@ -84,8 +84,23 @@ pub fn mat_vec_on(a: &[f64], x: &[f64], live: &[usize], y: &mut [f64]) {
     if live.len() == n {
         return mat_vec(a, x, y);
     }
+    if live.len() < 8 {
+        for (row, yi) in a.chunks_exact(n).zip(y.iter_mut()) {
+            *yi = live.iter().map(|&j| row[j] * x[j]).sum();
+        }
+        return;
+    }
     for (row, yi) in a.chunks_exact(n).zip(y.iter_mut()) {
-        *yi = live.iter().map(|&j| row[j] * x[j]).sum();
+        // Four partial sums, as in `dot`: one running sum waits on each addition before the next.
+        let mut s = [0.0; 4];
+        let chunks = live.chunks_exact(4);
+        let tail: f64 = chunks.remainder().iter().map(|&j| row[j] * x[j]).sum();
+        for c in chunks {
+            for k in 0..4 {
+                s[k] += row[c[k]] * x[c[k]];
+            }
+        }
+        *yi = (s[0] + s[2]) + (s[1] + s[3]) + tail;
     }
 }
 
@@ -193,6 +208,70 @@ pub fn series_at(c: &[f64], nw: usize, i: usize, tau: f64, terms: usize) -> f64 
         .fold(0.0, |acc, k| acc * tau + c[k * nw + i])
 }
 
+/// A square row-major matrix by its nonzero entries, row by row (column, value), and where each row ends:
+/// a product in `nnz` multiply-adds instead of `n^2` (`M` of a configuration: a displacement's row holds one
+/// 1, a storey's a few stiffnesses).
+#[derive(Clone, Debug, Default)]
+pub struct Sparse {
+    nonzeros: Vec<(usize, f64)>,
+    row_ends: Vec<usize>,
+}
+
+impl Sparse {
+    /// The nonzeros of `m` (`n x n`, row-major).
+    pub fn of(m: &[f64], n: usize) -> Self {
+        let mut s = Self::default();
+        s.set(m, n);
+        s
+    }
+
+    /// Becomes the nonzeros of `m` (`n x n`, row-major), reusing its room.
+    pub fn set(&mut self, m: &[f64], n: usize) {
+        self.nonzeros.clear();
+        self.row_ends.clear();
+        for row in m.chunks_exact(n) {
+            self.nonzeros.extend(
+                row.iter()
+                    .enumerate()
+                    .filter(|(_, x)| **x != 0.0)
+                    .map(|(j, x)| (j, *x)),
+            );
+            self.row_ends.push(self.nonzeros.len());
+        }
+    }
+
+    /// Rows held (0 before [`Self::set`]).
+    pub fn rows(&self) -> usize {
+        self.row_ends.len()
+    }
+
+    /// The nonzeros of row `i`.
+    pub fn row(&self, i: usize) -> &[(usize, f64)] {
+        let start = if i == 0 { 0 } else { self.row_ends[i - 1] };
+        &self.nonzeros[start..self.row_ends[i]]
+    }
+
+    /// The first `terms` Taylor coefficients of `exp(M t) w0` (`terms x nw` to `out`, as [`series`]):
+    /// `c_(k+1) = M c_k / (k + 1)` on the nonzeros.
+    pub fn series(&self, w0: &[f64], terms: usize, out: &mut [f64]) {
+        let nw = w0.len();
+        out[..nw].copy_from_slice(w0);
+        for k in 1..terms {
+            let (done, rest) = out.split_at_mut(k * nw);
+            let prev = &done[(k - 1) * nw..];
+            let f = 1.0 / k as f64;
+            let mut start = 0;
+            for (x, &end) in rest[..nw].iter_mut().zip(&self.row_ends) {
+                *x = f * self.nonzeros[start..end]
+                    .iter()
+                    .map(|&(j, a)| a * prev[j])
+                    .sum::<f64>();
+                start = end;
+            }
+        }
+    }
+}
+
 /// The exact motion on one step: the series of the linear state `w` (built on first use), and the
 /// quantities integrated along it from their rates at five points of the step.
 #[derive(Clone, Debug, Default)]
@@ -241,10 +320,8 @@ pub struct Motion {
     /// The integrated quantities at the step's end, when the step gave them exactly (a whole interval):
     /// what the quartics are bent to meet.
     acc1: Option<Vec<f64>>,
-    /// The nonzero entries of `m` row by row (column, value), and where each row ends: the series in
-    /// `nnz` multiply-adds per term instead of `nw^2` (set by [`Self::set_matrix`]; empty, `m` is read).
-    nonzeros: Vec<(usize, f64)>,
-    row_ends: Vec<usize>,
+    /// The nonzero entries of `m` (set by [`Self::set_matrix`]; empty, `m` is read).
+    sparse: Sparse,
     /// The components of `w0` that are not 0 ([`Self::set_start`]).
     live: Vec<usize>,
     /// Probes of a chained step: for each key (an element), the rows of its two functionals (deformation
@@ -286,8 +363,7 @@ impl Motion {
             piece_w: RefCell::new(vec![0.0; nw]),
             forcing_rate: RefCell::new(vec![0.0; nw - mech]),
             acc1: None,
-            nonzeros: Vec::new(),
-            row_ends: Vec::new(),
+            sparse: Sparse::default(),
             live: (0..nw).collect(),
             probe_keys: Vec::new(),
             probe_rows: Vec::new(),
@@ -305,18 +381,17 @@ impl Motion {
     /// Sets the system matrix (row-major `nw x nw`), keeping its nonzero entries for the series.
     pub fn set_matrix(&mut self, m: &[f64]) {
         self.m.copy_from_slice(m);
-        let nw = self.w0.len();
-        self.nonzeros.clear();
-        self.row_ends.clear();
-        for row in m.chunks_exact(nw) {
-            self.nonzeros.extend(
-                row.iter()
-                    .enumerate()
-                    .filter(|(_, x)| **x != 0.0)
-                    .map(|(j, x)| (j, *x)),
-            );
-            self.row_ends.push(self.nonzeros.len());
-        }
+        self.sparse.set(m, self.w0.len());
+    }
+
+    /// Takes `s` (the series of `w0` on the step's one piece, as [`Sparse::series`] builds it, its first
+    /// [`Self::terms`] rows) as its own: a step that built it to propagate spares the readers a second.
+    pub fn adopt_series(&mut self, s: &[f64]) {
+        let n = self.terms * self.w0.len();
+        let mine = self.series.get_mut();
+        mine[..n].copy_from_slice(&s[..n]);
+        mine[n..].iter_mut().for_each(|x| *x = 0.0);
+        self.series_of.set(0);
     }
 
     /// Forgets the series (after `w0` or `m` changed).
@@ -484,11 +559,8 @@ impl Motion {
 
     /// The second rate of component `j` of `w` at `w` (`(M M w)_j`, on the nonzeros of `M`).
     fn second_rate(&self, w: &[f64], j: usize) -> f64 {
-        let row = |i: usize| {
-            let start = if i == 0 { 0 } else { self.row_ends[i - 1] };
-            &self.nonzeros[start..self.row_ends[i]]
-        };
-        if self.row_ends.len() != w.len() {
+        let row = |i: usize| self.sparse.row(i);
+        if self.sparse.rows() != w.len() {
             let nw = w.len();
             let rate = |c: usize| (0..nw).map(|d| self.m[c * nw + d] * w[d]).sum::<f64>();
             return (0..nw).map(|c| self.m[j * nw + c] * rate(c)).sum();
@@ -560,22 +632,8 @@ impl Motion {
         self.ensure_chain(k);
         let w = self.piece_w.borrow();
         let mut s = self.series.borrow_mut();
-        if self.row_ends.len() == nw {
-            // c_(k+1) = M c_k / (k + 1) on the nonzeros.
-            s[..nw].copy_from_slice(&w);
-            for k in 1..self.terms {
-                let (done, rest) = s.split_at_mut(k * nw);
-                let prev = &done[(k - 1) * nw..];
-                let f = 1.0 / k as f64;
-                let mut start = 0;
-                for (x, &end) in rest[..nw].iter_mut().zip(&self.row_ends) {
-                    *x = f * self.nonzeros[start..end]
-                        .iter()
-                        .map(|&(j, a)| a * prev[j])
-                        .sum::<f64>();
-                    start = end;
-                }
-            }
+        if self.sparse.rows() == nw {
+            self.sparse.series(&w, self.terms, &mut s);
         } else {
             series(&self.m, mech, &w, self.terms, &mut s);
         }

@@ -18,8 +18,8 @@ mod rosenbrock;
 mod switching;
 
 pub use exact::{
-    live_of, mat_vec, mat_vec_on, series, series_at, step_bound, terms_for, transition, Motion,
-    GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
+    dot, live_of, mat_vec, mat_vec_on, series, series_at, step_bound, terms_for, transition,
+    Motion, Sparse, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
 pub use interval::{
     exponential, form_blocks, functional_at_pieces, halvings, mat_mul, times_transition,
