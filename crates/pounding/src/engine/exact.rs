@@ -113,7 +113,7 @@ const MAX_PIECES: usize = 1024;
 /// that, each cheaper than a whole interval's. From 4 to [`FEW_PIECES`], a whole interval saves little
 /// against the stepper's two or three steps, and pays for its building only over a long stretch
 /// ([`FEW_PIECES_AFTER`]).
-const MIN_PIECES: usize = 8;
+const MIN_PIECES: usize = 4;
 /// Pieces per interval below which a configuration must be met in [`FEW_PIECES_AFTER`] whole intervals,
 /// not [`WHOLE_AFTER`], before its transitions and forms are built.
 const FEW_PIECES: usize = 8;
