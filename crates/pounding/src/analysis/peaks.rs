@@ -329,11 +329,41 @@ impl Peaks {
             end += c * forces[e];
         }
         let mut shear = end.abs();
-        if seg.dense.motion().is_some() {
-            // On the exact motion: the shear at the drift's extremum (every law is affine here).
+        if let Some(m) = seg.dense.motion() {
             let (tm, peak_drift) = step_peak(seg, motion, self.drift[i], drift);
-            // The shear there on the Hermite curves (within 1 %) first: only one that may beat the peak
-            // is read on the exact motion.
+            self.drift[i] = self.drift[i].max(peak_drift);
+            // On the exact motion (every law affine there) the shear is affine in it. A storey of one spring
+            // without a reported viscous part peaks where its drift does; any other (a storey of a building
+            // given by its matrices, whose shear combines every floor's; one with a viscous device) at its
+            // own extremum, located as such.
+            let laws = || {
+                st.elements.iter().filter_map(|&(e, c)| {
+                    let el = &sys.elements()[e];
+                    Some((el.affine()?, el, c))
+                })
+            };
+            let spring = st.elements.len() == 1 && laws().all(|(a, _, _)| a.c == a.viscous);
+            if !spring && laws().count() == st.elements.len() {
+                let f0: f64 = laws().map(|(a, _, c)| c * a.f0).sum();
+                let lin = |y: &[f64]| {
+                    laws()
+                        .map(|(a, el, c)| {
+                            let x = |off| el.a.value(y, off) - el.b.value(y, off);
+                            // The shear as reported: without a law's viscous part.
+                            c * (a.k * x(0) + (a.c - a.viscous) * x(n))
+                        })
+                        .sum::<f64>()
+                };
+                let ends = (
+                    (lin(y0) + f0, lin(&m.rates[0])),
+                    (lin(y1) + f0, lin(seg.rate1)),
+                );
+                let p = affine_peak(seg, ends, (self.shear[i], motion), lin, f0);
+                self.shear[i] = self.shear[i].max(shear).max(p);
+                return;
+            }
+            // The shear at the drift's extremum on the Hermite curves (within 1 %) first: only one that may
+            // beat the peak is read on the exact motion.
             let s = (tm - seg.t0) / h;
             let estimate: f64 = st
                 .elements
@@ -353,7 +383,6 @@ impl Peaks {
                 }
                 shear = shear.max(f.abs());
             }
-            self.drift[i] = self.drift[i].max(peak_drift);
             self.shear[i] = self.shear[i].max(shear);
             return;
         }
@@ -593,6 +622,94 @@ impl Observer for DevicePeaks {
             self.opening[k] = self.opening[k].max(lo);
         }
     }
+}
+
+/// The largest `|q|` on a step propagated exactly of a quantity affine in the motion, `q = f(y) + f0` for a
+/// linear `f` of the displacements and velocities (a storey's shear, N), its values `(qa, qb)` and rates
+/// `(ra, rb)` (`f` of the state's rates) at the segment's ends: the cubic Hermite's estimate; where it may
+/// beat `best`, the exact value. On one piece, the root of the rate on the polynomial `f` makes of the step's
+/// series (`f` of a series coefficient is the polynomial's coefficient); on a whole interval of many pieces,
+/// `q` at every piece's start (read on the chain) and the interior extremum of the two pieces beside the
+/// largest. `motion` is room for the displacements and velocities.
+fn affine_peak(
+    seg: &Segment<'_, '_>,
+    ((qa, ra), (qb, rb)): ((f64, f64), (f64, f64)),
+    (best, motion): (f64, &mut [f64]),
+    f: impl Fn(&[f64]) -> f64,
+    f0: f64,
+) -> f64 {
+    let h = seg.t1 - seg.t0;
+    let (_, p) = hermite_peak(qa, qb, ra, rb, h);
+    let ends = qa.abs().max(qb.abs());
+    let Some(m) = seg.dense.motion().filter(|_| p >= 0.99 * best) else {
+        return p;
+    };
+    let t0 = seg.dense.t0();
+    if m.pieces() == 1 {
+        // One piece: the motion is smooth on it (r h <= 1/2), an interior extremum where the rate turns.
+        if ra * rb >= 0.0 {
+            return p.max(ends);
+        }
+        let q = piece_extremum(m, (t0, 0.0), (seg.t0, seg.t1), &f, f0);
+        return q.map_or(p.max(ends), |q| q.max(ends));
+    }
+    let piece = m.piece();
+    let (mut peak, mut at) = (qa.abs(), 0);
+    for k in 1..m.pieces() {
+        if t0 + k as f64 * piece >= seg.t1 {
+            break;
+        }
+        m.piece_start(k, motion);
+        let q = (f(motion) + f0).abs();
+        if q > peak {
+            (peak, at) = (q, k);
+        }
+    }
+    if qb.abs() > peak {
+        (peak, at) = (qb.abs(), m.pieces());
+    }
+    for k in [at.wrapping_sub(1), at] {
+        if k < m.pieces() {
+            let span = (
+                seg.t0.max(t0 + k as f64 * piece),
+                seg.t1.min(t0 + (k + 1) as f64 * piece),
+            );
+            if let Some(q) = piece_extremum(m, (t0, k as f64 * piece), span, &f, f0) {
+                peak = peak.max(q);
+            }
+        }
+    }
+    peak
+}
+
+/// `|q|` at the extremum inside `(ta, tb)` (s; within one piece, which starts `start` s into the step that
+/// starts at `t0`) of `q = f(y) + f0` on the exact motion: the root of the rate of its polynomial on the
+/// piece's series; `None` when the rate keeps its sign there.
+fn piece_extremum(
+    m: &crate::integrate::Motion,
+    (t0, start): (f64, f64),
+    (ta, tb): (f64, f64),
+    f: &impl Fn(&[f64]) -> f64,
+    f0: f64,
+) -> Option<f64> {
+    if ta >= tb {
+        return None;
+    }
+    let mut poly = [0.0; TERMS];
+    let (origin, terms) = m.functional_series(0.5 * (ta + tb) - t0, f, &mut poly);
+    debug_assert!((origin - start).abs() <= 1e-9 * (1.0 + start.abs()));
+    poly[0] += f0;
+    let origin = t0 + origin;
+    let mut slope = [0.0; TERMS];
+    for j in 1..terms {
+        slope[j - 1] = j as f64 * poly[j];
+    }
+    let horner = |c: &[f64], t: f64| c.iter().rev().fold(0.0, |acc, &x| acc * (t - origin) + x);
+    let value = |t: f64| horner(&poly[..terms], t);
+    let rate = |t: f64| horner(&slope[..terms - 1], t);
+    let tol = 4.0 * f64::EPSILON * tb.abs();
+    let tm = brent_root(rate, ta, tb, rate(ta), rate(tb), tol)?;
+    Some(value(tm).abs())
 }
 
 /// The largest `|force|` of element `el` on a step propagated exactly in one piece, its law affine
