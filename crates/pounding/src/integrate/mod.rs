@@ -512,12 +512,18 @@ impl DormandPrince {
     }
 
     fn stage<S: OdeSystem>(&mut self, sys: &S, t: f64, h: f64, a: &[(usize, f64)], out: usize) {
-        for i in 0..self.n {
-            let mut s = 0.0;
-            for &(j, aj) in a {
-                s += aj * self.k[j][i];
+        // `y + h sum_j a_j k_j`, summed stage by stage over whole vectors (no bounds checks inside; the same
+        // additions in the same order as element by element).
+        let n = self.n;
+        let ytmp = &mut self.ytmp[..n];
+        ytmp.fill(0.0);
+        for &(j, aj) in a {
+            for (s, &kj) in ytmp.iter_mut().zip(&self.k[j][..n]) {
+                *s += aj * kj;
             }
-            self.ytmp[i] = self.y[i] + h * s;
+        }
+        for (s, &yi) in ytmp.iter_mut().zip(&self.y[..n]) {
+            *s = yi + h * *s;
         }
         let (ytmp, k) = (&self.ytmp, &mut self.k);
         sys.rhs(t, ytmp, &mut k[out]);
@@ -560,30 +566,38 @@ impl DormandPrince {
                 &[(0, A61), (1, A62), (2, A63), (3, A64), (4, A65)],
                 5,
             );
-            for i in 0..n {
-                self.ynew[i] = self.y[i]
-                    + h * (A71 * self.k[0][i]
-                        + A73 * self.k[2][i]
-                        + A74 * self.k[3][i]
-                        + A75 * self.k[4][i]
-                        + A76 * self.k[5][i]);
+            {
+                let k = &self.k;
+                let (k0, k2, k3, k4, k5) =
+                    (&k[0][..n], &k[2][..n], &k[3][..n], &k[4][..n], &k[5][..n]);
+                let (y, ynew) = (&self.y[..n], &mut self.ynew[..n]);
+                for i in 0..n {
+                    ynew[i] = y[i]
+                        + h * (A71 * k0[i] + A73 * k2[i] + A74 * k3[i] + A75 * k4[i] + A76 * k5[i]);
+                }
             }
             {
                 let (ynew, k) = (&self.ynew, &mut self.k);
                 sys.rhs(t + h, ynew, &mut k[6]);
             }
             let mut err = 0.0;
-            for i in 0..n {
+            {
                 let k = &self.k;
-                let e = h
-                    * (E1 * k[0][i]
-                        + E3 * k[2][i]
-                        + E4 * k[3][i]
-                        + E5 * k[4][i]
-                        + E6 * k[5][i]
-                        + E7 * k[6][i]);
-                let sc = self.tol.atol[i] + self.rel[i] * self.y[i].abs().max(self.ynew[i].abs());
-                err += (e / sc) * (e / sc);
+                let (k0, k2, k3) = (&k[0][..n], &k[2][..n], &k[3][..n]);
+                let (k4, k5, k6) = (&k[4][..n], &k[5][..n], &k[6][..n]);
+                let (y, ynew) = (&self.y[..n], &self.ynew[..n]);
+                let (atol, rel) = (&self.tol.atol[..n], &self.rel[..n]);
+                for i in 0..n {
+                    let e = h
+                        * (E1 * k0[i]
+                            + E3 * k2[i]
+                            + E4 * k3[i]
+                            + E5 * k4[i]
+                            + E6 * k5[i]
+                            + E7 * k6[i]);
+                    let sc = atol[i] + rel[i] * y[i].abs().max(ynew[i].abs());
+                    err += (e / sc) * (e / sc);
+                }
             }
             let counted = if self.tol.quiet.is_empty() {
                 self.controlled
@@ -609,21 +623,32 @@ impl DormandPrince {
                 let d = &mut self.dense;
                 d.t0 = t;
                 d.h = h;
+                let k = &self.k;
+                let (k0, k2, k3) = (&k[0][..n], &k[2][..n], &k[3][..n]);
+                let (k4, k5, k6) = (&k[4][..n], &k[5][..n], &k[6][..n]);
+                let (y, ynew) = (&self.y[..n], &self.ynew[..n]);
+                let [r0, r1, r2, r3, r4] = &mut d.r;
+                let (r0, r1, r2, r3, r4) = (
+                    &mut r0[..n],
+                    &mut r1[..n],
+                    &mut r2[..n],
+                    &mut r3[..n],
+                    &mut r4[..n],
+                );
                 for i in 0..n {
-                    let k = &self.k;
-                    let dy = self.ynew[i] - self.y[i];
-                    let bspl = h * k[0][i] - dy;
-                    d.r[0][i] = self.y[i];
-                    d.r[1][i] = dy;
-                    d.r[2][i] = bspl;
-                    d.r[3][i] = dy - h * k[6][i] - bspl;
-                    d.r[4][i] = h
-                        * (D1 * k[0][i]
-                            + D3 * k[2][i]
-                            + D4 * k[3][i]
-                            + D5 * k[4][i]
-                            + D6 * k[5][i]
-                            + D7 * k[6][i]);
+                    let dy = ynew[i] - y[i];
+                    let bspl = h * k0[i] - dy;
+                    r0[i] = y[i];
+                    r1[i] = dy;
+                    r2[i] = bspl;
+                    r3[i] = dy - h * k6[i] - bspl;
+                    r4[i] = h
+                        * (D1 * k0[i]
+                            + D3 * k2[i]
+                            + D4 * k3[i]
+                            + D5 * k4[i]
+                            + D6 * k5[i]
+                            + D7 * k6[i]);
                 }
                 self.t = if cut { t_stop } else { t + h };
                 std::mem::swap(&mut self.y, &mut self.ynew);
