@@ -443,18 +443,16 @@ impl System<'_> {
         dy[..n].copy_from_slice(&y[n..2 * n]);
         let (mut e_in, mut e_damp) = (0.0, 0.0);
         // Forces first (N), divided by the masses at the end.
-        for i in 0..n {
-            let (m, vi) = (self.mass[i], y[n + i]);
+        let (v, acc) = (&y[n..2 * n], &mut dy[n..2 * n]);
+        let floors = self.mass.iter().zip(&self.a0).zip(&self.pull).zip(v).zip(acc);
+        for (i, ((((&m, &a0), &(px, py)), &vi), acc)) in floors.enumerate() {
             let ag = match (self.source[i], self.ground) {
                 (Some((k, _)), Ground::Many(rs)) => rs[k].at(t),
-                _ => {
-                    let (px, py) = self.pull[i];
-                    px * agx + py * agy
-                }
+                _ => px * agx + py * agy,
             };
-            dy[n + i] = -m * (ag + self.a0[i] * vi);
+            *acc = -m * (ag + a0 * vi);
             e_in -= ag * m * vi;
-            e_damp += self.a0[i] * m * vi * vi;
+            e_damp += a0 * m * vi * vi;
         }
         for (e, el) in self.elements.iter().enumerate() {
             let (x, v) = self.deformation(e, y);
@@ -478,8 +476,8 @@ impl System<'_> {
         for &i in &self.driven {
             e_in -= dy[n + i] * y[n + i];
         }
-        for i in 0..n {
-            dy[n + i] *= self.inv_mass[i];
+        for (a, &w) in dy[n..2 * n].iter_mut().zip(&self.inv_mass) {
+            *a *= w;
         }
         if let Ground::Many(rs) = self.ground {
             for &i in &self.driven {
