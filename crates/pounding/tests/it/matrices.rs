@@ -91,6 +91,18 @@ fn a_shear_buildings_matrix_is_the_shear_building() {
 /// Floor peaks of `M x'' + C x' + K x = -M 1 a_g` by classical RK4 at a fixed step of 1e-5 s (a step that
 /// divides the record's 0.02 s, so `a_g` is linear within each): the equations written out.
 fn reference(m: &[f64; 3], k: &[[f64; 3]; 3], c: &[[f64; 3]; 3], t_end: f64) -> [f64; 3] {
+    rk4_peaks(m, k, c, t_end, |y, i| y[i])
+}
+
+/// The largest `|q(y, j)|` of three quantities `j` of the state `y = [x, x']`, sampled at every step of
+/// [`reference`]'s integration.
+fn rk4_peaks(
+    m: &[f64; 3],
+    k: &[[f64; 3]; 3],
+    c: &[[f64; 3]; 3],
+    t_end: f64,
+    q: impl Fn(&[f64; 6], usize) -> f64,
+) -> [f64; 3] {
     let rec = Record::el_centro_1940();
     let rhs = |t: f64, y: &[f64; 6]| -> [f64; 6] {
         let ag = rec.at(t);
@@ -117,8 +129,8 @@ fn reference(m: &[f64; 3], k: &[[f64; 3]; 3], c: &[[f64; 3]; 3], t_end: f64) -> 
         let k3 = rhs(t + h / 2.0, &add(&y, &k2, h / 2.0));
         let k4 = rhs(t + h, &add(&y, &k3, h));
         y = std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
-        for i in 0..3 {
-            peak[i] = peak[i].max(y[i].abs());
+        for (j, p) in peak.iter_mut().enumerate() {
+            *p = p.max(q(&y, j).abs());
         }
     }
     peak
@@ -191,7 +203,9 @@ fn a_matrix_storeys_shear_peaks_where_it_does() {
     let b = from(&m, &k, None);
     // Rayleigh damping `a0 M + a1 K` on its modes 1 and 2, as the structure holds it.
     let (a0, a1) = b.rayleigh();
-    let rec = Record::el_centro_1940();
+    let c: [[f64; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| a1 * k[i][j] + if i == j { a0 * m[i] } else { 0.0 })
+    });
     let shear = |y: &[f64; 6], j: usize| -> f64 {
         let mut s = 0.0;
         for u in j..3 {
@@ -202,33 +216,7 @@ fn a_matrix_storeys_shear_peaks_where_it_does() {
         }
         s
     };
-    let rhs = |t: f64, y: &[f64; 6]| -> [f64; 6] {
-        std::array::from_fn(|i| {
-            if i < 3 {
-                y[i + 3]
-            } else {
-                let r = i - 3;
-                let f: f64 = (0..3).map(|j| k[r][j] * (y[j] + a1 * y[j + 3])).sum();
-                -rec.at(t) - a0 * y[i] - f / m[r]
-            }
-        })
-    };
-    let h = 1e-5;
-    let (mut y, mut peak) = ([0.0; 6], [0.0f64; 3]);
-    for s in 0..(t_end / h).round() as usize {
-        let t = s as f64 * h;
-        let add = |y: &[f64; 6], k: &[f64; 6], a: f64| -> [f64; 6] {
-            std::array::from_fn(|i| y[i] + a * k[i])
-        };
-        let k1 = rhs(t, &y);
-        let k2 = rhs(t + h / 2.0, &add(&y, &k1, h / 2.0));
-        let k3 = rhs(t + h / 2.0, &add(&y, &k2, h / 2.0));
-        let k4 = rhs(t + h, &add(&y, &k3, h));
-        y = std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
-        for (j, p) in peak.iter_mut().enumerate() {
-            *p = p.max(shear(&y, j).abs());
-        }
-    }
+    let peak = rk4_peaks(&m, &k, &c, t_end, shear);
     let s = Scenario::new(
         vec![Building {
             name: "A".into(),
