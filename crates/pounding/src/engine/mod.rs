@@ -444,7 +444,13 @@ impl System<'_> {
         let (mut e_in, mut e_damp) = (0.0, 0.0);
         // Forces first (N), divided by the masses at the end.
         let (v, acc) = (&y[n..2 * n], &mut dy[n..2 * n]);
-        let floors = self.mass.iter().zip(&self.a0).zip(&self.pull).zip(v).zip(acc);
+        let floors = self
+            .mass
+            .iter()
+            .zip(&self.a0)
+            .zip(&self.pull)
+            .zip(v)
+            .zip(acc);
         for (i, ((((&m, &a0), &(px, py)), &vi), acc)) in floors.enumerate() {
             let ag = match (self.source[i], self.ground) {
                 (Some((k, _)), Ground::Many(rs)) => rs[k].at(t),
