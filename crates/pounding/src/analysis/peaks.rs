@@ -666,7 +666,9 @@ fn affine_peak(
         }
     }
     if qb.abs() > peak {
-        (peak, at) = (qb.abs(), m.pieces());
+        // The segment's end: the step's, or an event's inside the piece it cuts.
+        let end = ((seg.t1 - t0) / piece).ceil() as usize;
+        (peak, at) = (qb.abs(), end.min(m.pieces()));
     }
     for k in [at.wrapping_sub(1), at] {
         if k < m.pieces() {
