@@ -5,7 +5,7 @@ use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
 use crate::engine::{EventInfo, Observer, Segment, System};
 use crate::integrate::{
-    brent_root, golden_max, hermite_peak, quadratic_roots, Hermite, OdeSystem, TERMS,
+    brent_root, golden_max, hermite_peak, horner, quadratic_roots, Hermite, OdeSystem, TERMS,
 };
 
 /// A largest value and its time, s.
@@ -95,10 +95,7 @@ pub(super) fn exact_extremum(
     let mid = 0.5 * (ta + tb) - t0;
     let (start, terms) = m.functional_series(mid, |c| value(c, 0), &mut q);
     m.functional_series(mid, |c| value(c, n), &mut r);
-    let at = |c: &[f64; TERMS], t: f64| {
-        let d = t - t0 - start;
-        c[..terms].iter().rev().fold(0.0, |acc, &x| acc * d + x)
-    };
+    let at = |c: &[f64; TERMS], t: f64| horner(&c[..terms], t - t0 - start);
     let tol = 4.0 * f64::EPSILON * seg.t1.abs();
     let tm = brent_root(|t| at(&r, t), ta, tb, ra, rb, tol)?;
     Some((tm, at(&q, tm)))
@@ -337,20 +334,19 @@ impl Peaks {
             // given by its matrices, whose shear combines every floor's; one with a viscous device) at its
             // own extremum, located as such.
             let laws = || {
-                st.elements.iter().filter_map(|&(e, c)| {
-                    let el = &sys.elements()[e];
-                    Some((el.affine()?, el, c))
-                })
+                st.elements
+                    .iter()
+                    .filter_map(|&(e, c)| Some((sys.elements()[e].affine()?, e, c)))
             };
             let spring = st.elements.len() == 1 && laws().all(|(a, _, _)| a.c == a.viscous);
             if !spring && laws().count() == st.elements.len() {
                 let f0: f64 = laws().map(|(a, _, c)| c * a.f0).sum();
                 let lin = |y: &[f64]| {
                     laws()
-                        .map(|(a, el, c)| {
-                            let x = |off| el.a.value(y, off) - el.b.value(y, off);
+                        .map(|(a, e, c)| {
+                            let (x, v) = sys.deformation(e, y);
                             // The shear as reported: without a law's viscous part.
-                            c * (a.k * x(0) + (a.c - a.viscous) * x(n))
+                            c * (a.k * x + (a.c - a.viscous) * v)
                         })
                         .sum::<f64>()
                 };
@@ -577,7 +573,7 @@ impl Observer for DevicePeaks {
                 let fa = total_force(sys, e, seg.y0, &mut self.rates).abs();
                 if fa.max(force) >= 0.9 * self.force[k] {
                     // An affine law's force is a polynomial on a one-piece step: searched there.
-                    let fm = affine_force_max(seg, el).unwrap_or_else(|| {
+                    let fm = affine_force_max(seg, e).unwrap_or_else(|| {
                         let (motion, rates) = (&mut self.motion, &mut self.rates);
                         let states = &self.states[..sys.layout().block(e).len()];
                         let mut at = |t: f64| {
@@ -706,36 +702,31 @@ fn piece_extremum(
     for j in 1..terms {
         slope[j - 1] = j as f64 * poly[j];
     }
-    let horner = |c: &[f64], t: f64| c.iter().rev().fold(0.0, |acc, &x| acc * (t - origin) + x);
-    let value = |t: f64| horner(&poly[..terms], t);
-    let rate = |t: f64| horner(&slope[..terms - 1], t);
+    let value = |t: f64| horner(&poly[..terms], t - origin);
+    let rate = |t: f64| horner(&slope[..terms - 1], t - origin);
     let tol = 4.0 * f64::EPSILON * tb.abs();
     let tm = brent_root(rate, ta, tb, rate(ta), rate(tb), tol)?;
     Some(value(tm).abs())
 }
 
-/// The largest `|force|` of element `el` on a step propagated exactly in one piece, its law affine
+/// The largest `|force|` of element `e` on a step propagated exactly in one piece, its law affine
 /// (`k x + c v + f0`), N: the force as a polynomial on the step's series
 /// ([`crate::integrate::Motion::functional_series`]), searched by golden section, each reading a scalar
 /// Horner instead of the whole motion and the law.
 /// `None` for a whole interval taken at once (a polynomial per piece) or a law that is not affine.
-fn affine_force_max(seg: &Segment<'_, '_>, el: &crate::element::Element) -> Option<f64> {
+fn affine_force_max(seg: &Segment<'_, '_>, e: usize) -> Option<f64> {
     let m = seg.dense.motion().filter(|m| m.pieces() == 1)?;
-    let a = el.affine()?;
-    let n = seg.system.layout().dofs();
-    let q = |c: &[f64], off: usize| el.a.value(c, off) - el.b.value(c, off);
+    let sys = seg.system;
+    let a = sys.elements()[e].affine()?;
+    let force = |c: &[f64]| {
+        let (x, v) = sys.deformation(e, c);
+        a.k * x + a.c * v
+    };
     let mut poly = [0.0; TERMS];
-    let (start, terms) = m.functional_series(0.0, |c| a.k * q(c, 0) + a.c * q(c, n), &mut poly);
+    let (start, terms) = m.functional_series(0.0, force, &mut poly);
     poly[0] += a.f0;
     let t0 = seg.dense.t0() + start;
-    let at = |t: f64| {
-        let d = t - t0;
-        poly[..terms]
-            .iter()
-            .rev()
-            .fold(0.0, |acc, &x| acc * d + x)
-            .abs()
-    };
+    let at = |t: f64| horner(&poly[..terms], t - t0).abs();
     let h = seg.t1 - seg.t0;
     Some(golden_max(at, seg.t0, seg.t1, 1e-12 * h).1)
 }

@@ -301,12 +301,21 @@ impl DenseComponent {
                 let th1 = 1.0 - th;
                 r[0] + th * (r[1] + th1 * (r[2] + th * (r[3] + th1 * r[4])))
             }
-            DenseComponent::Series { t0, c } => {
-                let tau = t - t0;
-                c.iter().rev().fold(0.0, |acc, &x| acc * tau + x)
-            }
+            DenseComponent::Series { t0, c } => horner(c, t - t0),
         }
     }
+}
+
+/// The seven stages' rates of a Dormand–Prince step, each as a slice of the state's length `n`: indexed
+/// without bounds checks in the step's loops.
+fn stages(k: &[Vec<f64>; 7], n: usize) -> [&[f64]; 7] {
+    std::array::from_fn(|j| &k[j][..n])
+}
+
+/// `sum_k c[k] d^k` (`c` from the constant term up) by Horner's rule.
+#[inline]
+pub fn horner(c: &[f64], d: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, &x| acc * d + x)
 }
 
 /// Accuracy settings of [`DormandPrince`]: a step is accepted when the weighted RMS of the local error,
@@ -567,9 +576,7 @@ impl DormandPrince {
                 5,
             );
             {
-                let k = &self.k;
-                let (k0, k2, k3, k4, k5) =
-                    (&k[0][..n], &k[2][..n], &k[3][..n], &k[4][..n], &k[5][..n]);
+                let [k0, _, k2, k3, k4, k5, _] = stages(&self.k, n);
                 let (y, ynew) = (&self.y[..n], &mut self.ynew[..n]);
                 for i in 0..n {
                     ynew[i] = y[i]
@@ -582,9 +589,7 @@ impl DormandPrince {
             }
             let mut err = 0.0;
             {
-                let k = &self.k;
-                let (k0, k2, k3) = (&k[0][..n], &k[2][..n], &k[3][..n]);
-                let (k4, k5, k6) = (&k[4][..n], &k[5][..n], &k[6][..n]);
+                let [k0, _, k2, k3, k4, k5, k6] = stages(&self.k, n);
                 let (y, ynew) = (&self.y[..n], &self.ynew[..n]);
                 let (atol, rel) = (&self.tol.atol[..n], &self.rel[..n]);
                 for i in 0..n {
@@ -602,9 +607,8 @@ impl DormandPrince {
             let counted = if self.tol.quiet.is_empty() {
                 self.controlled
             } else {
-                let k = &self.k;
-                let stages = [&k[0][..], &k[1], &k[2], &k[3], &k[4], &k[5], &k[6]];
-                self.tol.counted(self.controlled, &self.y, &stages)
+                self.tol
+                    .counted(self.controlled, &self.y, &stages(&self.k, self.n))
             };
             let err = (err / counted as f64).sqrt();
             if !err.is_finite() {
@@ -623,9 +627,7 @@ impl DormandPrince {
                 let d = &mut self.dense;
                 d.t0 = t;
                 d.h = h;
-                let k = &self.k;
-                let (k0, k2, k3) = (&k[0][..n], &k[2][..n], &k[3][..n]);
-                let (k4, k5, k6) = (&k[4][..n], &k[5][..n], &k[6][..n]);
+                let [k0, _, k2, k3, k4, k5, k6] = stages(&self.k, n);
                 let (y, ynew) = (&self.y[..n], &self.ynew[..n]);
                 let [r0, r1, r2, r3, r4] = &mut d.r;
                 let (r0, r1, r2, r3, r4) = (
