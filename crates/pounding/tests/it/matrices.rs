@@ -49,6 +49,20 @@ fn pair(a: ShearBuilding, gap: f64) -> Scenario {
     .unwrap()
 }
 
+/// Building `a` alone ("A") under El Centro for `t_end` s.
+fn alone(a: ShearBuilding, t_end: f64) -> Scenario {
+    Scenario::new(
+        vec![Building {
+            name: "A".into(),
+            structure: a,
+        }],
+        Record::el_centro_1940(),
+    )
+    .unwrap()
+    .with_duration(t_end)
+    .unwrap()
+}
+
 /// The tridiagonal matrix of a shear building (storeys k1, k2, k3) is that building: the same modes, modal
 /// damping and, pounding a neighbour, the same peaks and impacts (to roundoff: the springs sum the same
 /// stiffnesses in another order).
@@ -155,18 +169,9 @@ fn a_dense_matrix_is_its_equations() {
     let t_end = 4.0;
     let peaks = reference(&M3, &K3, &C3, t_end);
     for (tol, within) in [(1e-7, 2e-5), (1e-10, 1e-7)] {
-        let s = Scenario::new(
-            vec![Building {
-                name: "A".into(),
-                structure: from(&M3, &K3, Some(&C3)),
-            }],
-            Record::el_centro_1940(),
-        )
-        .unwrap()
-        .with_duration(t_end)
-        .unwrap()
-        .with_tolerance(tol)
-        .unwrap();
+        let s = alone(from(&M3, &K3, Some(&C3)), t_end)
+            .with_tolerance(tol)
+            .unwrap();
         let r = s.run().unwrap();
         for (i, (&a, b)) in r.buildings[0]
             .peak_displacement
@@ -217,17 +222,7 @@ fn a_matrix_storeys_shear_peaks_where_it_does() {
         s
     };
     let peak = rk4_peaks(&m, &k, &c, t_end, shear);
-    let s = Scenario::new(
-        vec![Building {
-            name: "A".into(),
-            structure: b,
-        }],
-        Record::el_centro_1940(),
-    )
-    .unwrap()
-    .with_duration(t_end)
-    .unwrap();
-    let r = s.run().unwrap();
+    let r = alone(b, t_end).run().unwrap();
     for (j, (&a, b)) in r.buildings[0]
         .peak_storey_shear
         .iter()
