@@ -77,11 +77,14 @@ pub fn mat_vec(a: &[f64], x: &[f64], y: &mut [f64]) {
 }
 
 /// `y = A x` for a row-major `A` of `x.len()` columns, over the columns in `live` only (the others' `x`
-/// being 0).
+/// being 0) when they are fewer than half.
 #[inline]
 pub fn mat_vec_on(a: &[f64], x: &[f64], live: &[usize], y: &mut [f64]) {
     let n = x.len();
-    if live.len() == n {
+    // A gathered product costs about three times a whole row's per column (the indices, and no paired
+    // loads): from half the columns live, the whole rows are cheaper (measured: a pair of 3 and 8 bilinear
+    // storeys, w of 40, -9 % instructions per run).
+    if 2 * live.len() >= n {
         return mat_vec(a, x, y);
     }
     if live.len() < 8 {
