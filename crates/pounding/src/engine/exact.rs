@@ -1,5 +1,10 @@
 //! Exact propagation between events while every law is affine ([`super::linear`]).
 //!
+//! A slow configuration met after the run's start (one series-length step per record interval, as the
+//! Runge–Kutta stepper takes one or two) is left to the stepper, whose motion is cheaper for the recorders
+//! to read, until one visit lasts [`BUILD_AFTER`] intervals; the configuration the run starts in is
+//! propagated exactly from its first step.
+//!
 //! Each record interval (the ground's acceleration is linear on it) is split into equal steps short enough
 //! for the truncated Taylor series of `exp(M h)` to be exact to rounding ([`crate::integrate::MAX_RHO`]);
 //! the transition matrices of a configuration (keyed by its laws' stiffnesses and viscous coefficients) and
@@ -153,7 +158,7 @@ struct Configuration {
     asked: Vec<(f64, usize)>,
     /// For a configuration too costly in series-length steps: the rates of its integrated quantities as
     /// forms (`None`: a law cannot give them, or a contact is closed), and the whole interval once built.
-    forms: Option<Vec<(usize, Vec<f64>)>>,
+    forms: Option<RateForms>,
     /// The rates of the state at any `w` (`None`: a law cannot give its states' rates): at a step's Gauss
     /// nodes and end in place of the right-hand side.
     rates: Option<AffineRates>,
@@ -164,6 +169,34 @@ struct Configuration {
     missed: usize,
     /// Whole intervals met before [`Self::whole`] was built ([`WHOLE_AFTER`]).
     met: usize,
+    /// The run started in this configuration: stepped exactly from its first step.
+    first: bool,
+    /// Whole intervals in a row left to the stepper in this visit (see [`Exact::step_until`]).
+    visit: usize,
+}
+
+/// Each integrated quantity's rate as a quadratic form of `w` ([`System::rate_forms`]).
+type RateForms = Vec<(usize, Vec<f64>)>;
+
+/// A configuration of step bound `r` (1/s) that takes a record interval of length `interval` (s) in one
+/// series-length step, as the Runge–Kutta stepper does in one or two.
+fn slow(r: f64, interval: f64) -> bool {
+    r * interval <= MAX_RHO
+}
+
+/// What stepping configuration `m` of `sys` exactly needs: the rates' forms (kept for a configuration
+/// taking whole intervals), the rates of the state off them, and the nonzeros of `m`.
+fn exact_parts(
+    sys: &System,
+    m: &[f64],
+    (nw, mech): (usize, usize),
+    whole: bool,
+) -> (Option<RateForms>, Option<AffineRates>, Sparse) {
+    let forms = sys.rate_forms();
+    let rates = forms
+        .as_deref()
+        .map(|f| AffineRates::new(m, nw, mech / 2, f));
+    (forms.filter(|_| whole), rates, Sparse::of(m, nw))
 }
 
 /// The whole interval of length `h` of configuration `c` (with its forms) of `sys`.
@@ -417,7 +450,12 @@ impl Exact {
             return false;
         }
         self.current = match self.configs.iter().position(|c| c.key == self.key) {
-            Some(i) => i,
+            Some(i) => {
+                if i != self.current {
+                    self.configs[i].visit = 0;
+                }
+                i
+            }
             None => {
                 let m = sys.linear_matrix();
                 let r = step_bound(&m, self.nw, sys.layout().dofs());
@@ -432,21 +470,21 @@ impl Exact {
                     && !closed
                     && self.nw <= MAX_WHOLE_DIM
                     && (MIN_PIECES..=MAX_PIECES).contains(&(1usize << halvings(r * self.interval)));
-                // Forms only for a configuration that will be stepped exactly (many are met and refused).
-                let forms = (fine || whole).then(|| sys.rate_forms()).flatten();
-                let rates = forms
-                    .as_deref()
-                    .map(|f| AffineRates::new(&m, self.nw, self.mech / 2, f));
+                let first = self.configs.is_empty();
+                // Forms only for a configuration that will be stepped exactly (many are met and refused,
+                // or left to the stepper until they last: see `step_until`).
+                let (forms, rates, sparse) =
+                    if whole || (fine && (first || !slow(r, self.interval))) {
+                        exact_parts(sys, &m, (self.nw, self.mech), whole)
+                    } else {
+                        (None, None, Sparse::default())
+                    };
                 let config = Configuration {
                     key: self.key.clone(),
-                    forms: forms.filter(|_| whole),
+                    forms,
                     rates,
                     r,
-                    sparse: if fine || whole {
-                        Sparse::of(&m, self.nw)
-                    } else {
-                        Sparse::default()
-                    },
+                    sparse,
                     m,
                     lengths: Vec::new(),
                     seen: (f64::NAN, 0),
@@ -457,6 +495,8 @@ impl Exact {
                     taken: 0,
                     missed: 0,
                     met: 0,
+                    first,
+                    visit: 0,
                 };
                 if self.configs.len() < KEPT {
                     self.configs.push(config);
@@ -540,6 +580,25 @@ impl Exact {
             return self.step_whole(sys, t_stop);
         }
         let (t0, h) = (self.t, self.length(t_stop));
+        let interval = self.is_interval(t0, t_stop);
+        let c = &mut self.configs[self.current];
+        if !c.first && c.lengths.is_empty() && slow(c.r, self.interval) {
+            // A slow configuration met after the start (a branch, a restrainer gone taut): the stepper
+            // takes an interval in one step too, and its motion is cheaper to read, until a visit lasts
+            // long enough to pay for the transitions. Counted as used, or it would be the first forgotten.
+            c.uses += 1;
+            if !interval {
+                return false;
+            }
+            c.visit += 1;
+            if c.visit < BUILD_AFTER {
+                return false;
+            }
+            c.seen = (h, BUILD_AFTER);
+            if c.sparse.rows() == 0 {
+                (_, c.rates, c.sparse) = exact_parts(sys, &c.m, (self.nw, self.mech), false);
+            }
+        }
         self.begin(sys, h);
         self.propagate(h);
         self.finish(sys, (t0, h, self.end_time(t0, h, t_stop)), None);
