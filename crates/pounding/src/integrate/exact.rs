@@ -306,7 +306,9 @@ pub struct Motion {
     series: RefCell<Vec<f64>>,
     /// The piece whose series [`Self::series`] holds (`usize::MAX`: none).
     series_of: Cell<usize>,
-    acc_poly: RefCell<Vec<[f64; 5]>>,
+    /// Per integrated quantity, the coefficients of its quartic rate's integral over `theta` (monomial
+    /// `m` divided by `m + 1`), then that integral at `theta = 1` (built once per step, [`rate_quartic`]).
+    acc_poly: RefCell<Vec<[f64; 6]>>,
     acc_built: Cell<bool>,
     /// Pieces of the step: 1, or more for a whole record interval taken at once ([`Self::chain`]).
     pieces: usize,
@@ -357,7 +359,7 @@ impl Motion {
             asked: RefCell::new(Vec::with_capacity(OFFSETS)),
             series: RefCell::new(vec![0.0; TERMS * nw]),
             series_of: Cell::new(usize::MAX),
-            acc_poly: RefCell::new(vec![[0.0; 5]; acc]),
+            acc_poly: RefCell::new(vec![[0.0; 6]; acc]),
             acc_built: Cell::new(false),
             pieces: 1,
             piece: 0.0,
@@ -724,26 +726,50 @@ impl Motion {
         if h <= 0.0 || tau <= 0.0 {
             return self.acc0[k];
         }
-        if !self.acc_built.get() {
-            let mut poly = self.acc_poly.borrow_mut();
-            for (j, p) in poly.iter_mut().enumerate() {
-                let r: [f64; 5] = std::array::from_fn(|q| self.rates[q][self.mech + j]);
-                *p = rate_quartic(&r);
-            }
-            self.acc_built.set(true);
+        self.build_integrals();
+        self.integrated_on(&self.acc_poly.borrow()[k], tau, h, k)
+    }
+
+    /// The integrated quantities `0 .. out.len()` at `tau` into `out` ([`Self::integrated`] each, the
+    /// polynomials borrowed once: a history sample reads them all).
+    pub fn integrated_into(&self, tau: f64, h: f64, out: &mut [f64]) {
+        if h <= 0.0 || tau <= 0.0 {
+            out.copy_from_slice(&self.acc0[..out.len()]);
+            return;
         }
+        self.build_integrals();
+        let poly = self.acc_poly.borrow();
+        for (k, (o, q)) in out.iter_mut().zip(poly.iter()).enumerate() {
+            *o = self.integrated_on(q, tau, h, k);
+        }
+    }
+
+    /// [`Self::acc_poly`] for this step, if not built yet.
+    fn build_integrals(&self) {
+        if self.acc_built.get() {
+            return;
+        }
+        let mut poly = self.acc_poly.borrow_mut();
+        for (j, p) in poly.iter_mut().enumerate() {
+            let r: [f64; 5] = std::array::from_fn(|q| self.rates[q][self.mech + j]);
+            let c = rate_quartic(&r);
+            for m in 0..5 {
+                p[m] = c[m] / (m + 1) as f64;
+            }
+            p[5] = (0..5).rev().fold(0.0, |acc, m| acc + p[m]);
+        }
+        self.acc_built.set(true);
+    }
+
+    /// Integrated quantity `k` at `tau` from its integral's coefficients `q` ([`Self::acc_poly`]).
+    fn integrated_on(&self, q: &[f64; 6], tau: f64, h: f64, k: usize) -> f64 {
         let theta = tau / h;
-        let c = self.acc_poly.borrow()[k];
-        let integral = |theta: f64| {
-            (0..5)
-                .rev()
-                .fold(0.0, |acc, m| acc * theta + c[m] / (m + 1) as f64)
-        };
-        let value = self.acc0[k] + tau * integral(theta);
+        let integral = (0..5).rev().fold(0.0, |acc, m| acc * theta + q[m]);
+        let value = self.acc0[k] + tau * integral;
         match &self.acc1 {
             // The quartic misses the fast modes of a whole interval by a little: its error at the end,
             // known, is spread along the step so that the value meets the exact one there.
-            Some(acc1) => value + theta * (acc1[k] - self.acc0[k] - h * integral(1.0)),
+            Some(acc1) => value + theta * (acc1[k] - self.acc0[k] - h * q[5]),
             None => value,
         }
     }

@@ -144,9 +144,11 @@ impl Dense {
             let tau = t - self.t0;
             let mech = m.mech.min(out.len());
             m.motion_at(tau, self.h, self.slack(), &mut out[..mech], true);
-            for (i, o) in out.iter_mut().enumerate().skip(mech) {
-                *o = m.component(tau, self.h, i);
+            if mech < m.mech {
+                // A prefix of the motion asked for: nothing integrated.
+                return;
             }
+            m.integrated_into(tau, self.h, &mut out[mech..]);
             return;
         }
         let th = if self.h == 0.0 {
