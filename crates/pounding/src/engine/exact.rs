@@ -574,7 +574,9 @@ impl Exact {
     /// Takes one exact step towards `t_stop` (never past it). The ground's acceleration must be linear on
     /// `[t, t_stop]` (the driver stops at its kinks). `false`, with nothing done, when a configuration that
     /// takes whole record intervals ([`Whole`]) has not built them yet, or misses its Hermite screens more
-    /// often than not ([`HERMITE_MISS`]): the Runge–Kutta stepper takes `[t, t_stop]` then.
+    /// often than not ([`HERMITE_MISS`]), or when a slow configuration met after the start has not lasted
+    /// [`BUILD_AFTER`] intervals in this visit (see the module): the Runge–Kutta stepper takes `[t, t_stop]`
+    /// then.
     pub fn step_until(&mut self, sys: &System, t_stop: f64) -> bool {
         if self.whole {
             return self.step_whole(sys, t_stop);
