@@ -387,15 +387,20 @@ pub struct Exact {
 }
 
 impl Exact {
-    /// A stepper for `sys`, or `None` when its `w` is too large to pay ([`MAX_EXACT_DIM`]); `tol` is the
-    /// run's (the sizes of its motion).
+    /// A stepper for `sys`, or `None` when its `w` is too large to pay ([`MAX_EXACT_DIM`], or larger than
+    /// whole intervals take, [`MAX_WHOLE_DIM`], with a series step's work above [`MAX_INTERVAL_WORK`]):
+    /// then no configuration is tried at any event. `tol` is the run's (the sizes of its motion).
     pub fn new(sys: &System, tol: &Tolerance) -> Option<Self> {
         let nw = sys.linear_dim();
-        if nw > MAX_EXACT_DIM {
-            return None;
-        }
         let dim = sys.dim();
         let mech = 2 * sys.layout().dofs();
+        // Too large to pay in any configuration: beyond whole intervals' size, and a single series step
+        // per interval beyond the work they may cost (only a configuration without stiffness or damping,
+        // bodies in free flight, would be cheaper, and the stepper takes those in long steps).
+        let never = nw > MAX_WHOLE_DIM && (mech * nw) as f64 > MAX_INTERVAL_WORK;
+        if nw > MAX_EXACT_DIM || never {
+            return None;
+        }
         let scale: Vec<f64> = (0..mech / 2)
             .map(|i| {
                 tol.atol
