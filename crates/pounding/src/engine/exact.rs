@@ -178,6 +178,14 @@ struct Configuration {
 /// Each integrated quantity's rate as a quadratic form of `w` ([`System::rate_forms`]).
 type RateForms = Vec<(usize, Vec<f64>)>;
 
+impl Configuration {
+    /// A slow configuration ([`slow`]) met after the start, without transitions yet (record intervals of
+    /// `interval` s): left to the stepper until a visit lasts [`BUILD_AFTER`] intervals.
+    fn declined(&self, interval: f64) -> bool {
+        !self.first && self.lengths.is_empty() && slow(self.r, interval)
+    }
+}
+
 /// A configuration of step bound `r` (1/s) that takes a record interval of length `interval` (s) in one
 /// series-length step, as the Runge–Kutta stepper does in one or two.
 fn slow(r: f64, interval: f64) -> bool {
@@ -475,21 +483,12 @@ impl Exact {
                     && !closed
                     && self.nw <= MAX_WHOLE_DIM
                     && (MIN_PIECES..=MAX_PIECES).contains(&(1usize << halvings(r * self.interval)));
-                let first = self.configs.is_empty();
-                // Forms only for a configuration that will be stepped exactly (many are met and refused,
-                // or left to the stepper until they last: see `step_until`).
-                let (forms, rates, sparse) =
-                    if whole || (fine && (first || !slow(r, self.interval))) {
-                        exact_parts(sys, &m, (self.nw, self.mech), whole)
-                    } else {
-                        (None, None, Sparse::default())
-                    };
-                let config = Configuration {
+                let mut config = Configuration {
                     key: self.key.clone(),
-                    forms,
-                    rates,
+                    forms: None,
+                    rates: None,
                     r,
-                    sparse,
+                    sparse: Sparse::default(),
                     m,
                     lengths: Vec::new(),
                     seen: (f64::NAN, 0),
@@ -500,9 +499,15 @@ impl Exact {
                     taken: 0,
                     missed: 0,
                     met: 0,
-                    first,
+                    first: self.configs.is_empty(),
                     visit: 0,
                 };
+                // Forms only for a configuration that will be stepped exactly (many are met and refused,
+                // or left to the stepper until they last: see `step_until`).
+                if whole || (fine && !config.declined(self.interval)) {
+                    (config.forms, config.rates, config.sparse) =
+                        exact_parts(sys, &config.m, (self.nw, self.mech), whole);
+                }
                 if self.configs.len() < KEPT {
                     self.configs.push(config);
                     self.configs.len() - 1
@@ -589,7 +594,7 @@ impl Exact {
         let (t0, h) = (self.t, self.length(t_stop));
         let interval = self.is_interval(t0, t_stop);
         let c = &mut self.configs[self.current];
-        if !c.first && c.lengths.is_empty() && slow(c.r, self.interval) {
+        if c.declined(self.interval) {
             // A slow configuration met after the start (a branch, a restrainer gone taut): the stepper
             // takes an interval in one step too, and its motion is cheaper to read, until a visit lasts
             // long enough to pay for the transitions. Counted as used, or it would be the first forgotten.

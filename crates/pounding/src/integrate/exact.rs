@@ -756,7 +756,7 @@ impl Motion {
             for m in 0..5 {
                 p[m] = c[m] / (m + 1) as f64;
             }
-            p[5] = (0..5).rev().fold(0.0, |acc, m| acc + p[m]);
+            p[5] = super::horner(&p[..5], 1.0);
         }
         self.acc_built.set(true);
     }
@@ -764,7 +764,7 @@ impl Motion {
     /// Integrated quantity `k` at `tau` from its integral's coefficients `q` ([`Self::acc_poly`]).
     fn integrated_on(&self, q: &[f64; 6], tau: f64, h: f64, k: usize) -> f64 {
         let theta = tau / h;
-        let integral = (0..5).rev().fold(0.0, |acc, m| acc * theta + q[m]);
+        let integral = super::horner(&q[..5], theta);
         let value = self.acc0[k] + tau * integral;
         match &self.acc1 {
             // The quartic misses the fast modes of a whole interval by a little: its error at the end,

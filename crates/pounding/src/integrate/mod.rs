@@ -144,11 +144,10 @@ impl Dense {
             let tau = t - self.t0;
             let mech = m.mech.min(out.len());
             m.motion_at(tau, self.h, self.slack(), &mut out[..mech], true);
-            if mech < m.mech {
-                // A prefix of the motion asked for: nothing integrated.
-                return;
+            // Past the motion (not when only a prefix of it is asked): the integrated quantities.
+            if mech == m.mech {
+                m.integrated_into(tau, self.h, &mut out[mech..]);
             }
-            m.integrated_into(tau, self.h, &mut out[mech..]);
             return;
         }
         let th = if self.h == 0.0 {
