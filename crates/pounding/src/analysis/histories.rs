@@ -95,7 +95,13 @@ impl Observer for HistoryRecorder {
                 break;
             }
             seg.dense.eval(t.max(seg.t0), &mut self.ys);
-            sys.rhs(t, &self.ys, &mut self.rate);
+            // The floors' accelerations: on an exact step off its configuration's matrix (a few sparse rows),
+            // else the right-hand side.
+            let n = l.dofs();
+            let (motion, acc) = (&self.ys[..2 * n], &mut self.rate[n..2 * n]);
+            if !seg.dense.accelerations(t.max(seg.t0), motion, acc) {
+                sys.rhs(t, &self.ys, &mut self.rate);
+            }
             let ag = sys.ground().at(t);
             let h = &mut self.hist;
             h.t.push(t);

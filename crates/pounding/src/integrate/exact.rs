@@ -320,8 +320,9 @@ pub struct Motion {
     chained: Cell<usize>,
     /// `w` at the start of the piece being read.
     piece_w: RefCell<Vec<f64>>,
-    /// The rates of `w` past the motion (the forcing's slopes; 0 for constant forces).
+    /// The rates of `w` past the motion (the forcing's slopes; 0 for constant forces), once known this step.
     forcing_rate: RefCell<Vec<f64>>,
+    forcing_known: Cell<bool>,
     /// The integrated quantities at the step's end, when the step gave them exactly (a whole interval):
     /// what the quartics are bent to meet.
     acc1: Option<Vec<f64>>,
@@ -339,6 +340,8 @@ pub struct Motion {
     jump_rows: Vec<f64>,
     /// Room for one jump's product (`mech`).
     jumped: RefCell<Vec<f64>>,
+    /// Room for `w` at an offset (`nw`): see [`Self::accelerations_at`].
+    w_at_offset: RefCell<Vec<f64>>,
 }
 
 impl Motion {
@@ -367,6 +370,7 @@ impl Motion {
             chained: Cell::new(1),
             piece_w: RefCell::new(vec![0.0; nw]),
             forcing_rate: RefCell::new(vec![0.0; nw - mech]),
+            forcing_known: Cell::new(false),
             acc1: None,
             sparse: Sparse::default(),
             live: (0..nw).collect(),
@@ -374,6 +378,7 @@ impl Motion {
             probe_rows: Vec::new(),
             jump_rows: Vec::new(),
             jumped: RefCell::new(vec![0.0; mech]),
+            w_at_offset: RefCell::new(vec![0.0; nw]),
         }
     }
 
@@ -404,6 +409,7 @@ impl Motion {
         self.series_of.set(usize::MAX);
         self.chained.set(1);
         self.acc_built.set(false);
+        self.forcing_known.set(false);
     }
 
     /// Makes the step one piece (an exact step within the series' reach).
@@ -527,6 +533,40 @@ impl Motion {
         }
     }
 
+    /// The forcing's rates ([`Self::forcing_rate`]), constant over the step: found at the first ask.
+    fn forcing_rates(&self) -> std::cell::Ref<'_, Vec<f64>> {
+        if !self.forcing_known.get() {
+            let (nw, mech) = (self.w0.len(), self.mech);
+            let mut rate = self.forcing_rate.borrow_mut();
+            rate.resize(nw - mech, 0.0);
+            for (i, r) in rate.iter_mut().enumerate() {
+                let row = &self.m[(mech + i) * nw + mech..(mech + i + 1) * nw];
+                *r = row.iter().zip(&self.w0[mech..]).map(|(a, b)| a * b).sum();
+            }
+            self.forcing_known.set(true);
+        }
+        self.forcing_rate.borrow()
+    }
+
+    /// The accelerations (the velocities' rates, m/s^2 or rad/s^2, relative to the ground as the right-hand
+    /// side gives them) at `tau` into the step, `out.len()` of them from the first, given the motion there
+    /// (`motion`: `w[..mech]`, as [`Self::motion_at`] wrote it): the velocities' rows of `M` on `w`, whose
+    /// components past the motion (the forcing) are linear in time, `w_i(tau) = w_i + tau (M w)_i`. The
+    /// laws are not evaluated: in one configuration the rates are `M w`.
+    pub fn accelerations_at(&self, tau: f64, motion: &[f64], out: &mut [f64]) {
+        let (nw, n) = (self.w0.len(), self.mech / 2);
+        let mut w = self.w_at_offset.borrow_mut();
+        w[..2 * n].copy_from_slice(&motion[..2 * n]);
+        self.forcing_at(tau, &self.forcing_rates(), &mut w);
+        if self.sparse.rows() == nw {
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = self.sparse.row(n + i).iter().map(|&(j, a)| a * w[j]).sum();
+            }
+        } else {
+            mat_vec(&self.m[n * nw..(n + out.len()) * nw], &w, out);
+        }
+    }
+
     /// `w[..out.len()]` at the start of piece `k`, along the chain (cheaper than a series: what a search
     /// inside a whole interval narrows itself with first).
     pub fn piece_start(&self, k: usize, out: &mut [f64]) {
@@ -582,15 +622,7 @@ impl Motion {
         let mut w = self.piece_w.borrow_mut();
         w.copy_from_slice(&self.w0);
         if k > 0 {
-            let mut rate = self.forcing_rate.borrow_mut();
-            if self.chained.get() == 1 {
-                // The forcing's rates, constant over the step: found with the chain's first link.
-                rate.resize(nw - mech, 0.0);
-                for (i, r) in rate.iter_mut().enumerate() {
-                    let row = &self.m[(mech + i) * nw + mech..(mech + i + 1) * nw];
-                    *r = row.iter().zip(&self.w0[mech..]).map(|(a, b)| a * b).sum();
-                }
-            }
+            let rate = self.forcing_rates();
             let mut known = self.chained.get();
             let levels = self.jump_rows.len() / (mech * nw);
             if k + 1 - known.min(k + 1) > k.count_ones() as usize && k >> levels == 0 {
@@ -876,6 +908,39 @@ pub(super) mod tests {
     /// The motion at an offset with transition rows of its own equals the series there (both exact to
     /// rounding); the ends are the states the step left; an interior offset without rows is counted once per
     /// ask, and only when asked with `log`.
+    #[test]
+    fn accelerations_off_the_matrix_are_the_velocity_s_rate() {
+        let (w, zeta) = (12.0f64, 0.05f64);
+        let m = oscillator(w, zeta);
+        let h = MAX_RHO / step_bound(&m, 4, 1);
+        for sparse in [false, true] {
+            let mut motion = Motion::new(2, 4, 0);
+            if sparse {
+                motion.set_matrix(&m);
+            } else {
+                motion.m.copy_from_slice(&m);
+            }
+            motion.set_start(&[0.01, -0.2, 1.5, -30.0]);
+            motion.invalidate();
+            motion.terms = TERMS;
+            for tau in [0.0, 0.37 * h, h] {
+                let mut at = [0.0; 2];
+                motion.on_series(tau, &mut at);
+                let mut acc = [0.0];
+                motion.accelerations_at(tau, &at, &mut acc);
+                // The rate of the velocity on the series, and the oscillator's equation at tau.
+                let series = motion.w_at(tau, 1)[1];
+                let equation = -w * w * at[0] - 2.0 * zeta * w * at[1] - (1.5 - 30.0 * tau);
+                for expected in [series, equation] {
+                    assert!(
+                        (acc[0] - expected).abs() <= 1e-13 * expected.abs(),
+                        "{acc:?} vs {expected}"
+                    );
+                }
+            }
+        }
+    }
+
     #[test]
     fn offset_rows_give_the_motion_of_the_series() {
         let (w, zeta) = (12.0f64, 0.05f64);

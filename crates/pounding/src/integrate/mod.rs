@@ -163,6 +163,20 @@ impl Dense {
         }
     }
 
+    /// On a step propagated exactly, the accelerations (m/s^2 or rad/s^2, relative to the ground) of the
+    /// first `out.len()` degrees of freedom at `t`, given the displacements and velocities there (`motion`,
+    /// as [`Self::eval`] wrote them): off the configuration's matrix ([`Motion::accelerations_at`]), not the
+    /// laws. `false`, with nothing written, on a Runge–Kutta step.
+    pub fn accelerations(&self, t: f64, motion: &[f64], out: &mut [f64]) -> bool {
+        match &self.exact {
+            Some(m) => {
+                m.accelerations_at(t - self.t0, motion, out);
+                true
+            }
+            None => false,
+        }
+    }
+
     /// The interpolant of component `i` of a Runge–Kutta step as a polynomial in `theta = (t - t0) / h`:
     /// its coefficients of `theta^0 .. theta^4`; `None` on a step propagated exactly.
     pub fn quartic(&self, i: usize) -> Option<[f64; 5]> {
