@@ -214,8 +214,9 @@ impl Peaks {
         let cut = h < step - 4.0 * f64::EPSILON * t1.abs();
         let tol = 4.0 * f64::EPSILON * t1.abs();
         for i in 0..n {
-            let ground = |tau: f64| sys.ground_in(i, &motion.w0, 2 * n, tau).0;
-            let slope = sys.ground_in(i, &motion.w0, 2 * n, 0.0).1;
+            let line = sys.ground_in(i, &motion.w0, 2 * n);
+            let ground = |tau: f64| line.at(tau);
+            let slope = line.slope();
             let (a0, a1) = (
                 motion.rates[0][n + i] + ground(0.0),
                 if cut {

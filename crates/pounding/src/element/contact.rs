@@ -358,7 +358,7 @@ impl ElementLaw for Contact {
         0..2
     }
 
-    #[inline]
+    #[inline(always)]
     fn evaluate(&self, x: f64, v: f64, _s: &[f64], ds: &mut [f64]) -> (f64, f64) {
         let f = self.law_force(x, v);
         let elastic = match self.state {

@@ -109,15 +109,14 @@ impl System<'_> {
         }
     }
 
-    /// The ground's acceleration (m/s^2) and its slope (m/s^3) that shake degree of freedom `i` at `tau` into
-    /// a step whose `w` at its start is `w` (`mech` displacements and velocities).
-    pub(crate) fn ground_in(&self, i: usize, w: &[f64], mech: usize, tau: f64) -> (f64, f64) {
-        self.channels_of(i)
-            .iter()
-            .fold((0.0, 0.0), |(a, s), &(c, p)| {
-                let (g, sl) = (w[mech + 2 * c], w[mech + 2 * c + 1]);
-                (a + p * (g + sl * tau), s + p * sl)
-            })
+    /// The ground's acceleration that shakes degree of freedom `i` in a step whose `w` at its start is `w`
+    /// (`mech` displacements and velocities), as a line in the offset into the step: read off `w` once
+    /// for the many offsets a search reads.
+    pub(crate) fn ground_in(&self, i: usize, w: &[f64], mech: usize) -> GroundLine {
+        GroundLine(
+            self.channels_of(i)
+                .map(|(c, p)| (p, w[mech + 2 * c], w[mech + 2 * c + 1])),
+        )
     }
 
     /// `M` (row-major, [`Self::linear_dim`] squared) of the current configuration ([`Self::linear_now`]).
@@ -167,5 +166,26 @@ impl System<'_> {
         w[..n2].copy_from_slice(&y[..n2]);
         w[n2..n2 + fd].copy_from_slice(forcing);
         w[n2 + fd..].copy_from_slice(f0);
+    }
+}
+
+/// The ground's acceleration shaking one degree of freedom inside a step: per channel, its weight, the
+/// channel's acceleration at the step's start (m/s^2) and its slope (m/s^3) ([`System::ground_in`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct GroundLine([(f64, f64, f64); 2]);
+
+impl GroundLine {
+    /// The acceleration at `tau` s into the step, m/s^2.
+    #[inline]
+    pub(crate) fn at(&self, tau: f64) -> f64 {
+        self.0
+            .iter()
+            .fold(0.0, |a, &(p, g, sl)| a + p * (g + sl * tau))
+    }
+
+    /// Its slope, m/s^3.
+    #[inline]
+    pub(crate) fn slope(&self) -> f64 {
+        self.0.iter().fold(0.0, |s, &(p, _, sl)| s + p * sl)
     }
 }
