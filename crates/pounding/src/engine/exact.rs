@@ -26,9 +26,10 @@ use super::forms::AffineRates;
 use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
-    halvings, live_of, mat_vec_on, step_bound, transition, Dense, Motion, OdeSystem, Sparse,
-    Tolerance, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
+    halvings, live_of, mat_vec_on, step_bound, transition, Dense, IntegratedRates, Motion,
+    OdeSystem, Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
+use std::sync::Arc;
 
 /// Configurations kept at a time.
 const KEPT: usize = 16;
@@ -47,11 +48,16 @@ const BUILD_AFTER: usize = 24;
 /// than the Runge–Kutta stages it replaces.
 pub const MAX_EXACT_DIM: usize = 64;
 
-/// The transition matrices of one step length: to its end and to its three Gauss nodes.
+/// The transition matrices of one step length: to its end and to its three Gauss nodes; and, when the
+/// configuration's rates are forms, the integrals of the forms over the step (three-point Gauss, as the
+/// nodes' rates would give them): a step's integrated quantities grow by them without reading the nodes.
 #[derive(Debug)]
 struct Length {
     h: f64,
-    phi: [Vec<f64>; 4],
+    phi: Arc<[Vec<f64>; 4]>,
+    /// Each form's integral over the step, packed symmetric ([`pack_symmetric`]), in the order of the
+    /// configuration's forms.
+    integrals: Option<Vec<f64>>,
 }
 
 /// A whole record interval in one step ([`crate::integrate::exponential`]), for a configuration whose
@@ -156,12 +162,13 @@ struct Configuration {
     offsets: Vec<(f64, Vec<f64>)>,
     /// Offsets asked without rows, with how many times: built into [`Self::offsets`] after [`BUILD_AFTER`].
     asked: Vec<(f64, usize)>,
-    /// For a configuration too costly in series-length steps: the rates of its integrated quantities as
-    /// forms (`None`: a law cannot give them, or a contact is closed), and the whole interval once built.
+    /// The rates of its integrated quantities as forms (`None`: a law cannot give them, or a contact is
+    /// closed), integrated over a built step length ([`Length::integrals`]) or, for a configuration too
+    /// costly in series-length steps, over the whole interval once built.
     forms: Option<RateForms>,
     /// The rates of the state at any `w` (`None`: a law cannot give its states' rates): at a step's Gauss
     /// nodes and end in place of the right-hand side.
-    rates: Option<AffineRates>,
+    rates: Option<Arc<AffineRates>>,
     whole: Option<Whole>,
     /// Whole intervals taken, and left to the stepper for their Hermite misses ([`HERMITE_MISS`]): a
     /// configuration whose fast modes ring (lightly damped) misses nearly always, and stops trying.
@@ -192,19 +199,34 @@ fn slow(r: f64, interval: f64) -> bool {
     r * interval <= MAX_RHO
 }
 
-/// What stepping configuration `m` of `sys` exactly needs: the rates' forms (kept for a configuration
-/// taking whole intervals), the rates of the state off them, and the nonzeros of `m`.
+/// What stepping configuration `m` of `sys` exactly needs: the rates' forms (integrated over a whole
+/// interval, or over a step length once built), the rates of the state off them, and the nonzeros of `m`.
 fn exact_parts(
     sys: &System,
     m: &[f64],
     (nw, mech): (usize, usize),
-    whole: bool,
-) -> (Option<RateForms>, Option<AffineRates>, Sparse) {
+) -> (Option<RateForms>, Option<Arc<AffineRates>>, Sparse) {
     let forms = sys.rate_forms();
     let rates = forms
         .as_deref()
-        .map(|f| AffineRates::new(m, nw, mech / 2, f));
-    (forms.filter(|_| whole), rates, Sparse::of(m, nw))
+        .map(|f| Arc::new(AffineRates::new(m, nw, mech / 2, f)));
+    (forms, rates, Sparse::of(m, nw))
+}
+
+/// The integrals over a step of length `h` (within the series' reach) of configuration `c`'s forms,
+/// packed ([`Length::integrals`]); `None` without forms or rates.
+fn length_integrals(c: &Configuration, (nw, mech): (usize, usize), h: f64) -> Option<Vec<f64>> {
+    let forms = c.forms.as_deref().filter(|_| c.rates.is_some())?;
+    let qs: Vec<&[f64]> = forms.iter().map(|(_, q)| q.as_slice()).collect();
+    let blocks = crate::integrate::form_blocks(&c.m, nw, mech, (h, c.r), &qs);
+    // The last block is the whole step (the only one within the series' reach).
+    let step = blocks.last()?;
+    Some(
+        step.integrals
+            .iter()
+            .flat_map(|g| pack_symmetric(g, nw))
+            .collect(),
+    )
 }
 
 /// The whole interval of length `h` of configuration `c` (with its forms) of `sys`.
@@ -390,6 +412,12 @@ pub struct Exact {
     /// The record's time step, s (the shortest of supports' records; infinite under a constant
     /// acceleration).
     interval: f64,
+    /// The built length of the current configuration the last step took without reading its Gauss nodes
+    /// (its integrated quantities grown by the length's form integrals).
+    unread: Option<usize>,
+    /// The last step's observers read its integrated quantities inside it: the next step reads its nodes
+    /// (they will be asked again) rather than grow by the form integrals and read them again on demand.
+    nodes_asked: bool,
     /// Each ground channel's acceleration and slope on the current interval (`[g_0, s_0, g_1, s_1, ...]`).
     lines: Vec<f64>,
 }
@@ -454,6 +482,8 @@ impl Exact {
             scale,
             live: Vec::with_capacity(nw),
             before: (vec![0.0; dim], vec![0.0; dim]),
+            unread: None,
+            nodes_asked: false,
         })
     }
 
@@ -506,7 +536,7 @@ impl Exact {
                 // or left to the stepper until they last: see `step_until`).
                 if whole || (fine && !config.declined(self.interval)) {
                     (config.forms, config.rates, config.sparse) =
-                        exact_parts(sys, &config.m, (self.nw, self.mech), whole);
+                        exact_parts(sys, &config.m, (self.nw, self.mech));
                 }
                 if self.configs.len() < KEPT {
                     self.configs.push(config);
@@ -608,7 +638,7 @@ impl Exact {
             }
             c.seen = (h, BUILD_AFTER);
             if c.sparse.rows() == 0 {
-                (_, c.rates, c.sparse) = exact_parts(sys, &c.m, (self.nw, self.mech), false);
+                (c.forms, c.rates, c.sparse) = exact_parts(sys, &c.m, (self.nw, self.mech));
             }
         }
         self.begin(sys, h);
@@ -720,6 +750,7 @@ impl Exact {
     /// `wn` (as [`Self::propagate`]) and [`Self::inc`] over block `i` of the whole interval (`2^i` pieces).
     fn propagate_block(&mut self, i: usize) {
         let (nw, mech) = (self.nw, self.mech);
+        self.unread = None;
         let c = &mut self.configs[self.current];
         let whole = c.whole.as_mut().expect("built by step_whole");
         if whole.nodes[i].is_none() {
@@ -791,19 +822,32 @@ impl Exact {
                     transition(&c.m, nw, mech, GAUSS_NODES[1] * h),
                     transition(&c.m, nw, mech, GAUSS_NODES[2] * h),
                 ];
+                let integrals = length_integrals(c, (nw, mech), h);
                 if c.lengths.len() >= LENGTHS {
                     c.lengths.remove(0);
                 }
-                c.lengths.push(Length { h, phi });
+                c.lengths.push(Length {
+                    h,
+                    phi: Arc::new(phi),
+                    integrals,
+                });
                 Some(c.lengths.len() - 1)
             } else {
                 None
             }
         });
+        self.unread = None;
         match found {
             Some(i) => {
                 live_of(&self.w, &mut self.live);
-                for (p, out) in c.lengths[i].phi.iter().zip(self.wn.iter_mut()) {
+                // With the length's form integrals, the nodes are read only if an observer asks.
+                let nodes = if c.lengths[i].integrals.is_some() && !self.nodes_asked {
+                    self.unread = Some(i);
+                    1
+                } else {
+                    4
+                };
+                for (p, out) in c.lengths[i].phi.iter().zip(self.wn.iter_mut()).take(nodes) {
                     mat_vec_on(p, &self.w, &self.live, &mut out[..mech]);
                 }
             }
@@ -842,6 +886,7 @@ impl Exact {
         let Some((dt0, dh, motion)) = self.dense.motion_mut() else {
             return;
         };
+        self.nodes_asked = motion.integrals_read();
         // Where the last step's observers sampled its motion: offsets worth rows of their own.
         let slack = 16.0 * f64::EPSILON * (t0.abs() + h);
         motion.take_asked(&mut self.asked);
@@ -890,7 +935,27 @@ impl Exact {
             );
             self.chain_config = Some(motion_config);
         }
-        for (j, node) in GAUSS_NODES.iter().enumerate() {
+        // A built length with form integrals: the nodes left unread, found only if an observer asks.
+        let unread = match (block, self.unread) {
+            (None, Some(i)) => config.lengths.get(i).and_then(|l| {
+                let rates: Arc<dyn IntegratedRates> = config.rates.clone()?;
+                Some((
+                    l.integrals.as_deref()?,
+                    UnreadNodes {
+                        rows: l.phi.clone(),
+                        rates,
+                    },
+                ))
+            }),
+            _ => None,
+        };
+        let integrals = unread.as_ref().map(|(g, _)| *g);
+        motion.set_nodes_unread(unread.map(|(_, nodes)| nodes));
+        for (j, node) in GAUSS_NODES
+            .iter()
+            .enumerate()
+            .filter(|_| integrals.is_none())
+        {
             let tau = node * h;
             match &config.rates {
                 Some(rates) => {
@@ -914,14 +979,25 @@ impl Exact {
                 }
             }
         }
-        if whole.is_none() {
-            for k in 0..acc {
-                let inc: f64 = (0..3)
-                    .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
-                    .sum();
-                self.y[mech + k] += h * inc;
+        match (whole, integrals) {
+            (Some(_), _) => {}
+            (None, Some(g)) => {
+                pair_products(&self.w, &mut self.pairs);
+                let forms = config.forms.iter().flatten();
+                for ((k, _), g) in forms.zip(g.chunks_exact(self.pairs.len())) {
+                    self.y[mech + k] += crate::integrate::dot(g, &self.pairs);
+                }
+                motion.single();
             }
-            motion.single();
+            (None, None) => {
+                for k in 0..acc {
+                    let inc: f64 = (0..3)
+                        .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
+                        .sum();
+                    self.y[mech + k] += h * inc;
+                }
+                motion.single();
+            }
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;
@@ -938,20 +1014,7 @@ impl Exact {
             None => sys.rhs_in(t1, forcing(&self.w, mech, h), &self.y, &mut self.dydt),
         }
         motion.rates[4].copy_from_slice(&self.dydt);
-        // The jerks: the velocities' rows of M on the rates (the forcing's rates are its slopes).
-        let (nw, n, fd) = (self.nw, mech / 2, self.lines.len());
-        let m = &motion.m;
-        for (end, rates) in [0, 4].into_iter().enumerate() {
-            for i in 0..n {
-                let row = &m[(n + i) * nw..(n + i + 1) * nw];
-                let mut j: f64 = (0..mech).map(|l| row[l] * motion.rates[rates][l]).sum();
-                j += (0..fd)
-                    .step_by(2)
-                    .map(|c| row[mech + c] * motion.w0[mech + c + 1])
-                    .sum::<f64>();
-                motion.jerk[end][i] = j;
-            }
-        }
+        motion.set_jerks(self.lines.len());
     }
 
     /// The state at `t` inside the last step, its integrated quantities by three-point Gauss–Legendre

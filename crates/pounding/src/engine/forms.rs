@@ -138,6 +138,15 @@ impl AffineRates {
         Self { n, rows, forms }
     }
 
+    /// The integrated quantities' rates at `w`, one per quantity (as [`Self::write`] writes them past the
+    /// motion).
+    fn write_integrated(&self, w: &[f64], out: &mut [f64]) {
+        out.fill(0.0);
+        for (k, entries) in &self.forms {
+            out[*k] = entries.iter().map(|&(a, b, c)| c * w[a] * w[b]).sum();
+        }
+    }
+
     /// Writes the rate of each layout component at `w` to `out` (the layout's length).
     pub(crate) fn write(&self, w: &[f64], out: &mut [f64]) {
         let n = self.n;
@@ -149,5 +158,11 @@ impl AffineRates {
         for (k, entries) in &self.forms {
             out[2 * n + k] = entries.iter().map(|&(a, b, c)| c * w[a] * w[b]).sum();
         }
+    }
+}
+
+impl crate::integrate::IntegratedRates for AffineRates {
+    fn integrated_rates(&self, w: &[f64], out: &mut [f64]) {
+        self.write_integrated(w, out);
     }
 }

@@ -15,6 +15,7 @@
 //! `h^7 (3!)^4 / (7 (6!)^3) f^(6)`).
 
 use std::cell::{Cell, RefCell};
+use std::sync::Arc;
 
 /// Most terms of the Taylor series kept (powers 0 to `TERMS - 1`): enough for `rho = 1/2`.
 pub const TERMS: usize = 20;
@@ -275,6 +276,25 @@ impl Sparse {
     }
 }
 
+/// The rates of the integrated quantities (energies, the laws' own states) at a whole state `w` of one
+/// configuration: what a step whose Gauss nodes the stepper did not read asks when its integrated
+/// quantities are read inside it ([`Motion::set_nodes_unread`]).
+pub trait IntegratedRates: std::fmt::Debug + Send + Sync {
+    /// Writes the rate of each integrated quantity at `w` (all `nw` components) to `out` (one per
+    /// quantity, in the layout's order past the motion).
+    fn integrated_rates(&self, w: &[f64], out: &mut [f64]);
+}
+
+/// A step's Gauss nodes as the stepper left them unread: the transition rows to the step's end and its
+/// three nodes (the first `mech` rows of each, [`transition`]), and the rates of the integrated quantities.
+#[derive(Clone, Debug)]
+pub struct UnreadNodes {
+    /// `[end, node 0, node 1, node 2]`.
+    pub rows: Arc<[Vec<f64>; 4]>,
+    /// The configuration's rates.
+    pub rates: Arc<dyn IntegratedRates>,
+}
+
 /// The exact motion on one step: the series of the linear state `w` (built on first use), and the
 /// quantities integrated along it from their rates at five points of the step.
 #[derive(Clone, Debug, Default)]
@@ -287,8 +307,16 @@ pub struct Motion {
     pub w0: Vec<f64>,
     /// The integrated quantities at the step's start (layout components `mech..`).
     pub acc0: Vec<f64>,
-    /// The rates of every layout component at the step's start, three Gauss nodes and end: `rates[j][i]`.
+    /// The rates of every layout component at the step's start, three Gauss nodes and end: `rates[j][i]`
+    /// (at the nodes, not set when the stepper left them unread: [`Self::set_nodes_unread`]).
     pub rates: [Vec<f64>; 5],
+    /// A step whose Gauss nodes the stepper did not read (its integrated quantities' growth found
+    /// otherwise): how to read them when a reader asks for an integrated quantity inside the step.
+    unread: Option<UnreadNodes>,
+    /// The integrated quantities' rates at the three nodes, found from [`Self::unread`].
+    node_rates: RefCell<[Vec<f64>; 3]>,
+    /// An integrated quantity was read inside this step ([`Self::integrals_read`]).
+    integrals_read: Cell<bool>,
     /// Terms of the series the step needs ([`terms_for`]).
     pub terms: usize,
     /// The second rates of the velocities (the jerks, m/s^3) at the step's start and end.
@@ -354,6 +382,9 @@ impl Motion {
             w0: vec![0.0; nw],
             acc0: vec![0.0; acc],
             rates: std::array::from_fn(|_| vec![0.0; mech + acc]),
+            unread: None,
+            node_rates: RefCell::new(std::array::from_fn(|_| vec![0.0; acc])),
+            integrals_read: Cell::new(false),
             terms: TERMS,
             jerk: std::array::from_fn(|_| vec![0.0; mech / 2]),
             w1: vec![0.0; mech],
@@ -410,12 +441,46 @@ impl Motion {
         self.chained.set(1);
         self.acc_built.set(false);
         self.forcing_known.set(false);
+        self.integrals_read.set(false);
     }
 
     /// Makes the step one piece (an exact step within the series' reach).
     pub fn single(&mut self) {
         self.pieces = 1;
         self.acc1 = None;
+    }
+
+    /// The stepper did not read the step's Gauss nodes (`Some`: [`Self::rates`] at them is not set) or did.
+    /// Unread, they are found when an integrated quantity is read inside the step, from `w` at the step's
+    /// start by the rows to them.
+    pub fn set_nodes_unread(&mut self, unread: Option<UnreadNodes>) {
+        self.unread = unread;
+    }
+
+    /// The jerks at the step's ends ([`Self::jerk`]) from the rates there: the velocities' rows of `M` on
+    /// them, the forcing's rates being its slopes (`fd` forcing components, a channel's acceleration and
+    /// slope each).
+    pub fn set_jerks(&mut self, fd: usize) {
+        let (nw, mech) = (self.w0.len(), self.mech);
+        let n = mech / 2;
+        let m = &self.m;
+        for (end, rates) in [0, 4].into_iter().enumerate() {
+            for i in 0..n {
+                let row = &m[(n + i) * nw..(n + i + 1) * nw];
+                let mut j: f64 = (0..mech).map(|l| row[l] * self.rates[rates][l]).sum();
+                j += (0..fd)
+                    .step_by(2)
+                    .map(|c| row[mech + c] * self.w0[mech + c + 1])
+                    .sum::<f64>();
+                self.jerk[end][i] = j;
+            }
+        }
+    }
+
+    /// Whether an observer read an integrated quantity inside this step (a history sample): the stepper
+    /// reads the next step's nodes itself then.
+    pub fn integrals_read(&self) -> bool {
+        self.integrals_read.get()
     }
 
     /// Makes the step `pieces` pieces of `piece` s each, the motion carried across each by `rows` (the
@@ -758,7 +823,7 @@ impl Motion {
         if h <= 0.0 || tau <= 0.0 {
             return self.acc0[k];
         }
-        self.build_integrals();
+        self.build_integrals(h);
         self.integrated_on(&self.acc_poly.borrow()[k], tau, h, k)
     }
 
@@ -769,21 +834,30 @@ impl Motion {
             out.copy_from_slice(&self.acc0[..out.len()]);
             return;
         }
-        self.build_integrals();
+        self.build_integrals(h);
         let poly = self.acc_poly.borrow();
         for (k, (o, q)) in out.iter_mut().zip(poly.iter()).enumerate() {
             *o = self.integrated_on(q, tau, h, k);
         }
     }
 
-    /// [`Self::acc_poly`] for this step, if not built yet.
-    fn build_integrals(&self) {
+    /// [`Self::acc_poly`] for this step of length `h` (s), if not built yet.
+    fn build_integrals(&self, h: f64) {
         if self.acc_built.get() {
             return;
         }
+        self.integrals_read.set(true);
+        if let Some(unread) = &self.unread {
+            self.read_nodes(unread, h);
+        }
+        let nodes = self.node_rates.borrow();
+        let rate = |q: usize, j: usize| match (&self.unread, q) {
+            (Some(_), 1..=3) => nodes[q - 1][j],
+            _ => self.rates[q][self.mech + j],
+        };
         let mut poly = self.acc_poly.borrow_mut();
         for (j, p) in poly.iter_mut().enumerate() {
-            let r: [f64; 5] = std::array::from_fn(|q| self.rates[q][self.mech + j]);
+            let r: [f64; 5] = std::array::from_fn(|q| rate(q, j));
             let c = rate_quartic(&r);
             for m in 0..5 {
                 p[m] = c[m] / (m + 1) as f64;
@@ -791,6 +865,25 @@ impl Motion {
             p[5] = super::horner(&p[..5], 1.0);
         }
         self.acc_built.set(true);
+    }
+
+    /// The integrated quantities' rates at the Gauss nodes of a step of length `h` the stepper left unread
+    /// ([`Self::node_rates`]): `w` there by the rows to it (the forcing linear in time), its rates by the
+    /// configuration's.
+    fn read_nodes(&self, unread: &UnreadNodes, h: f64) {
+        let mech = self.mech;
+        let rate = self.forcing_rates();
+        let mut w = self.w_at_offset.borrow_mut();
+        let mut nodes = self.node_rates.borrow_mut();
+        for ((node, rows), out) in GAUSS_NODES
+            .iter()
+            .zip(&unread.rows[1..])
+            .zip(nodes.iter_mut())
+        {
+            mat_vec_on(rows, &self.w0, &self.live, &mut w[..mech]);
+            self.forcing_at(node * h, &rate, &mut w);
+            unread.rates.integrated_rates(&w, out);
+        }
     }
 
     /// Integrated quantity `k` at `tau` from its integral's coefficients `q` ([`Self::acc_poly`]).
@@ -976,6 +1069,62 @@ pub(super) mod tests {
     }
 
     /// The integrated quantities equal the integral of a quartic rate given at the five points, exactly.
+    #[test]
+    fn nodes_left_unread_are_read_as_the_stepper_would_have() {
+        // The oscillator's damping energy, rate 2 zeta w v^2, read inside a step whose nodes the stepper
+        // read (rates set) and inside one whose nodes it left unread (rows and rates given).
+        #[derive(Debug)]
+        struct Damping(f64);
+        impl IntegratedRates for Damping {
+            fn integrated_rates(&self, w: &[f64], out: &mut [f64]) {
+                out[0] = self.0 * w[1] * w[1];
+            }
+        }
+        let (w, zeta) = (12.0f64, 0.05f64);
+        let m = oscillator(w, zeta);
+        let h = MAX_RHO / step_bound(&m, 4, 1);
+        let c = 2.0 * zeta * w;
+        let w0 = [0.01, -0.2, 1.5, -30.0];
+        let rows = [
+            h,
+            GAUSS_NODES[0] * h,
+            GAUSS_NODES[1] * h,
+            GAUSS_NODES[2] * h,
+        ]
+        .map(|t| transition(&m, 4, 2, t));
+        let step = |unread: bool| {
+            let mut motion = Motion::new(2, 4, 1);
+            motion.set_matrix(&m);
+            motion.set_start(&w0);
+            motion.invalidate();
+            motion.acc0[0] = 3.0;
+            for (j, p) in rows.iter().enumerate() {
+                let mut at = [0.0; 2];
+                mat_vec(p, &w0, &mut at);
+                // Rows 0 and 4: the step's ends; 1 to 3: its nodes, set only when read by the stepper.
+                let q = if j == 0 { 4 } else { j };
+                if q == 4 || !unread {
+                    motion.rates[q][2] = c * at[1] * at[1];
+                }
+            }
+            motion.rates[0][2] = c * w0[1] * w0[1];
+            if unread {
+                let rates: Arc<dyn IntegratedRates> = Arc::new(Damping(c));
+                motion.set_nodes_unread(Some(UnreadNodes {
+                    rows: Arc::new(rows.clone()),
+                    rates,
+                }));
+            }
+            assert!(!motion.integrals_read());
+            let got = [0.3, 0.8].map(|th| motion.component(th * h, h, 2));
+            assert!(motion.integrals_read());
+            got
+        };
+        let (read, unread) = (step(false), step(true));
+        assert_eq!(read, unread);
+        assert!(read[1] > read[0] && read[0] > 3.0);
+    }
+
     #[test]
     fn integrated_quantities_are_the_integral_of_the_quartic_rate() {
         let rate = |th: f64| 1.0f64 + 2.0 * th + 3.0 * th * th - th.powi(3) + 0.5 * th.powi(4);
