@@ -151,13 +151,11 @@ impl AffineRates {
     pub(crate) fn write(&self, w: &[f64], out: &mut [f64]) {
         let n = self.n;
         out[..n].copy_from_slice(&w[n..2 * n]);
-        out[n..].fill(0.0);
+        out[n..2 * n].fill(0.0);
         for &(i, j, v) in &self.rows {
             out[n + i] += v * w[j];
         }
-        for (k, entries) in &self.forms {
-            out[2 * n + k] = entries.iter().map(|&(a, b, c)| c * w[a] * w[b]).sum();
-        }
+        self.write_integrated(w, &mut out[2 * n..]);
     }
 }
 

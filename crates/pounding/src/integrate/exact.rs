@@ -998,9 +998,8 @@ pub(super) mod tests {
         }
     }
 
-    /// The motion at an offset with transition rows of its own equals the series there (both exact to
-    /// rounding); the ends are the states the step left; an interior offset without rows is counted once per
-    /// ask, and only when asked with `log`.
+    /// The accelerations read off the matrix at an offset equal the rate of the velocity's series there and
+    /// the oscillator's own equation, with the matrix by its nonzeros and whole.
     #[test]
     fn accelerations_off_the_matrix_are_the_velocity_s_rate() {
         let (w, zeta) = (12.0f64, 0.05f64);
@@ -1034,6 +1033,9 @@ pub(super) mod tests {
         }
     }
 
+    /// The motion at an offset with transition rows of its own equals the series there (both exact to
+    /// rounding); the ends are the states the step left; an interior offset without rows is counted once per
+    /// ask, and only when asked with `log`.
     #[test]
     fn offset_rows_give_the_motion_of_the_series() {
         let (w, zeta) = (12.0f64, 0.05f64);
@@ -1068,7 +1070,8 @@ pub(super) mod tests {
         assert_eq!(asked.len(), 1);
     }
 
-    /// The integrated quantities equal the integral of a quartic rate given at the five points, exactly.
+    /// Integrated quantities read inside a step whose Gauss nodes the stepper left unread equal, bit for bit,
+    /// those of the same step with its nodes read, and reading marks the step as read.
     #[test]
     fn nodes_left_unread_are_read_as_the_stepper_would_have() {
         // The oscillator's damping energy, rate 2 zeta w v^2, read inside a step whose nodes the stepper
@@ -1125,6 +1128,7 @@ pub(super) mod tests {
         assert!(read[1] > read[0] && read[0] > 3.0);
     }
 
+    /// The integrated quantities equal the integral of a quartic rate given at the five points, exactly.
     #[test]
     fn integrated_quantities_are_the_integral_of_the_quartic_rate() {
         let rate = |th: f64| 1.0f64 + 2.0 * th + 3.0 * th * th - th.powi(3) + 0.5 * th.powi(4);
