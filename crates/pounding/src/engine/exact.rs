@@ -412,12 +412,9 @@ pub struct Exact {
     /// The record's time step, s (the shortest of supports' records; infinite under a constant
     /// acceleration).
     interval: f64,
-    /// The built length of the current configuration the last step took without reading its Gauss nodes
-    /// (its integrated quantities grown by the length's form integrals).
-    unread: Option<usize>,
-    /// The last step's observers read its integrated quantities inside it: the next step reads its nodes
-    /// (they will be asked again) rather than grow by the form integrals and read them again on demand.
-    nodes_asked: bool,
+    /// The built length with form integrals of the current configuration the last step took: its
+    /// integrated quantities grown by them, its Gauss nodes left unread.
+    built: Option<usize>,
     /// Each ground channel's acceleration and slope on the current interval (`[g_0, s_0, g_1, s_1, ...]`).
     lines: Vec<f64>,
 }
@@ -482,8 +479,7 @@ impl Exact {
             scale,
             live: Vec::with_capacity(nw),
             before: (vec![0.0; dim], vec![0.0; dim]),
-            unread: None,
-            nodes_asked: false,
+            built: None,
         })
     }
 
@@ -750,7 +746,7 @@ impl Exact {
     /// `wn` (as [`Self::propagate`]) and [`Self::inc`] over block `i` of the whole interval (`2^i` pieces).
     fn propagate_block(&mut self, i: usize) {
         let (nw, mech) = (self.nw, self.mech);
-        self.unread = None;
+        self.built = None;
         let c = &mut self.configs[self.current];
         let whole = c.whole.as_mut().expect("built by step_whole");
         if whole.nodes[i].is_none() {
@@ -836,17 +832,16 @@ impl Exact {
                 None
             }
         });
-        self.unread = None;
+        self.built = None;
         match found {
             Some(i) => {
                 live_of(&self.w, &mut self.live);
                 // With the length's form integrals, the nodes are read only if an observer asks.
-                let nodes = if c.lengths[i].integrals.is_some() && !self.nodes_asked {
-                    self.unread = Some(i);
-                    1
-                } else {
-                    4
-                };
+                let unread = c.lengths[i].integrals.is_some() && c.rates.is_some();
+                if unread {
+                    self.built = Some(i);
+                }
+                let nodes = if unread { 1 } else { 4 };
                 for (p, out) in c.lengths[i].phi.iter().zip(self.wn.iter_mut()).take(nodes) {
                     mat_vec_on(p, &self.w, &self.live, &mut out[..mech]);
                 }
@@ -886,7 +881,6 @@ impl Exact {
         let Some((dt0, dh, motion)) = self.dense.motion_mut() else {
             return;
         };
-        self.nodes_asked = motion.integrals_read();
         // Where the last step's observers sampled its motion: offsets worth rows of their own.
         let slack = 16.0 * f64::EPSILON * (t0.abs() + h);
         motion.take_asked(&mut self.asked);
@@ -935,27 +929,24 @@ impl Exact {
             );
             self.chain_config = Some(motion_config);
         }
-        // A built length with form integrals: the nodes left unread, found only if an observer asks.
-        let unread = match (block, self.unread) {
+        // A built length with form integrals: the integrated quantities grow by them, and its nodes, unread,
+        // are found only if an observer asks (the same numbers whatever the observers read).
+        let built = match (block, self.built) {
             (None, Some(i)) => config.lengths.get(i).and_then(|l| {
                 let rates: Arc<dyn IntegratedRates> = config.rates.clone()?;
-                Some((
-                    l.integrals.as_deref()?,
-                    UnreadNodes {
-                        rows: l.phi.clone(),
-                        rates,
-                    },
-                ))
+                let nodes = UnreadNodes {
+                    rows: l.phi.clone(),
+                    rates,
+                };
+                Some((l.integrals.as_deref()?, nodes))
             }),
             _ => None,
         };
-        let integrals = unread.as_ref().map(|(g, _)| *g);
-        motion.set_nodes_unread(unread.map(|(_, nodes)| nodes));
-        for (j, node) in GAUSS_NODES
-            .iter()
-            .enumerate()
-            .filter(|_| integrals.is_none())
-        {
+        let integrals = built.as_ref().map(|(g, _)| *g);
+        let unread = built.map(|(_, nodes)| nodes);
+        let read = unread.is_none();
+        motion.set_nodes_unread(unread);
+        for (j, node) in GAUSS_NODES.iter().enumerate().filter(|_| read) {
             let tau = node * h;
             match &config.rates {
                 Some(rates) => {

@@ -315,8 +315,6 @@ pub struct Motion {
     unread: Option<UnreadNodes>,
     /// The integrated quantities' rates at the three nodes, found from [`Self::unread`].
     node_rates: RefCell<[Vec<f64>; 3]>,
-    /// An integrated quantity was read inside this step ([`Self::integrals_read`]).
-    integrals_read: Cell<bool>,
     /// Terms of the series the step needs ([`terms_for`]).
     pub terms: usize,
     /// The second rates of the velocities (the jerks, m/s^3) at the step's start and end.
@@ -384,7 +382,6 @@ impl Motion {
             rates: std::array::from_fn(|_| vec![0.0; mech + acc]),
             unread: None,
             node_rates: RefCell::new(std::array::from_fn(|_| vec![0.0; acc])),
-            integrals_read: Cell::new(false),
             terms: TERMS,
             jerk: std::array::from_fn(|_| vec![0.0; mech / 2]),
             w1: vec![0.0; mech],
@@ -441,7 +438,6 @@ impl Motion {
         self.chained.set(1);
         self.acc_built.set(false);
         self.forcing_known.set(false);
-        self.integrals_read.set(false);
     }
 
     /// Makes the step one piece (an exact step within the series' reach).
@@ -475,12 +471,6 @@ impl Motion {
                 self.jerk[end][i] = j;
             }
         }
-    }
-
-    /// Whether an observer read an integrated quantity inside this step (a history sample): the stepper
-    /// reads the next step's nodes itself then.
-    pub fn integrals_read(&self) -> bool {
-        self.integrals_read.get()
     }
 
     /// Makes the step `pieces` pieces of `piece` s each, the motion carried across each by `rows` (the
@@ -846,7 +836,6 @@ impl Motion {
         if self.acc_built.get() {
             return;
         }
-        self.integrals_read.set(true);
         if let Some(unread) = &self.unread {
             self.read_nodes(unread, h);
         }
@@ -1071,7 +1060,7 @@ pub(super) mod tests {
     }
 
     /// Integrated quantities read inside a step whose Gauss nodes the stepper left unread equal, bit for bit,
-    /// those of the same step with its nodes read, and reading marks the step as read.
+    /// those of the same step with its nodes read.
     #[test]
     fn nodes_left_unread_are_read_as_the_stepper_would_have() {
         // The oscillator's damping energy, rate 2 zeta w v^2, read inside a step whose nodes the stepper
@@ -1118,10 +1107,7 @@ pub(super) mod tests {
                     rates,
                 }));
             }
-            assert!(!motion.integrals_read());
-            let got = [0.3, 0.8].map(|th| motion.component(th * h, h, 2));
-            assert!(motion.integrals_read());
-            got
+            [0.3, 0.8].map(|th| motion.component(th * h, h, 2))
         };
         let (read, unread) = (step(false), step(true));
         assert_eq!(read, unread);
