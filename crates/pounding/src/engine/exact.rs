@@ -11,8 +11,10 @@
 //! step length are built once and kept, a few configurations at a time. The energies and the laws' own
 //! integrated states (a contact's work) are integrated along the exact motion by three-point
 //! Gauss–Legendre quadrature, their rates at the nodes (and the state's at a step's end) read off the
-//! configuration's matrix and forms ([`AffineRates`]) rather than the laws. Events are located on the
-//! exact motion ([`crate::integrate::Motion`]).
+//! configuration's matrix and forms ([`AffineRates`]) rather than the laws; over a built step length the same
+//! quadrature is held as the forms' integrals ([`Length::integrals`]), and the nodes are read only when an
+//! observer reads an integrated quantity inside the step. Events are located on the exact motion
+//! ([`crate::integrate::Motion`]).
 //!
 //! A configuration whose fast modes (a foundation on soil) would split an interval into many such steps takes
 //! each whole interval in one ([`Whole`]): its transitions by scaling and squaring, its energies as quadratic
