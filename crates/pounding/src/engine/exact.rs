@@ -28,8 +28,8 @@ use super::forms::AffineRates;
 use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
-    halvings, live_of, mat_vec_on, step_bound, transition, Dense, IntegratedRates, Motion,
-    OdeSystem, Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
+    halvings, live_of, mat_vec_on, step_bound, transition, Dense, Motion, OdeSystem, Sparse,
+    Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
 use std::sync::Arc;
 
@@ -229,6 +229,23 @@ fn length_integrals(c: &Configuration, (nw, mech): (usize, usize), h: f64) -> Op
             .flat_map(|g| pack_symmetric(g, nw))
             .collect(),
     )
+}
+
+/// Each integrated quantity's growth over a step (a whole interval's block, or a built length) from `w`:
+/// `w^T G w` by its form's integral `G` (`integrals`, packed symmetric, one after the other in the order of
+/// `keys`, the quantities' indices) into `inc`, 0 for the quantities without a form; `pairs` is room for
+/// `w`'s products ([`pair_products`]).
+fn form_growth(
+    w: &[f64],
+    (keys, integrals): (impl Iterator<Item = usize>, &[f64]),
+    pairs: &mut [f64],
+    inc: &mut [f64],
+) {
+    inc.fill(0.0);
+    pair_products(w, pairs);
+    for (k, g) in keys.zip(integrals.chunks_exact(pairs.len())) {
+        inc[k] = crate::integrate::dot(g, pairs);
+    }
 }
 
 /// The whole interval of length `h` of configuration `c` (with its forms) of `sys`.
@@ -765,12 +782,13 @@ impl Exact {
         for (p, out) in nodes.iter().zip(self.wn[1..].iter_mut()) {
             mat_vec_on(p, w, live, &mut out[..mech]);
         }
-        self.inc.fill(0.0);
-        pair_products(w, &mut self.pairs);
-        let forms = whole.integrals[i].chunks_exact(self.pairs.len());
-        for (k, g) in whole.quantities.iter().zip(forms) {
-            self.inc[*k] = crate::integrate::dot(g, &self.pairs);
-        }
+        let keys = whole.quantities.iter().copied();
+        form_growth(
+            w,
+            (keys, &whole.integrals[i]),
+            &mut self.pairs,
+            &mut self.inc,
+        );
     }
 
     /// Whether the cubic Hermite (values and rates at the ends) of each displacement meets the exact motion
@@ -838,12 +856,17 @@ impl Exact {
         match found {
             Some(i) => {
                 live_of(&self.w, &mut self.live);
-                // With the length's form integrals, the nodes are read only if an observer asks.
-                let unread = c.lengths[i].integrals.is_some() && c.rates.is_some();
-                if unread {
-                    self.built = Some(i);
-                }
-                let nodes = if unread { 1 } else { 4 };
+                // With the length's form integrals the quantities grow by them, and the nodes are read only
+                // if an observer asks.
+                let keys = c.forms.iter().flatten().map(|(k, _)| *k);
+                let nodes = match &c.lengths[i].integrals {
+                    Some(g) => {
+                        form_growth(&self.w, (keys, g), &mut self.pairs, &mut self.inc);
+                        self.built = Some(i);
+                        1
+                    }
+                    None => 4,
+                };
                 for (p, out) in c.lengths[i].phi.iter().zip(self.wn.iter_mut()).take(nodes) {
                     mat_vec_on(p, &self.w, &self.live, &mut out[..mech]);
                 }
@@ -918,10 +941,25 @@ impl Exact {
         self.dense_config = Some(motion_config);
         motion.w1.copy_from_slice(&self.wn[0][..mech]);
         self.ynode.copy_from_slice(&self.y);
-        if let Some((i, w)) = whole {
+        // A built length with form integrals: its nodes, unread, are found only if an observer asks (the
+        // same numbers whatever the observers read).
+        let unread = match (block, self.built) {
+            (None, Some(i)) => config.lengths.get(i).and_then(|l| {
+                Some(UnreadNodes {
+                    rows: l.phi.clone(),
+                    rates: config.rates.clone()?,
+                })
+            }),
+            _ => None,
+        };
+        if whole.is_some() || unread.is_some() {
+            // Grown by the form integrals over the block or the length ([`Self::propagate_block`],
+            // [`Self::propagate`]).
             for (y, inc) in self.y[mech..].iter_mut().zip(&self.inc) {
                 *y += inc;
             }
+        }
+        if let Some((i, w)) = whole {
             motion.chained(
                 (1 << i, piece),
                 &w.jumps,
@@ -931,21 +969,6 @@ impl Exact {
             );
             self.chain_config = Some(motion_config);
         }
-        // A built length with form integrals: the integrated quantities grow by them, and its nodes, unread,
-        // are found only if an observer asks (the same numbers whatever the observers read).
-        let built = match (block, self.built) {
-            (None, Some(i)) => config.lengths.get(i).and_then(|l| {
-                let rates: Arc<dyn IntegratedRates> = config.rates.clone()?;
-                let nodes = UnreadNodes {
-                    rows: l.phi.clone(),
-                    rates,
-                };
-                Some((l.integrals.as_deref()?, nodes))
-            }),
-            _ => None,
-        };
-        let integrals = built.as_ref().map(|(g, _)| *g);
-        let unread = built.map(|(_, nodes)| nodes);
         let read = unread.is_none();
         motion.set_nodes_unread(unread);
         for (j, node) in GAUSS_NODES.iter().enumerate().filter(|_| read) {
@@ -972,25 +995,16 @@ impl Exact {
                 }
             }
         }
-        match (whole, integrals) {
-            (Some(_), _) => {}
-            (None, Some(g)) => {
-                pair_products(&self.w, &mut self.pairs);
-                let forms = config.forms.iter().flatten();
-                for ((k, _), g) in forms.zip(g.chunks_exact(self.pairs.len())) {
-                    self.y[mech + k] += crate::integrate::dot(g, &self.pairs);
-                }
-                motion.single();
-            }
-            (None, None) => {
+        if whole.is_none() {
+            if read {
                 for k in 0..acc {
                     let inc: f64 = (0..3)
                         .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
                         .sum();
                     self.y[mech + k] += h * inc;
                 }
-                motion.single();
             }
+            motion.single();
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;
