@@ -436,6 +436,9 @@ pub struct Exact {
     built: Option<usize>,
     /// Each ground channel's acceleration and slope on the current interval (`[g_0, s_0, g_1, s_1, ...]`).
     lines: Vec<f64>,
+    /// The current configuration is slow, met after the start and without transitions yet: left to the
+    /// stepper, its visit counted at each whole interval ([`Self::resume`]).
+    waiting: bool,
 }
 
 impl Exact {
@@ -499,11 +502,14 @@ impl Exact {
             live: Vec::with_capacity(nw),
             before: (vec![0.0; dim], vec![0.0; dim]),
             built: None,
+            waiting: false,
         })
     }
 
-    /// Starts at `(t0, y0)` if the system's laws are all affine now; `false` otherwise.
+    /// Starts at `(t0, y0)` if the system's laws are all affine now; `false` otherwise, or when the
+    /// configuration is slow and met after the start without transitions yet ([`Self::waiting`]).
     pub fn reset(&mut self, sys: &System, t0: f64, y0: &[f64]) -> bool {
+        self.waiting = false;
         if !sys.linear_now(&mut self.key, &mut self.f0) {
             return false;
         }
@@ -571,6 +577,47 @@ impl Exact {
                 }
             }
         };
+        let c = &mut self.configs[self.current];
+        if c.declined(self.interval) {
+            // A slow configuration met after the start (a branch, a restrainer gone taut): the stepper
+            // takes an interval in one step too, and its motion is cheaper to read, until a visit lasts
+            // long enough to pay for the transitions. Counted as used, or it would be the first forgotten.
+            c.uses += 1;
+            self.waiting = true;
+            return false;
+        }
+        self.start(sys, t0, y0)
+    }
+
+    /// Whether the current configuration is left to the stepper until a visit lasts [`BUILD_AFTER`] whole
+    /// intervals ([`Self::resume`] counts them): no event has changed it since [`Self::reset`].
+    pub fn waiting(&self) -> bool {
+        self.waiting
+    }
+
+    /// At `(t0, y0)`, the start of a whole record interval the stepper is about to take: while
+    /// [`Self::waiting`], counts the visit's interval and starts once the visit lasts [`BUILD_AFTER`] (the
+    /// next step builds the configuration's transitions); else as [`Self::reset`].
+    pub fn resume(&mut self, sys: &System, t0: f64, y0: &[f64]) -> bool {
+        if !self.waiting {
+            return self.reset(sys, t0, y0);
+        }
+        let c = &mut self.configs[self.current];
+        c.uses += 1;
+        c.visit += 1;
+        if c.visit < BUILD_AFTER {
+            return false;
+        }
+        self.waiting = false;
+        if c.sparse.rows() == 0 {
+            (c.forms, c.rates, c.sparse) = exact_parts(sys, &c.m, (self.nw, self.mech));
+        }
+        self.start(sys, t0, y0)
+    }
+
+    /// Starts the current configuration at `(t0, y0)`; `false` if it takes whole intervals and cannot
+    /// (no forms) or misses its Hermite screens more often than not.
+    fn start(&mut self, sys: &System, t0: f64, y0: &[f64]) -> bool {
         self.whole = self.fine_work(self.configs[self.current].r) > MAX_INTERVAL_WORK;
         let c = &self.configs[self.current];
         if self.whole && (c.forms.is_none() || (c.missed >= 8 && c.missed > c.taken)) {
@@ -629,32 +676,18 @@ impl Exact {
     /// Takes one exact step towards `t_stop` (never past it). The ground's acceleration must be linear on
     /// `[t, t_stop]` (the driver stops at its kinks). `false`, with nothing done, when a configuration that
     /// takes whole record intervals ([`Whole`]) has not built them yet, or misses its Hermite screens more
-    /// often than not ([`HERMITE_MISS`]), or when a slow configuration met after the start has not lasted
-    /// [`BUILD_AFTER`] intervals in this visit (see the module): the Runge–Kutta stepper takes `[t, t_stop]`
-    /// then.
+    /// often than not ([`HERMITE_MISS`]): the Runge–Kutta stepper takes `[t, t_stop]` then. (A slow
+    /// configuration met after the start is not started until it lasts: [`Self::reset`], [`Self::resume`].)
     pub fn step_until(&mut self, sys: &System, t_stop: f64) -> bool {
         if self.whole {
             return self.step_whole(sys, t_stop);
         }
         let (t0, h) = (self.t, self.length(t_stop));
-        let interval = self.is_interval(t0, t_stop);
         let c = &mut self.configs[self.current];
         if c.declined(self.interval) {
-            // A slow configuration met after the start (a branch, a restrainer gone taut): the stepper
-            // takes an interval in one step too, and its motion is cheaper to read, until a visit lasts
-            // long enough to pay for the transitions. Counted as used, or it would be the first forgotten.
-            c.uses += 1;
-            if !interval {
-                return false;
-            }
-            c.visit += 1;
-            if c.visit < BUILD_AFTER {
-                return false;
-            }
+            // Resumed after a visit of BUILD_AFTER whole intervals (a declined configuration is not started
+            // otherwise): its transitions are built now.
             c.seen = (h, BUILD_AFTER);
-            if c.sparse.rows() == 0 {
-                (c.forms, c.rates, c.sparse) = exact_parts(sys, &c.m, (self.nw, self.mech));
-            }
         }
         self.begin(sys, h);
         self.propagate(h);

@@ -32,7 +32,8 @@ pub(super) struct Propagator {
     exact: Option<Exact>,
     on_exact: bool,
     /// The exact stepper left a stretch to the Runge–Kutta stepper (not a whole record interval, in a
-    /// configuration that takes only those): it takes over again at the next whole one.
+    /// configuration that takes only those), or its configuration waits to last ([`Exact::waiting`]): it
+    /// is tried again at the next whole one.
     retry: bool,
 }
 
@@ -53,7 +54,8 @@ impl Propagator {
     /// (Re)starts at `(t0, y0)`: exactly if the laws allow it now, else with trial step `h0`.
     pub fn reset(&mut self, sys: &System, t0: f64, y0: &[f64], h0: f64) {
         self.on_exact = self.exact.as_mut().is_some_and(|e| e.reset(sys, t0, y0));
-        self.retry = false;
+        // A configuration left to the stepper until it lasts is tried again at each whole interval.
+        self.retry = self.exact.as_ref().is_some_and(Exact::waiting);
         if !self.on_exact {
             self.dp.reset(sys, t0, y0, h0);
         }
@@ -109,7 +111,7 @@ impl Propagator {
             self.dp.reset(sys, e.t(), e.y(), h0);
         } else if self.retry
             && e.is_interval(self.dp.t(), t_stop)
-            && e.reset(sys, self.dp.t(), self.dp.y())
+            && e.resume(sys, self.dp.t(), self.dp.y())
             && e.step_until(sys, t_stop)
         {
             // Back on the exact stepper at a whole interval; else the Runge–Kutta one goes on.
