@@ -3,7 +3,7 @@
 //! locate its peak, and its path kept if asked.
 
 use super::model::{ContactRef, Model};
-use super::peaks::{exact_extremum, step_peak};
+use super::peaks::{ends_on, exact_extremum, step_peak};
 use super::{Impact, ImpactLoop, Layer, MAX_LOOP_POINTS};
 use crate::element::{ContactPiece, ElementLaw, Engagement, Notice};
 use crate::engine::{EventInfo, Observer, Segment, System};
@@ -268,7 +268,8 @@ impl Observer for Impacts {
             let el = &sys.elements()[c.element];
             for (peak, end) in self.end_peaks[k].iter_mut().zip([el.a, el.b]) {
                 let q = |y: &[f64], off: usize| end.value(y, off);
-                *peak = peak.max(step_peak(seg, &mut self.motion, *peak, q).1);
+                let ends = ends_on(seg, self.motion.len() / 2, q);
+                *peak = peak.max(step_peak(seg, &mut self.motion, *peak, ends, q).1);
             }
             let (hi, lo) = (&mut self.max_closing[k], &mut self.max_opening[k]);
             *hi = hi.max(xb);

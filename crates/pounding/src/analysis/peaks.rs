@@ -26,17 +26,17 @@ impl Peak {
 /// The largest `|q|` on a step of a quantity `q = value(y, 0)` whose rate is `value(y, n)` (a combination of
 /// displacements; its rate the same of velocities), with its time: the cubic Hermite's estimate on the step's
 /// ends; on a step propagated exactly whose estimate may beat `best`, the extremum on the exact motion (the
-/// root of the rate, located by Brent's method). `motion` is room for the displacements and velocities.
+/// root of the rate, located by Brent's method). `ends` are `q` and its rate at the step's ends,
+/// `(q0, q1, r0, r1)` ([`ends_on`], or read once for several uses); `motion` is room for the displacements
+/// and velocities.
 pub(super) fn step_peak(
     seg: &Segment<'_, '_>,
     motion: &mut [f64],
     best: f64,
+    (qa, qb, va, vb): (f64, f64, f64, f64),
     value: impl Fn(&[f64], usize) -> f64,
 ) -> (f64, f64) {
-    let n = motion.len() / 2;
-    let (y0, y1) = (seg.y0, seg.y1);
     let h = seg.t1 - seg.t0;
-    let (qa, qb, va, vb) = (value(y0, 0), value(y1, 0), value(y0, n), value(y1, n));
     let (s, p) = hermite_peak(qa, qb, va, vb, h);
     // The Hermite estimate errs by less than 1 % on an exact step (r h <= 1/2).
     if p < 0.99 * best {
@@ -47,6 +47,17 @@ pub(super) fn step_peak(
         Some(_) => (seg.t1, qb.abs()),
         None => (seg.t0 + s * h, p),
     }
+}
+
+/// A quantity `q = value(y, 0)` and its rate `value(y, n)` at the ends of a step, as [`step_peak`] takes
+/// them; `n` degrees of freedom.
+pub(super) fn ends_on(
+    seg: &Segment<'_, '_>,
+    n: usize,
+    value: impl Fn(&[f64], usize) -> f64,
+) -> (f64, f64, f64, f64) {
+    let (y0, y1) = (seg.y0, seg.y1);
+    (value(y0, 0), value(y1, 0), value(y0, n), value(y1, n))
 }
 
 /// The first piece of a whole interval taken at once over which a rate (`va`, `vb` at the step's ends,
@@ -328,7 +339,7 @@ impl Peaks {
         }
         let mut shear = end.abs();
         if let Some(m) = seg.dense.motion() {
-            let (tm, peak_drift) = step_peak(seg, motion, self.drift[i], drift);
+            let (tm, peak_drift) = step_peak(seg, motion, self.drift[i], (xa, xb, va, vb), drift);
             self.drift[i] = self.drift[i].max(peak_drift);
             // On the exact motion (every law affine there) the shear is affine in it. A storey of one spring
             // without a reported viscous part peaks where its drift does; any other (a storey of a building
@@ -411,7 +422,6 @@ impl Observer for Peaks {
         let sys = seg.system;
         let l = sys.layout();
         let (y0, y1) = (seg.y0, seg.y1);
-        let h = seg.t1 - seg.t0;
         let n = l.dofs();
         for &e in &self.used {
             let ((xa, va), (xb, vb)) = (sys.deformation(e, y0), sys.deformation(e, y1));
@@ -420,21 +430,30 @@ impl Observer for Peaks {
         }
         for i in 0..n {
             let best = self.displacement[i].value;
-            let (t, u) = step_peak(seg, &mut self.motion, best, |y, off| y[off + i]);
+            let ends = (y0[i], y1[i], y0[n + i], y1[n + i]);
+            let (t, u) = step_peak(seg, &mut self.motion, best, ends, |y, off| y[off + i]);
             self.displacement[i].offer(u, t);
             self.storey(seg, i);
         }
         for (k, &e) in self.lines.iter().enumerate() {
             let el = &sys.elements()[e];
             let x = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
-            let (_, d) = step_peak(seg, &mut self.motion, self.line_drift[k], x);
+            // The line's deformation at the ends, read once above.
+            let [xa, va, xb, vb] = self.ends[e];
+            let (_, d) = step_peak(
+                seg,
+                &mut self.motion,
+                self.line_drift[k],
+                (xa, xb, va, vb),
+                x,
+            );
             self.line_drift[k] = self.line_drift[k].max(d);
         }
         for (p, peak) in self.corners.iter().zip(&mut self.corner) {
             let end = End::Point(*p);
-            let (t, u) = step_peak(seg, &mut self.motion, peak.value, |y, off| {
-                end.value(y, off)
-            });
+            let value = |y: &[f64], off: usize| end.value(y, off);
+            let ends = ends_on(seg, n, value);
+            let (t, u) = step_peak(seg, &mut self.motion, peak.value, ends, value);
             peak.offer(u, t);
         }
         for (c, peak) in self.columns.iter().zip(&mut self.column) {
@@ -448,24 +467,18 @@ impl Observer for Peaks {
                 d.value(y0, n),
                 d.value(y1, n),
             );
+            let el = &sys.elements()[c.element];
             for (p, &(alpha, beta)) in peak.iter_mut().zip(&c.ends) {
-                let v = if seg.dense.motion().is_some() {
-                    let el = &sys.elements()[c.element];
-                    let q = |y: &[f64], off: usize| {
-                        alpha * (el.a.value(y, off) - el.b.value(y, off)) + beta * d.value(y, off)
-                    };
-                    step_peak(seg, &mut self.motion, *p, q).1
-                } else {
-                    hermite_peak(
-                        alpha * xa + beta * da,
-                        alpha * xb + beta * db,
-                        alpha * va + beta * dva,
-                        alpha * vb + beta * dvb,
-                        h,
-                    )
-                    .1
+                let q = |y: &[f64], off: usize| {
+                    alpha * (el.a.value(y, off) - el.b.value(y, off)) + beta * d.value(y, off)
                 };
-                *p = p.max(v);
+                let ends = (
+                    alpha * xa + beta * da,
+                    alpha * xb + beta * db,
+                    alpha * va + beta * dva,
+                    alpha * vb + beta * dvb,
+                );
+                *p = p.max(step_peak(seg, &mut self.motion, *p, ends, q).1);
             }
         }
         self.accelerations_inside(seg);
