@@ -145,7 +145,7 @@ pub(super) struct Peaks {
     states: Vec<f64>,
     /// Room for the displacements and velocities between nodes.
     motion: Vec<f64>,
-    /// Room for a state inside a Runge–Kutta step and its rate.
+    /// Room for a state inside a Runge–Kutta step, and for an element's states' rates.
     at_y: Vec<f64>,
     at_f: Vec<f64>,
     /// Each storey element's deformation on the step (room for the storey with the most).
@@ -269,8 +269,9 @@ impl Peaks {
     /// On a Runge–Kutta step, the largest absolute acceleration of each floor inside it (read at the steps'
     /// ends alone, impacts' peaks were 2e-3 to 7.5e-3 low at the default tolerance). The derivative of the
     /// velocity's interpolant, a cubic, shows where the acceleration turns; where it may beat the floor's
-    /// peak there, the acceleration of the interpolated state (the right-hand side, as accurate as the state)
-    /// is maximised around it by parabolic interpolation ([`parabolic_max`]).
+    /// peak there, the acceleration of the interpolated state (its entry of the right-hand side,
+    /// [`System::acceleration`], as accurate as the state) is maximised around it by parabolic interpolation
+    /// ([`parabolic_max`]).
     fn accelerations_stepped(&mut self, seg: &Segment<'_, '_>) {
         let dense = seg.dense;
         let (t0, h) = (dense.t0(), dense.t1() - dense.t0());
@@ -303,8 +304,7 @@ impl Peaks {
                 let Self { at_y, at_f, .. } = self;
                 let true_acc = |t: f64| {
                     dense.eval(t, at_y);
-                    sys.rhs(t, at_y, at_f);
-                    (at_f[l.v(i)] + sys.ground_at(i, t)).abs()
+                    (sys.acceleration(i, t, at_y, at_f) + sys.ground_at(i, t)).abs()
                 };
                 let (tm, am) = parabolic_max(true_acc, t0 + th * h, (t0 + lo * h, t0 + hi * h), h);
                 self.acceleration[i].offer(am, tm);

@@ -68,7 +68,8 @@ macro_rules! registry {
             fn evaluate(&self, x: f64, v: f64, s: &[f64], ds: &mut [f64]) -> (f64, f64) {
                 dispatch!(self, l => l.evaluate(x, v, s, ds))
             }
-            #[inline]
+            // Always, for the same reason: the peaks' and the driver's loops over elements.
+            #[inline(always)]
             fn force(&self, x: f64, v: f64, s: &[f64]) -> f64 {
                 dispatch!(self, l => l.force(x, v, s))
             }

@@ -179,6 +179,8 @@ pub struct System<'a> {
     /// The driven degrees of freedom.
     driven: Vec<usize>,
     elements: Vec<Element>,
+    /// The elements acting on each degree of freedom (an end's term on it), in order.
+    incident: Vec<Vec<usize>>,
     /// Each element's constant force's place among the constant forces of `w` ([`linear`]), if its law
     /// has one ([`crate::element::ElementLaw::constant_force`]).
     constants: Vec<Option<usize>>,
@@ -219,6 +221,15 @@ impl<'a> System<'a> {
                 })
                 .collect(),
             axes: dofs.iter().map(|d| d.axis).collect(),
+            incident: (0..dofs.len())
+                .map(|i| {
+                    let on = |el: &Element| {
+                        let (a, b) = (el.a.terms(), el.b.terms());
+                        a.terms().iter().chain(b.terms()).any(|&(j, _)| j == i)
+                    };
+                    (0..elements.len()).filter(|&e| on(&elements[e])).collect()
+                })
+                .collect(),
             driven: (0..dofs.len()).filter(|&i| driven(&dofs[i])).collect(),
             constants: elements
                 .iter()
@@ -451,11 +462,8 @@ impl System<'_> {
             .zip(&self.pull)
             .zip(v)
             .zip(acc);
-        for (i, ((((&m, &a0), &(px, py)), &vi), acc)) in floors.enumerate() {
-            let ag = match (self.source[i], self.ground) {
-                (Some((k, _)), Ground::Many(rs)) => rs[k].at(t),
-                _ => px * agx + py * agy,
-            };
+        for (i, ((((&m, &a0), &pull), &vi), acc)) in floors.enumerate() {
+            let ag = self.shaking(i, t, pull, (agx, agy));
             *acc = -m * (ag + a0 * vi);
             e_in -= ag * m * vi;
             e_damp += a0 * m * vi * vi;
@@ -494,5 +502,47 @@ impl System<'_> {
         }
         dy[self.layout.input()] = e_in;
         dy[self.layout.damping()] = e_damp;
+    }
+
+    /// The ground's acceleration on degree of freedom `i` of pull `(px, py)` at `t` in the right-hand side,
+    /// m/s^2: its support's record, or the records' `(agx, agy)` along its pull.
+    #[inline(always)]
+    fn shaking(&self, i: usize, t: f64, (px, py): (f64, f64), (agx, agy): (f64, f64)) -> f64 {
+        match (self.source[i], self.ground) {
+            (Some((k, _)), Ground::Many(rs)) => rs[k].at(t),
+            _ => px * agx + py * agy,
+        }
+    }
+
+    /// The acceleration of degree of freedom `i` relative to the ground at `t` in state `y`, m/s^2 (rad/s^2
+    /// for a rotation): its entry of the right-hand side, by the same arithmetic from the elements acting on
+    /// it alone. `ds` is room for the states of the element with the most.
+    pub fn acceleration(&self, i: usize, t: f64, y: &[f64], ds: &mut [f64]) -> f64 {
+        let n = self.layout.dofs();
+        if let (Some((k, true)), Ground::Many(rs)) = (self.source[i], self.ground) {
+            return rs[k].at(t);
+        }
+        let (m, vi) = (self.mass[i], y[n + i]);
+        let ag = self.shaking(i, t, self.pull[i], self.ground.at_xy(t));
+        let mut acc = -m * (ag + self.a0[i] * vi);
+        for &e in &self.incident[i] {
+            let el = &self.elements[e];
+            let (x, v) = self.deformation(e, y);
+            let r = self.layout.block(e);
+            let (f, fv) = el.evaluate(x, v, &y[r.clone()], &mut ds[..r.len()]);
+            let total = f + fv;
+            // As the right-hand side applies it, end a's terms first.
+            for &(j, c) in el.a.terms().terms() {
+                if j == i {
+                    acc -= c * total;
+                }
+            }
+            for &(j, c) in el.b.terms().terms() {
+                if j == i {
+                    acc += c * total;
+                }
+            }
+        }
+        acc * self.inv_mass[i]
     }
 }
