@@ -580,7 +580,16 @@ impl Observer for DevicePeaks {
                 // may beat the peak (golden section; an affine law's force needs no states).
                 let el = &sys.elements()[e];
                 let q = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
-                if let Some((_, x)) = exact_extremum(seg, &mut self.motion, (va, vb), &q) {
+                // Only where the Hermite's extremum (within 1 % on an exact step) may beat a peak.
+                let p = Hermite::new(xa, xb, va, vb, h);
+                let near = p.extrema().into_iter().any(|s| {
+                    !s.is_nan()
+                        && (p.at(s) >= 0.99 * self.closing[k] || -p.at(s) >= 0.99 * self.opening[k])
+                });
+                if let Some((_, x)) = near
+                    .then(|| exact_extremum(seg, &mut self.motion, (va, vb), &q))
+                    .flatten()
+                {
                     hi = hi.max(x);
                     lo = lo.max(-x);
                 }
@@ -732,6 +741,10 @@ fn affine_force_max(seg: &Segment<'_, '_>, e: usize) -> Option<f64> {
     let m = seg.dense.motion().filter(|m| m.pieces() == 1)?;
     let sys = seg.system;
     let a = sys.elements()[e].affine()?;
+    if a.k == 0.0 && a.c == 0.0 {
+        // A constant force (a slack restrainer's 0).
+        return Some(a.f0.abs());
+    }
     let force = |c: &[f64]| {
         let (x, v) = sys.deformation(e, c);
         a.k * x + a.c * v
