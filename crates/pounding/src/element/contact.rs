@@ -390,6 +390,22 @@ impl ElementLaw for Contact {
         }
     }
 
+    /// A constant force `f0 = -k gap` only with a gap and a law linear while engaged (Hooke, Kelvin–Voigt):
+    /// a Hertz-type contact is affine only open, where its force is 0, and takes no component of the exact
+    /// state.
+    fn constant_force(&self) -> bool {
+        let linear = |law: ForceLaw| {
+            law.linear(Phase::Approach).is_some() || law.linear(Phase::Restitution).is_some()
+        };
+        self.gap != 0.0
+            && match &self.source {
+                LawSource::Prepared { contact, .. } => contact
+                    .law(self.m_eff, 1.0)
+                    .map_or(true, |(law, _)| linear(law)),
+                LawSource::Fixed => true,
+            }
+    }
+
     fn affine(&self) -> Option<Affine> {
         let (k, c) = match self.state {
             Engagement::Open | Engagement::Resting | Engagement::Released { .. } => (0.0, 0.0),
@@ -562,6 +578,23 @@ mod tests {
         );
         c.gate.set_resolution(1e-6);
         c
+    }
+
+    #[test]
+    fn only_a_gap_closed_by_a_law_linear_while_engaged_has_a_constant_force() {
+        // f0 = -k gap while engaged: Hooke and Kelvin-Voigt with a gap have one; the same without a gap,
+        // and Hertz-type laws (affine only open, force 0), have none.
+        let with_gap = |model: Model, k: f64, gap: f64| {
+            let law = ContactModel::new(model, k, 0.6).unwrap();
+            Contact::new(law.prepare().unwrap(), gap, 1.0e5, 1e-3).constant_force()
+        };
+        assert!(with_gap(Model::Hooke, 2e9, 0.01));
+        assert!(with_gap(Model::KelvinVoigt, 2e9, 0.01));
+        assert!(!with_gap(Model::Hooke, 2e9, 0.0));
+        assert!(!with_gap(Model::KelvinVoigt, 2e9, 0.0));
+        for model in [Model::Hertz, Model::Hertzdamp] {
+            assert!(!with_gap(model, 2e10, 0.01), "{model}");
+        }
     }
 
     #[test]
