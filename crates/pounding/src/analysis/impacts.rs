@@ -5,7 +5,7 @@
 use super::model::{ContactRef, Model};
 use super::peaks::{ends_on, exact_extremum, step_peak};
 use super::{Impact, ImpactLoop, Layer, MAX_LOOP_POINTS};
-use crate::element::{ContactPiece, ElementLaw, Engagement, Notice};
+use crate::element::{ContactPiece, ElementLaw, End, Engagement, Notice};
 use crate::engine::{EventInfo, Observer, Segment, System};
 use crate::integrate::{Hermite, PeakTracker};
 
@@ -120,8 +120,8 @@ pub(super) struct Impacts {
     pub max_closing: Vec<f64>,
     /// Largest opening (the closing's opposite) of each contact element so far, m (0 at rest).
     pub max_opening: Vec<f64>,
-    /// Largest |displacement| of each contact element's two ends along it so far, m: a floor's, or a point's
-    /// of a floor in plan along the normal (0 for the ground).
+    /// Largest |displacement| of each contact element's two ends along it so far, m, for an end at a point of a
+    /// floor in plan (along the normal); 0 for an end at a floor or the ground ([`end_peak`]).
     pub end_peaks: Vec<[f64; 2]>,
     /// The site (floor pair or wall floor) of each contact element, numbered in order: a bumper's layer and
     /// the hard law behind it share one.
@@ -267,6 +267,11 @@ impl Observer for Impacts {
             let p = Hermite::new(xa, xb, va, vb, h);
             let el = &sys.elements()[c.element];
             for (peak, end) in self.end_peaks[k].iter_mut().zip([el.a, el.b]) {
+                // A floor's is its peak displacement, which the floors' peaks locate the same way
+                // ([`super::peaks::Peaks::displacement`]); the ground's is 0.
+                if !matches!(end, End::Point(_)) {
+                    continue;
+                }
                 let q = |y: &[f64], off: usize| end.value(y, off);
                 let ends = ends_on(seg, self.motion.len() / 2, q);
                 *peak = peak.max(step_peak(seg, &mut self.motion, *peak, ends, q).1);
@@ -379,6 +384,23 @@ impl Observer for Impacts {
 }
 
 impl Impacts {
+    /// The largest |displacement| over the run of contact element `k`'s two ends along it, m: a floor's peak
+    /// displacement (`displacement`, the floors' peaks), a point's tracked here, 0 for the ground.
+    pub fn end_peaks_of(
+        &self,
+        sys: &System,
+        displacement: &[super::peaks::Peak],
+        k: usize,
+    ) -> [f64; 2] {
+        let el = &sys.elements()[self.contacts[k].element];
+        let tracked = self.end_peaks[k];
+        [(el.a, tracked[0]), (el.b, tracked[1])].map(|(end, tracked)| match end {
+            End::Dof(i) => displacement[i].value,
+            End::Point(_) => tracked,
+            End::Ground => 0.0,
+        })
+    }
+
     /// The impact of contact `k` goes on after a release: its record is withdrawn.
     fn withdraw(&mut self, k: usize) {
         let Some(i) = self.trackers[k].as_mut().and_then(|tr| tr.recorded.take()) else {

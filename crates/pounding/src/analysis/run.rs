@@ -492,7 +492,10 @@ fn site_totals(
             .sum(),
         max_penetration: mine.map(|i| i.max_penetration).fold(0.0, f64::max),
         max_closing: per(&rec.impacts.max_closing),
-        peak_ends: first.iter().map(|&k| rec.impacts.end_peaks[k]).collect(),
+        peak_ends: first
+            .iter()
+            .map(|&k| (rec.impacts).end_peaks_of(&model.system, &rec.peaks.displacement, k))
+            .collect(),
         column: model
             .columns
             .iter()
