@@ -121,7 +121,7 @@ pub(super) struct Impacts {
     /// Largest opening (the closing's opposite) of each contact element so far, m (0 at rest).
     pub max_opening: Vec<f64>,
     /// Largest |displacement| of each contact element's two ends along it so far, m, for an end at a point of a
-    /// floor in plan (along the normal); 0 for an end at a floor or the ground ([`end_peak`]).
+    /// floor in plan (along the normal); 0 for an end at a floor or the ground ([`Impacts::end_peaks_of`]).
     pub end_peaks: Vec<[f64; 2]>,
     /// The site (floor pair or wall floor) of each contact element, numbered in order: a bumper's layer and
     /// the hard law behind it share one.

@@ -494,7 +494,10 @@ fn site_totals(
         max_closing: per(&rec.impacts.max_closing),
         peak_ends: first
             .iter()
-            .map(|&k| (rec.impacts).end_peaks_of(&model.system, &rec.peaks.displacement, k))
+            .map(|&k| {
+                rec.impacts
+                    .end_peaks_of(&model.system, &rec.peaks.displacement, k)
+            })
             .collect(),
         column: model
             .columns

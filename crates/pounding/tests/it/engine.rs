@@ -90,8 +90,9 @@ fn a_floor_against_a_rigid_wall_delivers_the_single_impact_e() {
 fn a_floor_s_acceleration_alone_is_its_entry_of_the_right_hand_side() {
     // A floor in plan (x, y, rotation) on Bouc–Wen and linear lines from its points to the ground (its
     // points on either end), a contact from it to a second floor on a support of its own, and that support
-    // driven by a record of its own, tied to the first floor too: System::acceleration, which sums the elements acting on one degree of freedom, against the same
-    // entry of the whole right-hand side, bit for bit, at states spread over a few magnitudes.
+    // driven by a record of its own, tied to the first floor too: System::acceleration, which sums the
+    // elements acting on one degree of freedom, against the same entry of the whole right-hand side, bit for
+    // bit, at states spread over a few magnitudes.
     use pounding::element::{Point, StoreyLaw};
     use pounding::engine::Axis;
     use pounding::ground_motion::Record;
@@ -161,8 +162,8 @@ fn a_floor_s_acceleration_alone_is_its_entry_of_the_right_hand_side() {
     let mut checked = 0;
     for k in 0..40 {
         let t = 0.001 * k as f64;
-        // Deterministic states of mixed signs and sizes: displacements of mm to cm, velocities of cm/s to
-        // m/s, Bouc–Wen's z inside its bound.
+        // Deterministic states of mixed signs and sizes (|y| up to 5e-3, 5e-2 or 0.5 in SI units), Bouc–Wen's
+        // z inside its bound of 1.
         let y: Vec<f64> = (0..l.dim())
             .map(|j| {
                 let s = ((j * 7 + k * 13) % 17) as f64 / 17.0 - 0.5;
