@@ -281,10 +281,7 @@ impl Observer for Impacts {
             *lo = lo.max(-xb);
             // On an exact step, an extremum that may beat a peak (the Hermite's is within 1 %) is located on
             // the exact motion.
-            let near = p
-                .extrema()
-                .into_iter()
-                .any(|s| !s.is_nan() && (p.at(s) >= 0.99 * *hi || -p.at(s) >= 0.99 * *lo));
+            let near = p.extremum_near((*hi, *lo), 0.99);
             let x = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
             match near.then(|| exact_extremum(seg, &mut self.motion, (va, vb), &x)) {
                 Some(Some((_, x))) => {

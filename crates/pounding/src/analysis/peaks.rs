@@ -582,10 +582,7 @@ impl Observer for DevicePeaks {
                 let q = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
                 // Only where the Hermite's extremum (within 1 % on an exact step) may beat a peak.
                 let p = Hermite::new(xa, xb, va, vb, h);
-                let near = p.extrema().into_iter().any(|s| {
-                    !s.is_nan()
-                        && (p.at(s) >= 0.99 * self.closing[k] || -p.at(s) >= 0.99 * self.opening[k])
-                });
+                let near = p.extremum_near((self.closing[k], self.opening[k]), 0.99);
                 if let Some((_, x)) = near
                     .then(|| exact_extremum(seg, &mut self.motion, (va, vb), &q))
                     .flatten()

@@ -554,7 +554,7 @@ impl Exact {
                     visit: 0,
                 };
                 // Forms only for a configuration that will be stepped exactly (many are met and refused,
-                // or left to the stepper until they last: see `step_until`).
+                // or left to the stepper until they last: see `reset` below and `resume`).
                 if whole || (fine && !config.declined(self.interval)) {
                     (config.forms, config.rates, config.sparse) =
                         exact_parts(sys, &config.m, (self.nw, self.mech));

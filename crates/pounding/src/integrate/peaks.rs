@@ -56,6 +56,14 @@ impl Hermite {
 }
 
 impl Hermite {
+    /// Whether an interior extremum reaches `fraction` of the largest value `hi` so far, or of the largest
+    /// `-value` `lo` (the screen before an extremum is located on an exact motion the curve stays close to).
+    pub fn extremum_near(&self, (hi, lo): (f64, f64), fraction: f64) -> bool {
+        self.extrema()
+            .into_iter()
+            .any(|s| !s.is_nan() && (self.at(s) >= fraction * hi || -self.at(s) >= fraction * lo))
+    }
+
     /// The slope (rate per unit time) at the fraction `s` of the step.
     pub fn slope(&self, s: f64) -> f64 {
         (self.d + s * (2.0 * self.b + 3.0 * s * self.c)) / self.h
