@@ -256,8 +256,11 @@ impl Peaks {
             if j0 * j1 >= 0.0 || p < 0.99 * self.acceleration[i].value {
                 continue;
             }
-            let ((ta, ja), (tb, jb)) =
-                bracket(seg, (j0, j1), |m, k| m.second_rate_at(k, n + i) + slope);
+            let ((ta, ja), (tb, jb)) = bracket(seg, (j0, j1), |m, k| {
+                m.jerk_probe(i, k)
+                    .unwrap_or_else(|| m.second_rate_at(k, n + i))
+                    + slope
+            });
             let jerk = |t: f64| motion.w_at(t - t0, n + i)[2] + slope;
             if let Some(tm) = brent_root(jerk, ta, tb, ja, jb, tol) {
                 let a = motion.w_at(tm - t0, n + i)[1] + ground(tm - t0);

@@ -361,6 +361,9 @@ pub struct Motion {
     /// then the second's, `nw` each.
     probe_keys: Vec<usize>,
     probe_rows: Vec<f64>,
+    /// Each degree of freedom's jerk rows at the pieces' starts, one after the other (`nw` each; empty:
+    /// none): see [`Self::jerk_probe`].
+    jerk_rows: Vec<f64>,
     /// Transition rows over `1, 2, 4, ...` pieces (`mech x nw` each): the chain's links (one piece), and a
     /// piece's start far along the chain in a few products ([`Self::ensure_chain`]).
     jump_rows: Vec<f64>,
@@ -404,6 +407,7 @@ impl Motion {
             live: (0..nw).collect(),
             probe_keys: Vec::new(),
             probe_rows: Vec::new(),
+            jerk_rows: Vec::new(),
             jump_rows: Vec::new(),
             jumped: RefCell::new(vec![0.0; mech]),
             w_at_offset: RefCell::new(vec![0.0; nw]),
@@ -477,13 +481,14 @@ impl Motion {
     /// first `mech` rows of its transition; copied only when `fresh`, the matrix having changed), and the
     /// integrated quantities at its end `acc1` (the quartics through the rates are bent to meet them).
     /// `jumps` are the rows over `1, 2, 4, ...` pieces one after the other (`rows` first), and `probes` keys
-    /// (elements) and the rows of their two functionals at the pieces' starts ([`Self::probe`]), for as many
-    /// pieces as any step of this matrix and piece length has; both copied when `fresh` too.
+    /// (elements) and the rows of their two functionals at the pieces' starts ([`Self::probe`]), then the
+    /// rows of each degree of freedom's jerk there ([`Self::jerk_probe`]), for as many pieces as any step of
+    /// this matrix and piece length has; all copied when `fresh` too.
     pub fn chained(
         &mut self,
         (pieces, piece): (usize, f64),
         jumps: &[f64],
-        probes: (&[usize], &[f64]),
+        probes: (&[usize], &[f64], &[f64]),
         fresh: bool,
         acc1: &[f64],
     ) {
@@ -497,6 +502,8 @@ impl Motion {
             self.probe_keys.extend_from_slice(probes.0);
             self.probe_rows.clear();
             self.probe_rows.extend_from_slice(probes.1);
+            self.jerk_rows.clear();
+            self.jerk_rows.extend_from_slice(probes.2);
         }
         let need = pieces.saturating_sub(1) * self.mech;
         let mut chain = self.chain.borrow_mut();
@@ -649,6 +656,19 @@ impl Motion {
         let (x, v) = rows.split_at(half);
         let at = (k - 1) * nw..k * nw;
         Some((dot(x.get(at.clone())?, &self.w0), dot(&v[at], &self.w0)))
+    }
+
+    /// Degree of freedom `i`'s jerk (its velocity's second rate, `(M^2 w)_(n + i)`) at the start of piece
+    /// `k` of a chained step, one row product; `None` without such rows or piece (read it by
+    /// [`Self::second_rate_at`] then).
+    pub fn jerk_probe(&self, i: usize, k: usize) -> Option<f64> {
+        let (nw, n) = (self.w0.len(), self.mech / 2);
+        if k == 0 || k >= self.pieces || self.jerk_rows.is_empty() {
+            return None;
+        }
+        let per = self.jerk_rows.len() / (n * nw);
+        let at = (i * per + k - 1) * nw;
+        (k <= per).then(|| dot(&self.jerk_rows[at..at + nw], &self.w0))
     }
 
     /// The second rate of component `j` of `w` at the start of piece `k`.
@@ -1153,7 +1173,7 @@ pub(super) mod tests {
             .iter()
             .flat_map(|b| b.rows.clone())
             .collect();
-        motion.chained((pieces, piece), &jumps, (&[], &[]), true, &[]);
+        motion.chained((pieces, piece), &jumps, (&[], &[], &[]), true, &[]);
         motion.invalidate();
         let scale = 0.01 + 0.2 * h;
         for tau in [0.3 * piece, 3.7 * piece, 0.55 * h, 0.999 * h] {
@@ -1191,7 +1211,7 @@ pub(super) mod tests {
             super::super::functional_at_pieces(&a, (&m, &one), (4, 2), (piece, pieces), &mut rows);
         }
         assert_eq!(rows.len(), 2 * (pieces - 1) * 4);
-        motion.chained((pieces, piece), &jumps, (&[7], &rows), true, &[]);
+        motion.chained((pieces, piece), &jumps, (&[7], &rows, &[]), true, &[]);
         motion.invalidate();
         for k in (1..pieces).rev() {
             motion.piece_start(k, &mut start);
@@ -1208,5 +1228,31 @@ pub(super) mod tests {
         }
         assert_eq!(motion.probe(7, pieces), None);
         assert_eq!(motion.probe(6, 1), None);
+        // The jerk's rows (the velocity's row of M^2): at every piece's start the jerk of the exact
+        // motion there (w by the exponential, the forcing along its line), as the chain's second rate.
+        let a: Vec<f64> = (0..4)
+            .map(|j| (0..4).map(|c| m[4 + c] * m[c * 4 + j]).sum())
+            .collect();
+        let mut jerks = Vec::new();
+        super::super::functional_at_pieces(&a, (&m, &one), (4, 2), (piece, pieces), &mut jerks);
+        assert_eq!(motion.jerk_probe(0, 1), None);
+        motion.chained((pieces, piece), &jumps, (&[7], &rows, &jerks), true, &[]);
+        motion.invalidate();
+        for k in 1..pieces {
+            let tau = k as f64 * piece;
+            let e = super::super::exponential(&m, 4, 2, tau, r);
+            let mut wk = [0.0, 0.0, w0[2] + tau * w0[3], w0[3]];
+            mat_vec(&e[..8], &w0, &mut wk[..2]);
+            let want: f64 = a.iter().zip(&wk).map(|(x, y)| x * y).sum();
+            let got = motion.jerk_probe(0, k).expect("jerk rows");
+            let size = w * w * w * scale;
+            assert!((got - want).abs() < 1e-12 * size, "{k}: {got} vs {want}");
+            assert!(
+                (got - motion.second_rate_at(k, 1)).abs() < 1e-12 * size,
+                "{k}"
+            );
+        }
+        assert_eq!(motion.jerk_probe(0, pieces), None);
+        assert_eq!(motion.jerk_probe(0, 0), None);
     }
 }
