@@ -256,10 +256,12 @@ impl Peaks {
             if j0 * j1 >= 0.0 || p < 0.99 * self.acceleration[i].value {
                 continue;
             }
+            // The jerks at the pieces' starts by rows where the configuration has them, else along the
+            // chain.
+            let rows = motion.jerk_rows();
             let ((ta, ja), (tb, jb)) = bracket(seg, (j0, j1), |m, k| {
-                m.jerk_probe(i, k)
-                    .unwrap_or_else(|| m.second_rate_at(k, n + i))
-                    + slope
+                let jerk = m.jerk_probe(i, k).filter(|_| rows);
+                jerk.unwrap_or_else(|| m.second_rate_at(k, n + i)) + slope
             });
             let jerk = |t: f64| motion.w_at(t - t0, n + i)[2] + slope;
             if let Some(tm) = brent_root(jerk, ta, tb, ja, jb, tol) {

@@ -28,8 +28,8 @@ use super::forms::AffineRates;
 use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
-    halvings, live_of, mat_vec_on, step_bound, transition, Dense, Motion, OdeSystem, Sparse,
-    Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
+    halvings, live_of, mat_vec_on, step_bound, transition, Dense, JerkRows, Motion, OdeSystem,
+    Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
 };
 use std::sync::Arc;
 
@@ -86,9 +86,9 @@ struct Whole {
     /// starts ([`Motion::probe`]): where the driver reads their event functions inside a step.
     probe_keys: Vec<usize>,
     probe_rows: Vec<f64>,
-    /// The rows of each degree of freedom's jerk at the pieces' starts ([`jerk_rows`]; empty when too
-    /// many): where the peaks recorder brackets an acceleration's turn inside a step.
-    jerk_rows: Vec<f64>,
+    /// The rows of each degree of freedom's jerk at the pieces' starts, built by the motion when the peaks
+    /// recorder first asks for them ([`Motion::jerk_rows`]), and kept with the configuration.
+    jerks: Arc<JerkRows>,
 }
 
 impl Whole {
@@ -277,10 +277,9 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
             functional_at_pieces(&a, (&c.m, &blocks[0].rows), (nw, mech), at, &mut probe_rows);
         }
     }
-    let jerk_rows = jerk_rows(c, &blocks[0].rows, (nw, mech), (h, pieces));
     Whole {
         h,
-        jerk_rows,
+        jerks: Arc::default(),
         nodes: (0..blocks.len()).map(|_| None).collect(),
         quantities: forms.iter().map(|(k, _)| *k).collect(),
         probe_keys,
@@ -296,36 +295,6 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
             })
             .collect(),
     }
-}
-
-/// Most numbers in a whole interval's jerk rows ([`jerk_rows`]): 512 KiB.
-const MAX_JERK_ROWS: usize = 1 << 16;
-
-/// The rows `a_i^T exp(M k p)`, `k = 1 .. pieces - 1`, of each degree of freedom `i`'s jerk `a_i^T w`
-/// (`a_i` the velocity's row of `M^2`, m/s^3 or rad/s^3, relative to the ground as the rates are), for the
-/// pieces of `p = h / pieces` of configuration `c` (`rows`: the first `mech` rows of one piece's
-/// transition): each a dot product with `w` at a step's start. Empty when they would hold more than
-/// [`MAX_JERK_ROWS`] numbers (the chain is walked then).
-fn jerk_rows(
-    c: &Configuration,
-    rows: &[f64],
-    (nw, mech): (usize, usize),
-    (h, pieces): (f64, usize),
-) -> Vec<f64> {
-    let n = mech / 2;
-    let mut out = Vec::new();
-    if n * pieces * nw > MAX_JERK_ROWS {
-        return out;
-    }
-    let m = &c.m;
-    for i in 0..n {
-        let a: Vec<f64> = (0..nw)
-            .map(|j| (0..nw).map(|k| m[(n + i) * nw + k] * m[k * nw + j]).sum())
-            .collect();
-        let at = (h / pieces as f64, pieces);
-        crate::integrate::functional_at_pieces(&a, (m, rows), (nw, mech), at, &mut out);
-    }
-    out
 }
 
 /// The upper triangle, row by row, of the symmetric part of the `nw x nw` matrix `g` (`g_ij + g_ji` off the
@@ -1036,7 +1005,7 @@ impl Exact {
             motion.chained(
                 (1 << i, piece),
                 &w.jumps,
-                (&w.probe_keys, &w.probe_rows, &w.jerk_rows),
+                (&w.probe_keys, &w.probe_rows, Some(&w.jerks)),
                 self.chain_config != Some(motion_config),
                 &self.y[mech..],
             );

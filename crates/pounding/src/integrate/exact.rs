@@ -15,7 +15,7 @@
 //! `h^7 (3!)^4 / (7 (6!)^3) f^(6)`).
 
 use std::cell::{Cell, RefCell};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// Most terms of the Taylor series kept (powers 0 to `TERMS - 1`): enough for `rho = 1/2`.
 pub const TERMS: usize = 20;
@@ -285,6 +285,24 @@ pub trait IntegratedRates: std::fmt::Debug + Send + Sync {
     fn integrated_rates(&self, w: &[f64], out: &mut [f64]);
 }
 
+/// Most numbers in a configuration's jerk rows ([`JerkRows`]): 512 KiB.
+const MAX_JERK_ROWS: usize = 1 << 16;
+/// Fewest pieces of a configuration's whole intervals for its jerk rows to be built ([`JerkRows`]).
+/// Measured (instructions per run): from 32 pieces (buildings on soil, the floor-to-column example) they
+/// save 2 to 6 %; with 4 to 8 (the 3-vs-8-storey pair) they cost 0.2 % more than they save.
+const JERK_PIECES: usize = 16;
+
+/// The rows `a_i^T exp(M k p)`, `k = 1 .. pieces - 1`, of each degree of freedom `i`'s jerk `a_i^T w` (`a_i`
+/// the velocity's row of `M^2`, m/s^3 or rad/s^3, relative to the ground as the rates are) at the starts of
+/// the pieces `p` of a configuration's whole intervals, one after the other (`nw` each): the jerk there is
+/// one dot product with `w` at a step's start, where the chain of pieces would be walked. Built by the
+/// motion when first asked ([`Motion::jerk_rows`]) and shared by the configuration's steps; empty when they
+/// would hold more than [`MAX_JERK_ROWS`] numbers.
+#[derive(Debug, Default)]
+pub struct JerkRows {
+    rows: OnceLock<Vec<f64>>,
+}
+
 /// A step's Gauss nodes as the stepper left them unread: the transition rows to the step's end and its
 /// three nodes (the first `mech` rows of each, [`transition`]), and the rates of the integrated quantities.
 #[derive(Clone, Debug)]
@@ -361,9 +379,8 @@ pub struct Motion {
     /// then the second's, `nw` each.
     probe_keys: Vec<usize>,
     probe_rows: Vec<f64>,
-    /// Each degree of freedom's jerk rows at the pieces' starts, one after the other (`nw` each; empty:
-    /// none): see [`Self::jerk_probe`].
-    jerk_rows: Vec<f64>,
+    /// The jerk rows of the motion's configuration ([`Self::jerk_probe`]).
+    jerks: Option<Arc<JerkRows>>,
     /// Transition rows over `1, 2, 4, ...` pieces (`mech x nw` each): the chain's links (one piece), and a
     /// piece's start far along the chain in a few products ([`Self::ensure_chain`]).
     jump_rows: Vec<f64>,
@@ -407,7 +424,7 @@ impl Motion {
             live: (0..nw).collect(),
             probe_keys: Vec::new(),
             probe_rows: Vec::new(),
-            jerk_rows: Vec::new(),
+            jerks: None,
             jump_rows: Vec::new(),
             jumped: RefCell::new(vec![0.0; mech]),
             w_at_offset: RefCell::new(vec![0.0; nw]),
@@ -481,14 +498,14 @@ impl Motion {
     /// first `mech` rows of its transition; copied only when `fresh`, the matrix having changed), and the
     /// integrated quantities at its end `acc1` (the quartics through the rates are bent to meet them).
     /// `jumps` are the rows over `1, 2, 4, ...` pieces one after the other (`rows` first), and `probes` keys
-    /// (elements) and the rows of their two functionals at the pieces' starts ([`Self::probe`]), then the
-    /// rows of each degree of freedom's jerk there ([`Self::jerk_probe`]), for as many pieces as any step of
-    /// this matrix and piece length has; all copied when `fresh` too.
+    /// (elements) and the rows of their two functionals at the pieces' starts ([`Self::probe`]), for as many
+    /// pieces as any step of this matrix and piece length has, both copied when `fresh` too; and the
+    /// configuration's jerk rows, shared ([`Self::jerk_probe`]).
     pub fn chained(
         &mut self,
         (pieces, piece): (usize, f64),
         jumps: &[f64],
-        probes: (&[usize], &[f64], &[f64]),
+        probes: (&[usize], &[f64], Option<&Arc<JerkRows>>),
         fresh: bool,
         acc1: &[f64],
     ) {
@@ -502,8 +519,7 @@ impl Motion {
             self.probe_keys.extend_from_slice(probes.0);
             self.probe_rows.clear();
             self.probe_rows.extend_from_slice(probes.1);
-            self.jerk_rows.clear();
-            self.jerk_rows.extend_from_slice(probes.2);
+            self.jerks = probes.2.cloned();
         }
         let need = pieces.saturating_sub(1) * self.mech;
         let mut chain = self.chain.borrow_mut();
@@ -658,17 +674,51 @@ impl Motion {
         Some((dot(x.get(at.clone())?, &self.w0), dot(&v[at], &self.w0)))
     }
 
+    /// Whether [`Self::jerk_probe`] can read the configuration's jerk rows on this chained step: built at
+    /// the first asking, once, for a configuration whose whole intervals have [`JERK_PIECES`] pieces or more
+    /// (with fewer, a search walks a short chain and may not repay them).
+    pub fn jerk_rows(&self) -> bool {
+        let Some(jerks) = self.jerks.as_ref().filter(|_| self.pieces > 1) else {
+            return false;
+        };
+        let (nw, mech) = (self.w0.len(), self.mech);
+        let n = mech / 2;
+        let levels = self.jump_rows.len() / (mech * nw);
+        let whole = 1usize << levels.saturating_sub(1);
+        if whole < JERK_PIECES {
+            return false;
+        }
+        let rows = jerks.rows.get_or_init(|| {
+            let mut out = Vec::new();
+            if n * whole * nw > MAX_JERK_ROWS {
+                return out;
+            }
+            let m = &self.m;
+            let one = &self.jump_rows[..mech * nw];
+            for i in 0..n {
+                let a: Vec<f64> = (0..nw)
+                    .map(|j| (0..nw).map(|k| m[(n + i) * nw + k] * m[k * nw + j]).sum())
+                    .collect();
+                let at = (self.piece, whole);
+                super::functional_at_pieces(&a, (m, one), (nw, mech), at, &mut out);
+            }
+            out
+        });
+        !rows.is_empty()
+    }
+
     /// Degree of freedom `i`'s jerk (its velocity's second rate, `(M^2 w)_(n + i)`) at the start of piece
-    /// `k` of a chained step, one row product; `None` without such rows or piece (read it by
+    /// `k` of a chained step, one row product; `None` without the rows or the piece (read it by
     /// [`Self::second_rate_at`] then).
     pub fn jerk_probe(&self, i: usize, k: usize) -> Option<f64> {
         let (nw, n) = (self.w0.len(), self.mech / 2);
-        if k == 0 || k >= self.pieces || self.jerk_rows.is_empty() {
+        if k == 0 || k >= self.pieces {
             return None;
         }
-        let per = self.jerk_rows.len() / (n * nw);
+        let rows = self.jerks.as_ref()?.rows.get()?;
+        let per = rows.len() / (n * nw);
         let at = (i * per + k - 1) * nw;
-        (k <= per).then(|| dot(&self.jerk_rows[at..at + nw], &self.w0))
+        (k <= per).then(|| dot(&rows[at..at + nw], &self.w0))
     }
 
     /// The second rate of component `j` of `w` at the start of piece `k`.
@@ -1173,7 +1223,7 @@ pub(super) mod tests {
             .iter()
             .flat_map(|b| b.rows.clone())
             .collect();
-        motion.chained((pieces, piece), &jumps, (&[], &[], &[]), true, &[]);
+        motion.chained((pieces, piece), &jumps, (&[], &[], None), true, &[]);
         motion.invalidate();
         let scale = 0.01 + 0.2 * h;
         for tau in [0.3 * piece, 3.7 * piece, 0.55 * h, 0.999 * h] {
@@ -1211,7 +1261,7 @@ pub(super) mod tests {
             super::super::functional_at_pieces(&a, (&m, &one), (4, 2), (piece, pieces), &mut rows);
         }
         assert_eq!(rows.len(), 2 * (pieces - 1) * 4);
-        motion.chained((pieces, piece), &jumps, (&[7], &rows, &[]), true, &[]);
+        motion.chained((pieces, piece), &jumps, (&[7], &rows, None), true, &[]);
         motion.invalidate();
         for k in (1..pieces).rev() {
             motion.piece_start(k, &mut start);
@@ -1233,11 +1283,19 @@ pub(super) mod tests {
         let a: Vec<f64> = (0..4)
             .map(|j| (0..4).map(|c| m[4 + c] * m[c * 4 + j]).sum())
             .collect();
-        let mut jerks = Vec::new();
-        super::super::functional_at_pieces(&a, (&m, &one), (4, 2), (piece, pieces), &mut jerks);
-        assert_eq!(motion.jerk_probe(0, 1), None);
-        motion.chained((pieces, piece), &jumps, (&[7], &rows, &jerks), true, &[]);
+        assert!(!motion.jerk_rows());
+        let jerks = Arc::new(JerkRows::default());
+        motion.chained(
+            (pieces, piece),
+            &jumps,
+            (&[7], &rows, Some(&jerks)),
+            true,
+            &[],
+        );
         motion.invalidate();
+        // Not built until asked for; then kept.
+        assert_eq!(motion.jerk_probe(0, 1), None);
+        assert!(motion.jerk_rows() && motion.jerk_rows());
         for k in 1..pieces {
             let tau = k as f64 * piece;
             let e = super::super::exponential(&m, 4, 2, tau, r);
