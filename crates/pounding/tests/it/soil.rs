@@ -104,23 +104,13 @@ fn a_storey_on_soil_is_its_three_equations() {
             let f = resp.foundation.as_ref().unwrap();
             assert!(f.peak_sway > 0.0 && f.peak_rocking > 0.0);
             if vs == 100.0 {
-                // Its foundation's fast modes would split each interval into many series-length steps; past
-                // the first 8 intervals (met before the interval's matrices are built) each of the 200 is
-                // one step (`engine/exact.rs`, `Whole`), its peaks located inside on the chain of pieces,
-                // and still within 1e-7 of the reference at 1e-10.
-                let first = s
-                    .clone()
-                    .with_duration(0.16)
-                    .unwrap()
-                    .run()
-                    .unwrap()
-                    .statistics
-                    .steps;
-                // (The first 0.16 s run alone, stepped from rest, bounds what those 8 intervals took.)
-                assert!(
-                    r.statistics.steps <= first + 192,
-                    "V_s {vs}, tol {tol}: {} steps, {first} in the first 0.16 s alone",
-                    r.statistics.steps
+                // Its foundation's fast modes would split each interval into many series-length steps; each
+                // of the 200 is one step (`engine/exact.rs`, `Whole`: the configuration the run starts in is
+                // built at its first interval), its peaks located inside on the chain of pieces, and still
+                // within 1e-7 of the reference at 1e-10.
+                assert_eq!(
+                    r.statistics.steps, 200,
+                    "V_s {vs}, tol {tol}: one step per record interval"
                 );
             }
             assert!(
