@@ -460,6 +460,10 @@ impl ElementLaw for Contact {
         }
     }
 
+    fn events_read_states(&self) -> bool {
+        false
+    }
+
     #[inline]
     fn event_value(&self, ev: Event, x: f64, v: f64, _s: &[f64]) -> f64 {
         let d = x - self.gap;
@@ -578,6 +582,36 @@ mod tests {
         );
         c.gate.set_resolution(1e-6);
         c
+    }
+
+    #[test]
+    fn a_contact_s_event_functions_do_not_read_its_states() {
+        // The driver reads a law's states along a step while locating an event only if the law says its
+        // event functions read them (`events_read_states`): a contact's never do, open or engaged.
+        let mut c = contact(Model::KelvinVoigt, 2e9);
+        assert!(!c.events_read_states());
+        // Open, then approaching after a touch, then rebounding after the turn.
+        for (ev, x, v) in [(TOUCH, 0.0, 1.0), (TURN, 1e-3, 0.0), (TOUCH, 0.0, 0.0)] {
+            for w in c.watched() {
+                for (x, v) in [(-1e-3, 0.5), (1e-3, -0.2), (0.0, 0.0), (2e-3, 1.5)] {
+                    let (a, b) = (
+                        c.event_value(w.event, x, v, &[0.0, 0.0]),
+                        c.event_value(w.event, x, v, &[7.0, -3.0]),
+                    );
+                    assert_eq!(a, b, "{:?} at {x}, {v}", w.event);
+                }
+            }
+            if c.watched().iter().any(|w| w.event == ev) {
+                c.apply(ev, x, v, &[0.0, 0.0], 1e-4).unwrap();
+            }
+        }
+        assert!(matches!(
+            c.state,
+            Engagement::Contact {
+                phase: Phase::Restitution,
+                ..
+            }
+        ));
     }
 
     #[test]

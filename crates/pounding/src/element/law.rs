@@ -223,6 +223,13 @@ pub trait ElementLaw {
         1.0
     }
 
+    /// Whether [`Self::event_value`] reads the states `s`: the driver reads them along a step while it
+    /// locates an event only if so (on an exact step each reading integrates them to that time). A law
+    /// whose event functions ignore them says `false`.
+    fn events_read_states(&self) -> bool {
+        true
+    }
+
     /// Applies `ev`, located at deformation `x`, rate `v` and states `s`; `h` is the step the integrator
     /// would take next (s).
     fn apply(

@@ -95,6 +95,9 @@ macro_rules! registry {
             fn event_value(&self, ev: Event, x: f64, v: f64, s: &[f64]) -> f64 {
                 dispatch!(self, l => l.event_value(ev, x, v, s))
             }
+            fn events_read_states(&self) -> bool {
+                dispatch!(self, l => l.events_read_states())
+            }
             fn apply(
                 &mut self,
                 ev: Event,

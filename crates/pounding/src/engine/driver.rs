@@ -2,7 +2,7 @@
 
 use super::propagator::{Propagation, Propagator};
 use super::{EventInfo, Ground, Observer, Segment, System};
-use crate::element::Event;
+use crate::element::{ElementLaw, Event};
 use crate::ground_motion::Record;
 use crate::integrate::{brent_root, golden_max, Dense, OdeSystem, Tolerance};
 use crate::Error;
@@ -82,9 +82,11 @@ fn earliest_event(
             }
             let gb = el.event_value(ev, xb, vb, &y1[block.clone()]);
             let s = &mut states[..block.len()];
+            // The states along the step only for a law whose event functions read them.
+            let reads = el.law.events_read_states();
             let mut g = |t: f64| {
                 let (x, v) = sys.deformation_at(e, dense, t);
-                for (k, z) in block.clone().zip(s.iter_mut()) {
+                for (k, z) in block.clone().zip(s.iter_mut()).filter(|_| reads) {
                     *z = dense.component(t, k);
                 }
                 el.event_value(ev, x, v, s)

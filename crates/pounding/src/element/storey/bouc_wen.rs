@@ -104,6 +104,10 @@ impl ElementLaw for BoucWen {
         WATCHED
     }
 
+    fn events_read_states(&self) -> bool {
+        false
+    }
+
     #[inline]
     fn event_value(&self, _ev: Event, _x: f64, v: f64, _s: &[f64]) -> f64 {
         self.sign * v + self.gate.slack()
