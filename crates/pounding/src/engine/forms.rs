@@ -6,6 +6,7 @@
 use super::linear::deformation_terms;
 use super::System;
 use crate::element::ElementLaw;
+use crate::integrate::Sparse;
 
 /// Adds `value w_a w_b` to the form `q` (`nw x nw`, row-major, kept symmetric).
 fn add(q: &mut [f64], nw: usize, a: usize, b: usize, value: f64) {
@@ -102,8 +103,8 @@ type Entries = Vec<(usize, usize, f64)>;
 pub(crate) struct AffineRates {
     /// Degrees of freedom.
     n: usize,
-    /// The nonzero entries `(i, j, M[n + i][j])` of the velocities' rows.
-    rows: Entries,
+    /// The nonzeros of `M`, row by row: the velocities' rows are read (each summed in a register).
+    rows: Sparse,
     /// For each integrated quantity with a form (layout component `2 n + k`): `k` and the form's entries
     /// `(a, b, c)` for `c w_a w_b`, each pair once (`a <= b`).
     forms: Vec<(usize, Entries)>,
@@ -113,10 +114,7 @@ impl AffineRates {
     /// The rates of the configuration of matrix `m` (`nw x nw`, row-major) with `n` degrees of freedom and
     /// the integrated quantities' `forms`.
     pub(crate) fn new(m: &[f64], nw: usize, n: usize, forms: &[(usize, Vec<f64>)]) -> Self {
-        let rows = (0..n)
-            .flat_map(|i| (0..nw).map(move |j| (i, j, m[(n + i) * nw + j])))
-            .filter(|&(_, _, v)| v != 0.0)
-            .collect();
+        let rows = Sparse::of(m, nw);
         let forms = forms
             .iter()
             .map(|(k, q)| {
@@ -151,9 +149,13 @@ impl AffineRates {
     pub(crate) fn write(&self, w: &[f64], out: &mut [f64]) {
         let n = self.n;
         out[..n].copy_from_slice(&w[n..2 * n]);
-        out[n..2 * n].fill(0.0);
-        for &(i, j, v) in &self.rows {
-            out[n + i] += v * w[j];
+        for (i, o) in out[n..2 * n].iter_mut().enumerate() {
+            // From 0 in the row's order, as the entries were once added to it.
+            *o = self
+                .rows
+                .row(n + i)
+                .iter()
+                .fold(0.0, |a, &(j, v)| a + v * w[j]);
         }
         self.write_integrated(w, &mut out[2 * n..]);
     }
