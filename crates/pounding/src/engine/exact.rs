@@ -316,12 +316,13 @@ fn pack_symmetric(g: &[f64], nw: usize) -> Vec<f64> {
 
 /// The products `w_i w_j`, `i <= j`, in the order of [`pack_symmetric`].
 fn pair_products(w: &[f64], out: &mut [f64]) {
-    let mut p = 0;
+    let mut rest = out;
     for (i, &wi) in w.iter().enumerate() {
-        for &wj in &w[i..] {
-            out[p] = wi * wj;
-            p += 1;
+        let (row, tail) = rest.split_at_mut(w.len() - i);
+        for (o, &wj) in row.iter_mut().zip(&w[i..]) {
+            *o = wi * wj;
         }
+        rest = tail;
     }
 }
 
@@ -928,9 +929,7 @@ impl Exact {
                     GAUSS_NODES[2] * h,
                 ];
                 for (tau, out) in at.into_iter().zip(self.wn.iter_mut()) {
-                    for (i, o) in out[..mech].iter_mut().enumerate() {
-                        *o = crate::integrate::series_at(&self.series, nw, i, tau, terms);
-                    }
+                    crate::integrate::series_into(&self.series, nw, tau, terms, &mut out[..mech]);
                 }
             }
         }

@@ -212,6 +212,18 @@ pub fn series_at(c: &[f64], nw: usize, i: usize, tau: f64, terms: usize) -> f64 
         .fold(0.0, |acc, k| acc * tau + c[k * nw + i])
 }
 
+/// Components `0 .. out.len()` at `tau` of the series `c` (its first `terms` rows of `nw`), by Horner's rule
+/// on whole rows: each component's arithmetic is [`series_at`]'s.
+#[inline]
+pub fn series_into(c: &[f64], nw: usize, tau: f64, terms: usize, out: &mut [f64]) {
+    out.fill(0.0);
+    for row in c[..terms * nw].chunks_exact(nw).rev() {
+        for (o, &x) in out.iter_mut().zip(row) {
+            *o = *o * tau + x;
+        }
+    }
+}
+
 /// A square row-major matrix by its nonzero entries, row by row (column, value), and where each row ends:
 /// a product in `nnz` multiply-adds instead of `n^2` (`M` of a configuration: a displacement's row holds one
 /// 1, a storey's a few stiffnesses).
@@ -603,11 +615,7 @@ impl Motion {
                     asked.push((tau, 1));
                 }
             }
-            self.with_piece(tau, |c, d| {
-                for (i, o) in out.iter_mut().enumerate() {
-                    *o = series_at(c, nw, i, d, self.terms);
-                }
-            });
+            self.with_piece(tau, |c, d| series_into(c, nw, d, self.terms, out));
         }
     }
 
@@ -841,11 +849,7 @@ impl Motion {
     /// The motion `w[..out.len()]` at `tau` on the series of its piece (no slot, no end taken as left).
     pub fn on_series(&self, tau: f64, out: &mut [f64]) {
         let nw = self.w0.len();
-        self.with_piece(tau, |c, d| {
-            for (i, o) in out.iter_mut().enumerate() {
-                *o = series_at(c, nw, i, d, self.terms);
-            }
-        });
+        self.with_piece(tau, |c, d| series_into(c, nw, d, self.terms, out));
     }
 
     /// Length of a piece of the step, s (meaningful when [`Self::pieces`] is above 1).
@@ -1054,6 +1058,12 @@ pub(super) mod tests {
             let (u, v) = exact(f * h);
             assert!((series_at(&c, 4, 0, f * h, TERMS) - u).abs() < 1e-16);
             assert!((series_at(&c, 4, 1, f * h, TERMS) - v).abs() < 3e-15);
+            // All components at once on whole rows: each one's arithmetic, bit for bit.
+            let mut all = [f64::NAN; 3];
+            series_into(&c, 4, f * h, TERMS - 1, &mut all);
+            for (i, x) in all.into_iter().enumerate() {
+                assert_eq!(x, series_at(&c, 4, i, f * h, TERMS - 1), "{i}");
+            }
         }
     }
 

@@ -18,9 +18,9 @@ mod rosenbrock;
 mod switching;
 
 pub use exact::{
-    dot, live_of, mat_vec, mat_vec_on, series, series_at, step_bound, terms_for, transition,
-    IntegratedRates, JerkRows, Motion, Sparse, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO,
-    OFFSETS, TERMS,
+    dot, live_of, mat_vec, mat_vec_on, series, series_at, series_into, step_bound, terms_for,
+    transition, IntegratedRates, JerkRows, Motion, Sparse, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS,
+    MAX_RHO, OFFSETS, TERMS,
 };
 pub use interval::{
     exponential, form_blocks, functional_at_pieces, halvings, mat_mul, times_transition,
