@@ -297,6 +297,15 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
     }
 }
 
+/// [`crate::integrate::terms_for`] `rho`, through `last` (the last `rho` and its count): most steps repeat
+/// the one before's length.
+fn terms(last: &mut (f64, usize), rho: f64) -> usize {
+    if last.0 != rho {
+        *last = (rho, crate::integrate::terms_for(rho));
+    }
+    last.1
+}
+
 /// The upper triangle, row by row, of the symmetric part of the `nw x nw` matrix `g` (`g_ij + g_ji` off the
 /// diagonal): `w^T g w` is then its dot product with the products `w_i w_j`, `i <= j`, in the same order
 /// ([`pair_products`]), half the multiply-adds, and in partial sums ([`crate::integrate::dot`]).
@@ -447,6 +456,8 @@ pub struct Exact {
     /// The current configuration is slow, met after the start and without transitions yet: left to the
     /// stepper, its visit counted at each whole interval ([`Self::resume`]).
     waiting: bool,
+    /// The last `r h` whose series terms were counted, and the count ([`terms`]).
+    terms: (f64, usize),
 }
 
 impl Exact {
@@ -511,6 +522,7 @@ impl Exact {
             before: (vec![0.0; dim], vec![0.0; dim]),
             built: None,
             waiting: false,
+            terms: (f64::NAN, 0),
         })
     }
 
@@ -915,7 +927,7 @@ impl Exact {
                 }
             }
             None => {
-                let terms = crate::integrate::terms_for(c.r * h);
+                let terms = terms(&mut self.terms, c.r * h);
                 if c.sparse.rows() == nw {
                     c.sparse.series(&self.w, terms, &mut self.series);
                 } else {
@@ -974,7 +986,7 @@ impl Exact {
         motion.rates[0].copy_from_slice(&self.dydt);
         let whole = block.and_then(|i| Some((i, config.whole.as_ref()?)));
         let piece = whole.map_or(h, |(_, w)| w.piece());
-        motion.terms = crate::integrate::terms_for(config.r * piece);
+        motion.terms = terms(&mut self.terms, config.r * piece);
         motion.invalidate();
         if std::mem::take(&mut self.series_built) && block.is_none() {
             motion.adopt_series(&self.series);

@@ -493,15 +493,16 @@ impl Motion {
         let (nw, mech) = (self.w0.len(), self.mech);
         let n = mech / 2;
         let m = &self.m;
+        // Each channel's slope, the second of its pair.
+        let slopes = self.w0[mech..mech + fd].chunks_exact(2);
         for (end, rates) in [0, 4].into_iter().enumerate() {
-            for i in 0..n {
+            let rates = &self.rates[rates][..mech];
+            for (i, jerk) in self.jerk[end][..n].iter_mut().enumerate() {
                 let row = &m[(n + i) * nw..(n + i + 1) * nw];
-                let mut j: f64 = (0..mech).map(|l| row[l] * self.rates[rates][l]).sum();
-                j += (0..fd)
-                    .step_by(2)
-                    .map(|c| row[mech + c] * self.w0[mech + c + 1])
-                    .sum::<f64>();
-                self.jerk[end][i] = j;
+                let mut j: f64 = row[..mech].iter().zip(rates).map(|(a, b)| a * b).sum();
+                let forcing = row[mech..mech + fd].chunks_exact(2).zip(slopes.clone());
+                j += forcing.map(|(a, s)| a[0] * s[1]).sum::<f64>();
+                *jerk = j;
             }
         }
     }
