@@ -75,11 +75,11 @@ impl ElementLaw for Restrainer {
         }
     }
 
-    /// Slack minus opening while slack; opening minus slack while taut (m).
     fn events_read_states(&self) -> bool {
         false
     }
 
+    /// Slack minus opening while slack; opening minus slack while taut (m).
     #[inline]
     fn event_value(&self, ev: Event, x: f64, _v: f64, _s: &[f64]) -> f64 {
         match ev {
