@@ -251,7 +251,8 @@ impl Record {
             return self.acc[0] * t / self.t0;
         }
         let x = (t - self.t0) / self.dt;
-        let k = (x.floor() as usize).min(self.acc.len() - 1);
+        // x >= 0 here: truncation is its floor (without a call to libm's).
+        let k = (x as usize).min(self.acc.len() - 1);
         if k + 1 >= self.acc.len() {
             return self.acc[k];
         }

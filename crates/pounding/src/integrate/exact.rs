@@ -645,6 +645,7 @@ impl Motion {
         let mut w = self.w_at_offset.borrow_mut();
         w[..2 * n].copy_from_slice(&motion[..2 * n]);
         self.forcing_at(tau, &self.forcing_rates(), &mut w);
+        let w: &[f64] = &w;
         if self.sparse.rows() == nw {
             for (i, o) in out.iter_mut().enumerate() {
                 *o = self.sparse.row(n + i).iter().map(|&(j, a)| a * w[j]).sum();
