@@ -84,8 +84,18 @@ fn earliest_event(
             let s = &mut states[..block.len()];
             // The states along the step only for a law whose event functions read them.
             let reads = el.law.events_read_states();
+            // On an exact step of one piece, the deformation and its rate as two polynomials, read off
+            // the step's series at the first evaluation, not from the motion's components at each.
+            let single = dense.motion().is_some_and(|m| m.pieces() == 1);
+            let mut series = None;
             let mut g = |t: f64| {
-                let (x, v) = sys.deformation_at(e, dense, t);
+                let (x, v) = if single {
+                    let (x, v) =
+                        series.get_or_insert_with(|| sys.deformation_interpolants(e, dense));
+                    (x.eval(t), v.eval(t))
+                } else {
+                    sys.deformation_at(e, dense, t)
+                };
                 for (k, z) in block.clone().zip(s.iter_mut()).filter(|_| reads) {
                     *z = dense.component(t, k);
                 }
