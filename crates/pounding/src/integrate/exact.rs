@@ -651,7 +651,7 @@ impl Motion {
                 *o = self.sparse.row(n + i).iter().map(|&(j, a)| a * w[j]).sum();
             }
         } else {
-            mat_vec(&self.m[n * nw..(n + out.len()) * nw], &w, out);
+            mat_vec(&self.m[n * nw..(n + out.len()) * nw], w, out);
         }
     }
 
