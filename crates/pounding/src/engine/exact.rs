@@ -215,10 +215,11 @@ fn exact_parts(
     (nw, mech): (usize, usize),
 ) -> (Option<RateForms>, Option<Arc<AffineRates>>, Sparse) {
     let forms = sys.rate_forms();
+    let sparse = Sparse::of(m, nw);
     let rates = forms
         .as_deref()
-        .map(|f| Arc::new(AffineRates::new(m, nw, mech / 2, f)));
-    (forms, rates, Sparse::of(m, nw))
+        .map(|f| Arc::new(AffineRates::new(sparse.clone(), nw, mech / 2, f)));
+    (forms, rates, sparse)
 }
 
 /// The integrals over a step of length `h` (within the series' reach) of configuration `c`'s forms,

@@ -111,10 +111,9 @@ pub(crate) struct AffineRates {
 }
 
 impl AffineRates {
-    /// The rates of the configuration of matrix `m` (`nw x nw`, row-major) with `n` degrees of freedom and
-    /// the integrated quantities' `forms`.
-    pub(crate) fn new(m: &[f64], nw: usize, n: usize, forms: &[(usize, Vec<f64>)]) -> Self {
-        let rows = Sparse::of(m, nw);
+    /// The rates of the configuration of matrix `M` (its nonzeros `rows`, [`Sparse::of`]; `nw x nw`) with `n`
+    /// degrees of freedom and the integrated quantities' `forms`.
+    pub(crate) fn new(rows: Sparse, nw: usize, n: usize, forms: &[(usize, Vec<f64>)]) -> Self {
         let forms = forms
             .iter()
             .map(|(k, q)| {
