@@ -216,11 +216,26 @@ pub fn series_at(c: &[f64], nw: usize, i: usize, tau: f64, terms: usize) -> f64 
 /// on whole rows: each component's arithmetic is [`series_at`]'s.
 #[inline]
 pub fn series_into(c: &[f64], nw: usize, tau: f64, terms: usize, out: &mut [f64]) {
-    out.fill(0.0);
-    for row in c[..terms * nw].chunks_exact(nw).rev() {
-        for (o, &x) in out.iter_mut().zip(row) {
-            *o = *o * tau + x;
+    let rows = &c[..terms * nw];
+    // Four components at a time, each summed in a register over the rows (a motion has a few).
+    let mut at = 0;
+    let mut blocks = out.chunks_exact_mut(4);
+    for block in &mut blocks {
+        let mut acc = [0.0; 4];
+        for row in rows.chunks_exact(nw).rev() {
+            let x = &row[at..at + 4];
+            for q in 0..4 {
+                acc[q] = acc[q] * tau + x[q];
+            }
         }
+        block.copy_from_slice(&acc);
+        at += 4;
+    }
+    for (k, o) in blocks.into_remainder().iter_mut().enumerate() {
+        *o = rows
+            .chunks_exact(nw)
+            .rev()
+            .fold(0.0, |acc, row| acc * tau + row[at + k]);
     }
 }
 
