@@ -283,7 +283,7 @@ impl Observer for Impacts {
             // the exact motion.
             let near = p.extremum_near((*hi, *lo), 0.99);
             let x = |y: &[f64], off: usize| el.a.value(y, off) - el.b.value(y, off);
-            match near.then(|| exact_extremum(seg, &mut self.motion, (va, vb), &x)) {
+            match near.then(|| exact_extremum(seg, &mut self.motion, &p, &x)) {
                 Some(Some((_, x))) => {
                     *hi = hi.max(x);
                     *lo = lo.max(-x);

@@ -42,7 +42,8 @@ pub(super) fn step_peak(
     if p < 0.99 * best {
         return (seg.t0 + s * h, p);
     }
-    match exact_extremum(seg, motion, (va, vb), &value) {
+    let curve = Hermite::new(qa, qb, va, vb, h);
+    match exact_extremum(seg, motion, &curve, &value) {
         Some((tm, q)) if q.abs() > qb.abs() => (tm, q.abs()),
         Some(_) => (seg.t1, qb.abs()),
         None => (seg.t0 + s * h, p),
@@ -60,18 +61,40 @@ pub(super) fn ends_on(
     (value(y0, 0), value(y1, 0), value(y0, n), value(y1, n))
 }
 
-/// The first piece of a whole interval taken at once over which a rate (`va`, `vb` at the step's ends,
+/// A piece of a whole interval taken at once over which a rate (`va`, `vb` at the step's ends,
 /// `rate(motion, k)` at the start of piece `k`) changes sign, with its rates at its ends: the step itself
-/// for a step of one piece. A search then builds the series of one piece only.
+/// for a step of one piece. The piece where the root of the slope of `guess` (a cubic Hermite on the
+/// segment whose slope is that rate) lies first, two readings; else the first such piece along the chain. A search then builds the series of one
+/// piece only.
 fn bracket(
     seg: &Segment<'_, '_>,
     (va, vb): (f64, f64),
+    guess: &Hermite,
     mut rate: impl FnMut(&crate::integrate::Motion, usize) -> f64,
 ) -> ((f64, f64), (f64, f64)) {
     let mut a = (seg.t0, va);
     if let Some(m) = seg.dense.motion().filter(|m| m.pieces() > 1) {
-        for k in 1..m.pieces() {
-            let b = (seg.t0 + k as f64 * m.piece(), rate(m, k));
+        let (n, p) = (m.pieces(), m.piece());
+        if let Some(g) = guess
+            .root_of_slope()
+            .map(|s| seg.t0 + s * (seg.t1 - seg.t0))
+        {
+            // The cubic is within a per cent of the motion on an exact step: its root is most often in
+            // the same piece, found in two readings instead of a walk from the start.
+            let k = (((g - seg.t0) / p).floor().max(0.0) as usize).min(n - 1);
+            let at =
+                |k: usize, rate: &mut dyn FnMut(&crate::integrate::Motion, usize) -> f64| match k {
+                    0 => (seg.t0, va),
+                    k if k >= n => (seg.t1, vb),
+                    k => (seg.t0 + k as f64 * p, rate(m, k)),
+                };
+            let (l, r) = (at(k, &mut rate), at(k + 1, &mut rate));
+            if l.1 * r.1 <= 0.0 {
+                return (l, r);
+            }
+        }
+        for k in 1..n {
+            let b = (seg.t0 + k as f64 * p, rate(m, k));
             if a.1 * b.1 <= 0.0 {
                 return (a, b);
             }
@@ -81,20 +104,21 @@ fn bracket(
     (a, (seg.t1, vb))
 }
 
-/// On a step propagated exactly, the interior extremum of `q = value(y, 0)` (rate `value(y, n)`, `va` and
-/// `vb` at the step's ends): the root of its rate on the exact motion (Brent's method) and `q` there; `None`
-/// on a stepped step or when the rate keeps its sign.
+/// On a step propagated exactly, the interior extremum of `q = value(y, 0)` (rate `value(y, n)`), `curve`
+/// its cubic Hermite on the segment (its rates `va`, `vb` at the ends): the root of its rate on the exact
+/// motion (Brent's method) and `q` there; `None` on a stepped step or when the rate keeps its sign.
 pub(super) fn exact_extremum(
     seg: &Segment<'_, '_>,
     motion: &mut [f64],
-    (va, vb): (f64, f64),
+    curve: &Hermite,
     value: &impl Fn(&[f64], usize) -> f64,
 ) -> Option<(f64, f64)> {
+    let (va, vb) = curve.end_slopes();
     if seg.dense.motion().is_none() || va * vb >= 0.0 {
         return None;
     }
     let n = motion.len() / 2;
-    let ((ta, ra), (tb, rb)) = bracket(seg, (va, vb), |m, k| {
+    let ((ta, ra), (tb, rb)) = bracket(seg, (va, vb), curve, |m, k| {
         m.piece_start(k, motion);
         value(motion, n)
     });
@@ -110,6 +134,36 @@ pub(super) fn exact_extremum(
     let tol = 4.0 * f64::EPSILON * seg.t1.abs();
     let tm = brent_root(|t| at(&r, t), ta, tb, ra, rb, tol)?;
     Some((tm, at(&q, tm)))
+}
+
+/// On a step propagated exactly, where floor `i`'s absolute acceleration (`a0`, `a1` at the segment's ends,
+/// its jerks `j0`, `j1` of opposite signs) turns: the root of the jerk on the exact motion (Brent's method),
+/// s, and the acceleration there, m/s^2; `ground` is the ground's acceleration at an offset into the step
+/// and its slope (m/s^2, m/s^3). Apart from the screens that call it: most steps never do.
+#[cold]
+fn jerk_root(
+    seg: &Segment<'_, '_>,
+    i: usize,
+    (a0, a1, j0, j1): (f64, f64, f64, f64),
+    (ground, slope): (impl Fn(f64) -> f64, f64),
+) -> Option<(f64, f64)> {
+    let motion = seg.dense.motion()?;
+    let n = seg.system.layout().dofs();
+    let (t0, t1) = (seg.t0, seg.t1);
+    let tol = 4.0 * f64::EPSILON * t1.abs();
+    // The jerks at the pieces' starts along the chain around the cubic's guess, then, for a walk, by rows
+    // where the configuration has them (built at the first walk).
+    let curve = Hermite::new(a0, a1, j0, j1, t1 - t0);
+    let mut readings = 0;
+    let ((ta, ja), (tb, jb)) = bracket(seg, (j0, j1), &curve, |m, k| {
+        readings += 1;
+        let rows = readings > 2 && m.jerk_rows();
+        let jerk = rows.then(|| m.jerk_probe(i, k)).flatten();
+        jerk.unwrap_or_else(|| m.second_rate_at(k, n + i)) + slope
+    });
+    let jerk = |t: f64| motion.w_at(t - t0, n + i)[2] + slope;
+    let tm = brent_root(jerk, ta, tb, ja, jb, tol)?;
+    Some((tm, motion.w_at(tm - t0, n + i)[1] + ground(tm - t0)))
 }
 
 /// Room for the states of the element with the most.
@@ -223,7 +277,6 @@ impl Peaks {
         // what the step holds past it (the motion as if no event) is not offered.
         let step = seg.dense.t1() - t0;
         let cut = h < step - 4.0 * f64::EPSILON * t1.abs();
-        let tol = 4.0 * f64::EPSILON * t1.abs();
         for i in 0..n {
             let line = sys.ground_in(i, &motion.w0, 2 * n);
             let ground = |tau: f64| line.at(tau);
@@ -256,16 +309,7 @@ impl Peaks {
             if j0 * j1 >= 0.0 || p < 0.99 * self.acceleration[i].value {
                 continue;
             }
-            // The jerks at the pieces' starts by rows where the configuration has them, else along the
-            // chain.
-            let rows = motion.jerk_rows();
-            let ((ta, ja), (tb, jb)) = bracket(seg, (j0, j1), |m, k| {
-                let jerk = m.jerk_probe(i, k).filter(|_| rows);
-                jerk.unwrap_or_else(|| m.second_rate_at(k, n + i)) + slope
-            });
-            let jerk = |t: f64| motion.w_at(t - t0, n + i)[2] + slope;
-            if let Some(tm) = brent_root(jerk, ta, tb, ja, jb, tol) {
-                let a = motion.w_at(tm - t0, n + i)[1] + ground(tm - t0);
+            if let Some((tm, a)) = jerk_root(seg, i, (a0, a1, j0, j1), (ground, slope)) {
                 self.acceleration[i].offer(a.abs(), tm);
             }
         }
@@ -589,7 +633,7 @@ impl Observer for DevicePeaks {
                 let p = Hermite::new(xa, xb, va, vb, h);
                 let near = p.extremum_near((self.closing[k], self.opening[k]), 0.99);
                 if let Some((_, x)) = near
-                    .then(|| exact_extremum(seg, &mut self.motion, (va, vb), &q))
+                    .then(|| exact_extremum(seg, &mut self.motion, &p, &q))
                     .flatten()
                 {
                     hi = hi.max(x);

@@ -64,6 +64,17 @@ impl Hermite {
             .any(|s| !s.is_nan() && (self.at(s) >= fraction * hi || -self.at(s) >= fraction * lo))
     }
 
+    /// The slopes at the step's two ends.
+    pub fn end_slopes(&self) -> (f64, f64) {
+        (self.va, self.vb)
+    }
+
+    /// The fraction of the step where the slope vanishes, when the slopes at the ends differ in sign (one
+    /// such point); `None` otherwise.
+    pub fn root_of_slope(&self) -> Option<f64> {
+        self.extrema().into_iter().find(|s| !s.is_nan())
+    }
+
     /// The slope (rate per unit time) at the fraction `s` of the step.
     pub fn slope(&self, s: f64) -> f64 {
         (self.d + s * (2.0 * self.b + 3.0 * s * self.c)) / self.h
