@@ -330,6 +330,8 @@ impl Contact {
 const TURN_W: Watch = Watch::crossing(TURN);
 const KINK_W: Watch = Watch::kink(KINK);
 const SEPARATION_W: Watch = Watch::crossing(SEPARATION);
+/// In restitution the ends may part and close again within one step.
+const PARTING_W: Watch = Watch::parting(SEPARATION);
 const ZERO_FORCE_W: Watch = Watch::crossing(ZERO_FORCE);
 const REAPPROACH_W: Watch = Watch::crossing(REAPPROACH);
 const OPEN_W: &[Watch] = &[Watch::touch(TOUCH)];
@@ -450,10 +452,10 @@ impl ElementLaw for Contact {
                 phase: Phase::Restitution,
                 ..
             } => match (self.tension, kinked(&law)) {
-                (Tension::Clamp, true) => &[SEPARATION_W, ZERO_FORCE_W, REAPPROACH_W, KINK_W],
-                (Tension::Clamp, false) => &[SEPARATION_W, ZERO_FORCE_W, REAPPROACH_W],
-                (Tension::Allow, true) => &[SEPARATION_W, REAPPROACH_W, KINK_W],
-                (Tension::Allow, false) => &[SEPARATION_W, REAPPROACH_W],
+                (Tension::Clamp, true) => &[PARTING_W, ZERO_FORCE_W, REAPPROACH_W, KINK_W],
+                (Tension::Clamp, false) => &[PARTING_W, ZERO_FORCE_W, REAPPROACH_W],
+                (Tension::Allow, true) => &[PARTING_W, REAPPROACH_W, KINK_W],
+                (Tension::Allow, false) => &[PARTING_W, REAPPROACH_W],
             },
             Engagement::Released { .. } | Engagement::Resting => IDLE_W,
             Engagement::Held { .. } => HELD_W,

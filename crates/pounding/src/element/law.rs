@@ -19,10 +19,30 @@ pub struct Watch {
     /// The event leaves the phase as it is (a kink of the law): once past, its function stays <= 0, so it
     /// is watched only from a positive start.
     pub keeps_phase: bool,
-    /// The event function is a distance that closes and may open again within one step (a touch): where
-    /// the deformation rate turns from closing to opening inside a step, the driver searches the step for
+    /// The event function is a distance that may cross 0 and come back within one step, its ends both
+    /// positive: where the deformation turns inside a step as this says, the driver searches the step for
     /// the function's smallest value rather than trusting its ends.
-    pub may_graze: bool,
+    pub graze: Option<Graze>,
+}
+
+/// Where a distance an event watches may dip below 0 and come back inside one step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Graze {
+    /// At the deformation's largest value: a touch (the ends close and part again).
+    AtLargest,
+    /// At its smallest: a separation (the ends part and close again).
+    AtSmallest,
+}
+
+impl Graze {
+    /// Whether a deformation whose rates are `va` and `vb` (m/s) at a step's ends turns there as this
+    /// says.
+    pub fn turns(self, va: f64, vb: f64) -> bool {
+        match self {
+            Graze::AtLargest => va > 0.0 && vb < 0.0,
+            Graze::AtSmallest => va < 0.0 && vb > 0.0,
+        }
+    }
 }
 
 impl Watch {
@@ -31,7 +51,7 @@ impl Watch {
         Self {
             event,
             keeps_phase: false,
-            may_graze: false,
+            graze: None,
         }
     }
 
@@ -40,7 +60,7 @@ impl Watch {
         Self {
             event,
             keeps_phase: true,
-            may_graze: false,
+            graze: None,
         }
     }
 
@@ -49,7 +69,16 @@ impl Watch {
         Self {
             event,
             keeps_phase: false,
-            may_graze: true,
+            graze: Some(Graze::AtLargest),
+        }
+    }
+
+    /// A separation: an opening distance that may come and go within one step.
+    pub const fn parting(event: Event) -> Self {
+        Self {
+            event,
+            keeps_phase: false,
+            graze: Some(Graze::AtSmallest),
         }
     }
 }

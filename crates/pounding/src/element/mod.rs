@@ -30,6 +30,6 @@ pub mod storey;
 pub use contact::{Contact, ContactPiece, Engagement, LawSource};
 pub use ends::{Element, End, Point};
 pub use gate::RateGate;
-pub use law::{Affine, ElementEnergy, ElementLaw, Event, Notice, Scales, Transition, Watch};
+pub use law::{Affine, ElementEnergy, ElementLaw, Event, Graze, Notice, Scales, Transition, Watch};
 pub use registry::{DeviceLaw, Law};
 pub use storey::{BoucWenShape, StoreyLaw, StoreyModel};

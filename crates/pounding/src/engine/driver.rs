@@ -112,9 +112,7 @@ fn earliest_event(
                 Some(crossed)
             } else if gb < 0.0 || (gb == 0.0 && ga > 0.0) {
                 Some((t1, gb))
-            } else if w.may_graze
-                && va > 0.0
-                && vb < 0.0
+            } else if w.graze.is_some_and(|g| g.turns(va, vb))
                 && grazes(el, ev, &y1[block.clone()], (xa, va), (xb, vb), t1 - t0)
             {
                 let (tm, gm) = golden_max(|t| -g(t), t0, t1, 1e-12 * (t1 - t0));
@@ -269,7 +267,7 @@ fn piece_crossing(
     None
 }
 
-/// Whether a touch may come and go inside a step whose deformation turns from closing to opening: the
+/// Whether a touch or a separation may come and go inside a step whose deformation turns inside it: the
 /// distance at the turn, on the cubic Hermite of the deformation (within a few thousandths of the step's
 /// motion of the true one on the steps the engine takes), is not clearly positive.
 fn grazes(
