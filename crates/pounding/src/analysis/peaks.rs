@@ -38,7 +38,8 @@ pub(super) fn step_peak(
 ) -> (f64, f64) {
     let h = seg.t1 - seg.t0;
     let (s, p) = hermite_peak(qa, qb, va, vb, h);
-    // The Hermite estimate errs by less than 1 % on an exact step (r h <= 1/2).
+    // The Hermite estimate errs by less than 0.3 % on an exact step (r h <= 1; the module
+    // crate::integrate::exact).
     if p < 0.99 * best {
         return (seg.t0 + s * h, p);
     }
@@ -711,7 +712,7 @@ fn affine_peak(
     };
     let t0 = seg.dense.t0();
     if m.pieces() == 1 {
-        // One piece: the motion is smooth on it (r h <= 1/2), an interior extremum where the rate turns.
+        // One piece: the motion is smooth on it (r h <= 1), an interior extremum where the rate turns.
         if ra * rb >= 0.0 {
             return p.max(ends);
         }

@@ -28,8 +28,9 @@ use super::forms::AffineRates;
 use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
-    halvings, live_of, mat_vec_on, step_bound, transition, Dense, JerkRows, Motion, OdeSystem,
-    Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, TERMS,
+    halvings, live_of, mat_vec_on, quadrature, step_bound, transition, Dense, IntegratedRates,
+    JerkRows, Motion, OdeSystem, Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS,
+    MAX_RHO, OFFSETS, QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS, THREE_POINT_REACH,
 };
 use std::sync::Arc;
 
@@ -60,6 +61,9 @@ struct Length {
     /// Each form's integral over the step, packed symmetric ([`pack_symmetric`]), in the order of the
     /// configuration's forms.
     integrals: Option<Vec<f64>>,
+    /// Without them, the transitions to the step's [`QUADRATURE_NODES`], where the integrated quantities'
+    /// rates are read for their growth.
+    quadrature: Option<[Vec<f64>; 5]>,
 }
 
 /// A whole record interval in one step ([`crate::integrate::exponential`]), for a configuration whose
@@ -201,10 +205,22 @@ impl Configuration {
     }
 }
 
+/// The series' reach at which this module's thresholds were measured (`r h <= 1/2`; steps reach
+/// [`MAX_RHO`] since): the choices between exact and stepped, whole and series-length, are made on this
+/// scale, so that each stays what it was measured to be, while steps and pieces are as long as the
+/// series allows.
+const CHOICE_RHO: f64 = 0.5;
+
+/// The pieces of a record interval of `rho = r × interval` on the choices' scale ([`CHOICE_RHO`]): twice
+/// the pieces a whole interval takes.
+fn choice_pieces(rho: f64) -> usize {
+    1usize << halvings(rho * MAX_RHO / CHOICE_RHO)
+}
+
 /// A configuration of step bound `r` (1/s) that takes a record interval of length `interval` (s) in one
-/// series-length step, as the Runge–Kutta stepper does in one or two.
+/// short series-length step ([`CHOICE_RHO`]), as the Runge–Kutta stepper does in one or two.
 fn slow(r: f64, interval: f64) -> bool {
-    r * interval <= MAX_RHO
+    r * interval <= CHOICE_RHO
 }
 
 /// What stepping configuration `m` of `sys` exactly needs: the rates' forms (integrated over a whole
@@ -397,6 +413,39 @@ impl Configuration {
     }
 }
 
+/// The mean rate of each integrated quantity over a one-piece step from `t0` of length `h` (s), by
+/// five-point Gauss–Legendre ([`QUADRATURE_NODES`]) along the exact motion: `w` at the step's start (its
+/// forcing carried along the lines of `fd` components), the motion at the nodes `wq`; the rates by the
+/// configuration's forms, or by the system's right-hand side without them. Written to `inc` (times `h`,
+/// the growth); `room` holds a whole `w`, a state and its rate.
+fn five_point_growth(
+    sys: &System,
+    rates: Option<&AffineRates>,
+    (w, wq, fd): (&[f64], &[Vec<f64>; 5], usize),
+    (t0, h): (f64, f64),
+    (wfull, ynode, dynode): (&mut [f64], &mut [f64], &mut [f64]),
+    inc: &mut [f64],
+) {
+    let mech = 2 * sys.layout().dofs();
+    inc.fill(0.0);
+    for ((g, weight), at) in QUADRATURE_NODES.iter().zip(QUADRATURE_WEIGHTS).zip(wq) {
+        let tau = g * h;
+        match rates {
+            Some(rates) => {
+                full_w_at(at, (w, mech, fd), tau, wfull);
+                rates.integrated_rates(wfull, &mut dynode[mech..]);
+            }
+            None => {
+                ynode[..mech].copy_from_slice(&at[..mech]);
+                sys.rhs_in(t0 + tau, forcing(w, mech, tau), ynode, dynode);
+            }
+        }
+        for (inc, r) in inc.iter_mut().zip(&dynode[mech..]) {
+            *inc += weight * r;
+        }
+    }
+}
+
 /// The exact stepper of a run (see the module). Working memory is allocated once per run.
 #[derive(Debug)]
 pub struct Exact {
@@ -412,6 +461,9 @@ pub struct Exact {
     dense: Dense,
     w: Vec<f64>,
     wn: [Vec<f64>; 4],
+    /// The motion at the step's [`QUADRATURE_NODES`], where a step's integrated quantities are read for
+    /// their growth when no form integrals give it (set by [`Self::propagate`] on one-piece steps).
+    wq: [Vec<f64>; 5],
     scratch: Vec<f64>,
     series: Vec<f64>,
     /// The last step built [`Self::series`] (one piece): the dense output adopts it.
@@ -496,6 +548,7 @@ impl Exact {
             dense: Dense::exact(Motion::new(mech, nw, dim - mech)),
             w: vec![0.0; nw],
             wn: std::array::from_fn(|_| vec![0.0; nw]),
+            wq: std::array::from_fn(|_| vec![0.0; nw]),
             scratch: vec![0.0; dim],
             series: vec![0.0; TERMS * nw],
             series_built: false,
@@ -554,7 +607,7 @@ impl Exact {
                 let whole = !fine
                     && !closed
                     && self.nw <= MAX_WHOLE_DIM
-                    && (MIN_PIECES..=MAX_PIECES).contains(&(1usize << halvings(r * self.interval)));
+                    && (MIN_PIECES..=MAX_PIECES).contains(&choice_pieces(r * self.interval));
                 let mut config = Configuration {
                     key: self.key.clone(),
                     forms: None,
@@ -650,10 +703,10 @@ impl Exact {
         true
     }
 
-    /// The work of a record interval in series-length steps for a configuration of step bound `r` (1/s):
-    /// see [`MAX_INTERVAL_WORK`].
+    /// The work of a record interval in series-length steps (of the choices' reach, [`CHOICE_RHO`]) for a
+    /// configuration of step bound `r` (1/s): see [`MAX_INTERVAL_WORK`].
     fn fine_work(&self, r: f64) -> f64 {
-        (r * self.interval / MAX_RHO).ceil() * (self.mech * self.nw) as f64
+        (r * self.interval / CHOICE_RHO).ceil() * (self.mech * self.nw) as f64
     }
 
     /// Whether `[t, t_stop]` is a whole record interval.
@@ -726,7 +779,7 @@ impl Exact {
         let (nw, mech, length) = (self.nw, self.mech, self.interval);
         let c = &mut self.configs[self.current];
         if c.whole.is_none() {
-            let after = if (1usize << halvings(c.r * length)) < FEW_PIECES {
+            let after = if choice_pieces(c.r * length) < FEW_PIECES {
                 FEW_PIECES_AFTER
             } else if c.first {
                 0
@@ -895,6 +948,9 @@ impl Exact {
                     transition(&c.m, nw, mech, GAUSS_NODES[2] * h),
                 ];
                 let integrals = length_integrals(c, (nw, mech), h);
+                // Beyond three points' reach, the five points' rows for the integrated quantities.
+                let quadrature = (integrals.is_none() && c.r * h > THREE_POINT_REACH)
+                    .then(|| QUADRATURE_NODES.map(|g| transition(&c.m, nw, mech, g * h)));
                 if c.lengths.len() >= LENGTHS {
                     c.lengths.remove(0);
                 }
@@ -902,6 +958,7 @@ impl Exact {
                     h,
                     phi: Arc::new(phi),
                     integrals,
+                    quadrature,
                 });
                 Some(c.lengths.len() - 1)
             } else {
@@ -926,6 +983,9 @@ impl Exact {
                 for (p, out) in c.lengths[i].phi.iter().zip(self.wn.iter_mut()).take(nodes) {
                     mat_vec_on(p, &self.w, &self.live, &mut out[..mech]);
                 }
+                for (p, out) in c.lengths[i].quadrature.iter().flatten().zip(&mut self.wq) {
+                    mat_vec_on(p, &self.w, &self.live, &mut out[..mech]);
+                }
             }
             None => {
                 let terms = terms(&mut self.terms, c.r * h);
@@ -943,6 +1003,10 @@ impl Exact {
                 ];
                 for (tau, out) in at.into_iter().zip(self.wn.iter_mut()) {
                     crate::integrate::series_into(&self.series, nw, tau, terms, &mut out[..mech]);
+                }
+                let five = (c.r * h > THREE_POINT_REACH).then_some(QUADRATURE_NODES);
+                for (g, out) in five.iter().flatten().zip(&mut self.wq) {
+                    crate::integrate::series_into(&self.series, nw, g * h, terms, &mut out[..mech]);
                 }
             }
         }
@@ -989,24 +1053,33 @@ impl Exact {
         let piece = whole.map_or(h, |(_, w)| w.piece());
         motion.terms = terms(&mut self.terms, config.r * piece);
         motion.invalidate();
-        if std::mem::take(&mut self.series_built) && block.is_none() {
+        let series = std::mem::take(&mut self.series_built) && block.is_none();
+        if series {
             motion.adopt_series(&self.series);
         }
         self.dense_config = Some(motion_config);
         motion.w1.copy_from_slice(&self.wn[0][..mech]);
         self.ynode.copy_from_slice(&self.y);
-        // A built length with form integrals: its nodes, unread, are found only if an observer asks (the
-        // same numbers whatever the observers read).
+        // A built length with form integrals, or a step of one series whose rates are forms: its nodes,
+        // unread, are found only if an observer asks (the same numbers whatever the observers read).
+        let grown = block.is_some() || self.built.is_some();
+        // Beyond three points' reach, integrated by five ([`Self::wq`]) and the quartic bent to meet them.
+        let bend = block.is_none() && config.r * h > THREE_POINT_REACH;
+        let five = bend && !grown;
         let unread = match (block, self.built) {
             (None, Some(i)) => config.lengths.get(i).and_then(|l| {
                 Some(UnreadNodes {
-                    rows: l.phi.clone(),
+                    rows: Some(l.phi.clone()),
                     rates: config.rates.clone()?,
                 })
             }),
+            (None, None) if series && five => config
+                .rates
+                .clone()
+                .map(|rates| UnreadNodes { rows: None, rates }),
             _ => None,
         };
-        if whole.is_some() || unread.is_some() {
+        if grown {
             // Grown by the form integrals over the block or the length ([`Self::propagate_block`],
             // [`Self::propagate`]).
             for (y, inc) in self.y[mech..].iter_mut().zip(&self.inc) {
@@ -1050,7 +1123,7 @@ impl Exact {
             }
         }
         if whole.is_none() {
-            if read {
+            if !grown && !five {
                 for k in 0..acc {
                     let inc: f64 = (0..3)
                         .map(|j| GAUSS_WEIGHTS[j] * motion.rates[j + 1][mech + k])
@@ -1058,7 +1131,21 @@ impl Exact {
                     self.y[mech + k] += h * inc;
                 }
             }
-            motion.single();
+            if five {
+                // The three nodes' rates serve the quartic inside the step, bent to meet this at its end.
+                let room = (
+                    &mut self.wfull[..],
+                    &mut self.ynode[..],
+                    &mut self.dynode[..],
+                );
+                let motion_at = (&self.w[..], &self.wq, self.lines.len());
+                let rates = config.rates.as_deref();
+                five_point_growth(sys, rates, motion_at, (t0, h), room, &mut self.inc);
+                for (y, inc) in self.y[mech..].iter_mut().zip(&self.inc) {
+                    *y += h * inc;
+                }
+            }
+            motion.single(bend.then_some(&self.y[mech..]));
         }
         self.y[..mech].copy_from_slice(&self.wn[0][..mech]);
         self.t = t1;
@@ -1088,6 +1175,9 @@ impl Exact {
         };
         let t0 = self.dense.t0();
         let tau = t - t0;
+        let r = self
+            .dense_config
+            .map_or(f64::INFINITY, |c| self.configs[c].r);
         motion.on_series(tau, &mut out[..mech]);
         self.scratch.copy_from_slice(&self.y);
         let acc = out.len() - mech;
@@ -1102,7 +1192,8 @@ impl Exact {
         for p in 0..pieces {
             let a = p as f64 * piece;
             let len = (tau - a).min(piece);
-            for (j, node) in GAUSS_NODES.iter().enumerate() {
+            let (nodes, weights) = quadrature(r * len);
+            for (node, weight) in nodes.iter().zip(weights) {
                 let s = a + node * len;
                 motion.on_series(s, &mut self.scratch[..mech]);
                 sys.rhs_in(
@@ -1112,7 +1203,7 @@ impl Exact {
                     &mut self.dynode,
                 );
                 for k in 0..acc {
-                    out[mech + k] += len * GAUSS_WEIGHTS[j] * self.dynode[mech + k];
+                    out[mech + k] += len * weight * self.dynode[mech + k];
                 }
             }
         }

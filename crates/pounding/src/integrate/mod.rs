@@ -18,9 +18,10 @@ mod rosenbrock;
 mod switching;
 
 pub use exact::{
-    dot, live_of, mat_vec, mat_vec_on, series, series_at, series_into, step_bound, terms_for,
-    transition, IntegratedRates, JerkRows, Motion, Sparse, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS,
-    MAX_RHO, OFFSETS, TERMS,
+    dot, live_of, mat_vec, mat_vec_on, quadrature, series, series_at, series_into, step_bound,
+    terms_for, transition, IntegratedRates, JerkRows, Motion, Sparse, UnreadNodes, GAUSS_NODES,
+    GAUSS_WEIGHTS, MAX_RHO, OFFSETS, QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS,
+    THREE_POINT_REACH,
 };
 pub use interval::{
     exponential, form_blocks, functional_at_pieces, halvings, mat_mul, times_transition,
