@@ -370,17 +370,7 @@ fn floors_that_part_and_close_again_inside_one_step_make_two_impacts() {
         (Model::Hooke, 0.0018),
         (Model::KelvinVoigt, 0.0022),
     ] {
-        let c = ContactModel::new(model, 2.0e9, 0.65).unwrap();
-        let s = Scenario::new(
-            vec![
-                building("L", &[5.0e5], &[7.8957e7], 0.05),
-                building("R", &[5.0e5], &[1.9739e7], 0.05),
-            ],
-            Record::el_centro_1940(),
-        )
-        .unwrap()
-        .with_link("L", "R", gap, &c, None)
-        .unwrap();
+        let s = two_sdof_at(model, 2.0e9, gap);
         let exact = s.clone().run().unwrap();
         let stepped = s
             .with_propagation(Propagation::Stepping)
