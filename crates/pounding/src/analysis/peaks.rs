@@ -64,9 +64,9 @@ pub(super) fn ends_on(
 
 /// A piece of a whole interval taken at once over which a rate (`va`, `vb` at the step's ends,
 /// `rate(motion, k)` at the start of piece `k`) changes sign, with its rates at its ends: the step itself
-/// for a step of one piece. The piece where the root of the slope of `guess` (a cubic Hermite on the
-/// segment whose slope is that rate) lies first, two readings; else the first such piece along the chain. A search then builds the series of one
-/// piece only.
+/// for a step of one piece. First the piece where `guess` (a cubic Hermite on the segment whose slope is
+/// that rate) puts the root, in two readings; else the first such piece along the chain. A search then
+/// builds the series of one piece only.
 fn bracket(
     seg: &Segment<'_, '_>,
     (va, vb): (f64, f64),

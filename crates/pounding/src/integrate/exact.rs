@@ -8,8 +8,8 @@
 //! ways to compute the exponential of a matrix*, 2003, method 1, with the truncation bound of their
 //! section 3). On such a step the cubic Hermite of a displacement through its values and rates at the ends
 //! misses the motion by at most `rho^4 / 384 < 0.3 %` of its size (the interpolation remainder
-//! `h^4 / 384 u`, `|u| <= r^4 |u|`): what the recorders' screens (a peak read on the exact motion
-//! only where the cubic comes within 1 % of it) rely on.
+//! `h^4 / 384 |u^(4)|`, and `|u^(4)| <= r^4 |u|`): what the recorders' screens (a peak read on the exact
+//! motion only where the cubic comes within 1 % of it) rely on.
 //!
 //! The quantities integrated along the motion (energies) are not part of `w`: their rates are quadratic in
 //! it. The caller gives their rates at the step's ends and at the three Gauss–Legendre nodes of the step
