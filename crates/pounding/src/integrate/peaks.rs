@@ -112,6 +112,11 @@ pub trait Piece: Copy {
     fn span(&self) -> (f64, f64);
     /// The value at `t`.
     fn value(&self, t: f64) -> f64;
+    /// The largest value on the span and its time `(t, value)`, where the piece can find it exactly (a
+    /// polynomial's extremum); `None` (the default): searched by golden section on [`Self::value`].
+    fn peak(&self) -> Option<(f64, f64)> {
+        None
+    }
 }
 
 /// The largest value of a scalar history given piece by piece, with its time. Only the pieces around a node
@@ -141,9 +146,11 @@ impl<S: Piece> PeakTracker<S> {
     }
 
     fn refine(&mut self, seg: S) {
-        let (ta, tb) = seg.span();
-        let tol = 1e-12 * (tb - ta).max(f64::MIN_POSITIVE);
-        let p = golden_max(|t| seg.value(t), ta, tb, tol);
+        let p = seg.peak().unwrap_or_else(|| {
+            let (ta, tb) = seg.span();
+            let tol = 1e-12 * (tb - ta).max(f64::MIN_POSITIVE);
+            golden_max(|t| seg.value(t), ta, tb, tol)
+        });
         self.consider(p, seg);
     }
 
