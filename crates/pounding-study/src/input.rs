@@ -520,6 +520,11 @@ fn tiny_number(key: &str, v: &Value) -> Option<(String, f64)> {
 pub fn parse_value<T: serde::de::DeserializeOwned>(
     value: &Value,
 ) -> Result<T, (Option<String>, String)> {
+    // Read plainly first (a study reads every run's scenario); only a value that fails is read again with
+    // its path tracked, for the message.
+    if let Ok(t) = T::deserialize(value) {
+        return Ok(t);
+    }
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
         let inner = cut_expected(&suggest_field(&e.into_inner().to_string()));

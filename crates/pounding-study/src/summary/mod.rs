@@ -282,6 +282,11 @@ impl RunSummary {
 
     /// A summary read back from its JSON text; the error says what does not fit.
     pub fn from_json(text: &str) -> Result<RunSummary, String> {
+        // Read plainly first (a study reads every run's summary, twice for runs.csv); only a summary that
+        // fails is read again with its path tracked, for the message.
+        if let Ok(s) = serde_json::from_str(text) {
+            return Ok(s);
+        }
         let de = &mut serde_json::Deserializer::from_str(text);
         serde_path_to_error::deserialize(de).map_err(|e| {
             let path = e.path().to_string();
