@@ -28,9 +28,9 @@ use super::forms::AffineRates;
 use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
-    halvings, live_of, mat_vec_on, quadrature, step_bound, transition, Dense, IntegratedRates,
-    JerkRows, Motion, OdeSystem, Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS,
-    MAX_RHO, OFFSETS, QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS, THREE_POINT_REACH,
+    halvings, live_of, mat_vec_on, quadrature, step_bound, transition, Dense, JerkRows, Motion,
+    OdeSystem, Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS,
+    QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS, THREE_POINT_REACH,
 };
 use std::sync::Arc;
 
@@ -429,19 +429,34 @@ fn five_point_growth(
     let mech = 2 * sys.layout().dofs();
     inc.fill(0.0);
     for ((g, weight), at) in QUADRATURE_NODES.iter().zip(QUADRATURE_WEIGHTS).zip(wq) {
-        let tau = g * h;
-        match rates {
-            Some(rates) => {
-                full_w_at(at, (w, mech, fd), tau, wfull);
-                rates.integrated_rates(wfull, &mut dynode[mech..]);
-            }
-            None => {
-                ynode[..mech].copy_from_slice(&at[..mech]);
-                sys.rhs_in(t0 + tau, forcing(w, mech, tau), ynode, dynode);
-            }
-        }
+        rate_at(sys, rates, (w, at, fd), (t0, g * h), (wfull, ynode), dynode);
         for (inc, r) in inc.iter_mut().zip(&dynode[mech..]) {
             *inc += weight * r;
+        }
+    }
+}
+
+/// The rate of every layout component `tau` s into a step from `t0` (`out`, the layout's length), the
+/// motion there `at` (`w` at the step's start, its forcing carried along the lines of `fd` components): by
+/// the configuration's `rates`, or by the system's right-hand side without them (its integrated quantities
+/// as `ynode` holds them). `wfull` is room for a whole `w`.
+fn rate_at(
+    sys: &System,
+    rates: Option<&AffineRates>,
+    (w, at, fd): (&[f64], &[f64], usize),
+    (t0, tau): (f64, f64),
+    (wfull, ynode): (&mut [f64], &mut [f64]),
+    out: &mut [f64],
+) {
+    let mech = 2 * sys.layout().dofs();
+    match rates {
+        Some(rates) => {
+            full_w_at(at, (w, mech, fd), tau, wfull);
+            rates.write(wfull, out);
+        }
+        None => {
+            ynode[..mech].copy_from_slice(&at[..mech]);
+            sys.rhs_in(t0 + tau, forcing(w, mech, tau), ynode, out);
         }
     }
 }
@@ -1099,28 +1114,17 @@ impl Exact {
         let read = unread.is_none();
         motion.set_nodes_unread(unread);
         for (j, node) in GAUSS_NODES.iter().enumerate().filter(|_| read) {
-            let tau = node * h;
-            match &config.rates {
-                Some(rates) => {
-                    full_w_at(
-                        &self.wn[j + 1],
-                        (&self.w, mech, self.lines.len()),
-                        tau,
-                        &mut self.wfull,
-                    );
-                    rates.write(&self.wfull, &mut motion.rates[j + 1]);
-                }
-                None => {
-                    self.ynode[..mech].copy_from_slice(&self.wn[j + 1][..mech]);
-                    sys.rhs_in(
-                        t0 + tau,
-                        forcing(&self.w, mech, tau),
-                        &self.ynode,
-                        &mut self.dynode,
-                    );
-                    motion.rates[j + 1].copy_from_slice(&self.dynode);
-                }
-            }
+            let at = (&self.w[..], &self.wn[j + 1][..], self.lines.len());
+            let room = (&mut self.wfull[..], &mut self.ynode[..]);
+            let rates = config.rates.as_deref();
+            rate_at(
+                sys,
+                rates,
+                at,
+                (t0, node * h),
+                room,
+                &mut motion.rates[j + 1],
+            );
         }
         if whole.is_none() {
             if !grown && !five {
