@@ -29,8 +29,8 @@ use super::linear::{channel_at, forcing, full_w_at};
 use super::System;
 use crate::integrate::{
     halvings, live_of, mat_vec_on, quadrature, step_bound, transition, Dense, JerkRows, Motion,
-    OdeSystem, Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS,
-    QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS, THREE_POINT_REACH,
+    NodeSource, OdeSystem, Sparse, Tolerance, UnreadNodes, GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO,
+    OFFSETS, QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS, THREE_POINT_REACH,
 };
 use std::sync::Arc;
 
@@ -458,6 +458,43 @@ fn rate_at(
             ynode[..mech].copy_from_slice(&at[..mech]);
             sys.rhs_in(t0 + tau, forcing(w, mech, tau), ynode, out);
         }
+    }
+}
+
+/// How a step's Gauss nodes are left unread, if they are: a built length with form integrals (its rows), a
+/// step of one series whose rates are forms (`series_five`: its series), or a whole interval's block when no
+/// observer read the last step's integrated quantities inside it (`integrals_read`: held, the motion's
+/// rates read there as accelerations are sampled at them). `None`: read now.
+fn unread_nodes(
+    config: &Configuration,
+    (block, built): (Option<usize>, Option<usize>),
+    series_five: bool,
+    integrals_read: bool,
+) -> Option<UnreadNodes> {
+    let rates = config.rates.clone()?;
+    let source = match (block, built) {
+        (None, Some(i)) => NodeSource::Rows(config.lengths.get(i)?.phi.clone()),
+        (None, None) if series_five => NodeSource::Series,
+        (Some(_), _) if !integrals_read => NodeSource::Held,
+        _ => return None,
+    };
+    Some(UnreadNodes { source, rates })
+}
+
+/// Holds the motion at a block's Gauss nodes `wn[1..4]` in `motion` and writes its rates there (the
+/// integrated quantities' left for a reader, [`NodeSource::Held`]); `w` the step's start, `mech` and `fd`
+/// forcing components after it.
+fn hold_nodes(
+    motion: &mut Motion,
+    rates: &AffineRates,
+    (w, mech, fd): (&[f64], usize, usize),
+    (wn, h): (&[Vec<f64>; 4], f64),
+    wfull: &mut [f64],
+) {
+    motion.hold_nodes([&wn[1], &wn[2], &wn[3]]);
+    for (j, node) in GAUSS_NODES.iter().enumerate() {
+        full_w_at(&wn[j + 1], (w, mech, fd), node * h, wfull);
+        rates.write_motion(wfull, &mut motion.rates[j + 1]);
     }
 }
 
@@ -1067,6 +1104,9 @@ impl Exact {
         let whole = block.and_then(|i| Some((i, config.whole.as_ref()?)));
         let piece = whole.map_or(h, |(_, w)| w.piece());
         motion.terms = terms(&mut self.terms, config.r * piece);
+        // Observers that read the last step's integrated quantities inside it (histories) will read this
+        // one's: its nodes are read now, where it costs least.
+        let integrals_read = motion.integrals_read();
         motion.invalidate();
         let series = std::mem::take(&mut self.series_built) && block.is_none();
         if series {
@@ -1081,19 +1121,7 @@ impl Exact {
         // Beyond three points' reach, integrated by five ([`Self::wq`]) and the quartic bent to meet them.
         let bend = block.is_none() && config.r * h > THREE_POINT_REACH;
         let five = bend && !grown;
-        let unread = match (block, self.built) {
-            (None, Some(i)) => config.lengths.get(i).and_then(|l| {
-                Some(UnreadNodes {
-                    rows: Some(l.phi.clone()),
-                    rates: config.rates.clone()?,
-                })
-            }),
-            (None, None) if series && five => config
-                .rates
-                .clone()
-                .map(|rates| UnreadNodes { rows: None, rates }),
-            _ => None,
-        };
+        let unread = unread_nodes(config, (block, self.built), series && five, integrals_read);
         if grown {
             // Grown by the form integrals over the block or the length ([`Self::propagate_block`],
             // [`Self::propagate`]).
@@ -1112,7 +1140,12 @@ impl Exact {
             self.chain_config = Some(motion_config);
         }
         let read = unread.is_none();
+        let held = matches!(&unread, Some(u) if matches!(u.source, NodeSource::Held));
         motion.set_nodes_unread(unread);
+        if let (true, Some(rates)) = (held, config.rates.as_deref()) {
+            let w = (&self.w[..], mech, self.lines.len());
+            hold_nodes(motion, rates, w, (&self.wn, h), &mut self.wfull);
+        }
         for (j, node) in GAUSS_NODES.iter().enumerate().filter(|_| read) {
             let at = (&self.w[..], &self.wn[j + 1][..], self.lines.len());
             let room = (&mut self.wfull[..], &mut self.ynode[..]);

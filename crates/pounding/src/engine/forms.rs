@@ -146,6 +146,12 @@ impl AffineRates {
 
     /// Writes the rate of each layout component at `w` to `out` (the layout's length).
     pub(crate) fn write(&self, w: &[f64], out: &mut [f64]) {
+        self.write_motion(w, out);
+        self.write_integrated(w, &mut out[2 * self.n..]);
+    }
+
+    /// Writes the rates of the motion alone (the displacements' and velocities', `out[..2 n]`) at `w`.
+    pub(crate) fn write_motion(&self, w: &[f64], out: &mut [f64]) {
         let n = self.n;
         out[..n].copy_from_slice(&w[n..2 * n]);
         for (i, o) in out[n..2 * n].iter_mut().enumerate() {
@@ -156,7 +162,6 @@ impl AffineRates {
                 .iter()
                 .fold(0.0, |a, &(j, v)| a + v * w[j]);
         }
-        self.write_integrated(w, &mut out[2 * n..]);
     }
 }
 

@@ -369,13 +369,24 @@ pub struct JerkRows {
     rows: OnceLock<Vec<f64>>,
 }
 
-/// A step's Gauss nodes as the stepper left them unread: the transition rows to the step's end and its
-/// three nodes (the first `mech` rows of each, [`transition`]), or none for a step whose series the motion
-/// holds ([`Motion::adopt_series`]), and the rates of the integrated quantities.
+/// Where the motion at a step's Gauss nodes is found when their integrated quantities are read.
+#[derive(Clone, Debug)]
+pub enum NodeSource {
+    /// The transition rows to the step's end and its three nodes (`[end, node 0, node 1, node 2]`, the
+    /// first `mech` rows of each, [`transition`]), applied to `w` at the step's start.
+    Rows(Arc<[Vec<f64>; 4]>),
+    /// The step's series, which the motion holds ([`Motion::adopt_series`]).
+    Series,
+    /// The motion there as the stepper found it ([`Motion::hold_nodes`]): a whole interval's block.
+    Held,
+}
+
+/// A step's Gauss nodes as the stepper left them unread (their integrated quantities' rates): where the
+/// motion there is found, and the rates of the integrated quantities.
 #[derive(Clone, Debug)]
 pub struct UnreadNodes {
-    /// `[end, node 0, node 1, node 2]`; `None`: the motion at the nodes is read off the step's series.
-    pub rows: Option<Arc<[Vec<f64>; 4]>>,
+    /// Where the motion at the nodes is found.
+    pub source: NodeSource,
     /// The configuration's rates.
     pub rates: Arc<dyn IntegratedRates>,
 }
@@ -400,6 +411,8 @@ pub struct Motion {
     unread: Option<UnreadNodes>,
     /// The integrated quantities' rates at the three nodes, found from [`Self::unread`].
     node_rates: RefCell<[Vec<f64>; 3]>,
+    /// The motion (`mech`) at the three nodes, when the stepper holds it here ([`NodeSource::Held`]).
+    node_w: [Vec<f64>; 3],
     /// Terms of the series the step needs ([`terms_for`]).
     pub terms: usize,
     /// The second rates of the velocities (the jerks, m/s^3) at the step's start and end.
@@ -470,6 +483,7 @@ impl Motion {
             rates: std::array::from_fn(|_| vec![0.0; mech + acc]),
             unread: None,
             node_rates: RefCell::new(std::array::from_fn(|_| vec![0.0; acc])),
+            node_w: std::array::from_fn(|_| vec![0.0; mech]),
             terms: TERMS,
             jerk: std::array::from_fn(|_| vec![0.0; mech / 2]),
             w1: vec![0.0; mech],
@@ -522,6 +536,11 @@ impl Motion {
         self.series_of.set(0);
     }
 
+    /// Whether a reader asked for the integrated quantities inside the step (since [`Self::invalidate`]).
+    pub fn integrals_read(&self) -> bool {
+        self.acc_built.get()
+    }
+
     /// Forgets the series (after `w0` or `m` changed).
     pub fn invalidate(&self) {
         self.series_of.set(usize::MAX);
@@ -546,6 +565,14 @@ impl Motion {
     /// start by the rows to them.
     pub fn set_nodes_unread(&mut self, unread: Option<UnreadNodes>) {
         self.unread = unread;
+    }
+
+    /// Holds the motion at the step's three Gauss nodes (`mech` components of each), for a reader of the
+    /// integrated quantities inside a step whose nodes are [`NodeSource::Held`].
+    pub fn hold_nodes(&mut self, nodes: [&[f64]; 3]) {
+        for (held, node) in self.node_w.iter_mut().zip(nodes) {
+            held.copy_from_slice(&node[..self.mech]);
+        }
     }
 
     /// The jerks at the step's ends ([`Self::jerk`]) from the rates there: the velocities' rows of `M` on
@@ -994,11 +1021,11 @@ impl Motion {
     }
 
     /// The integrated quantities' rates at the Gauss nodes of a step of length `h` the stepper left unread
-    /// ([`Self::node_rates`]): `w` there by the rows to it, or off the step's series (one piece), the
-    /// forcing linear in time; its rates by the configuration's.
+    /// ([`Self::node_rates`]): `w` there from its [`NodeSource`], the forcing linear in time; its rates by
+    /// the configuration's.
     fn read_nodes(&self, unread: &UnreadNodes, h: f64) {
         let (nw, mech) = (self.w0.len(), self.mech);
-        if unread.rows.is_none() {
+        if matches!(unread.source, NodeSource::Series) {
             self.ensure(0);
         }
         let rate = self.forcing_rates();
@@ -1006,9 +1033,14 @@ impl Motion {
         let mut w = self.w_at_offset.borrow_mut();
         let mut nodes = self.node_rates.borrow_mut();
         for (j, (node, out)) in GAUSS_NODES.iter().zip(nodes.iter_mut()).enumerate() {
-            match &unread.rows {
-                Some(rows) => mat_vec_on(&rows[j + 1], &self.w0, &self.live, &mut w[..mech]),
-                None => series_into(&series, nw, node * h, self.terms, &mut w[..mech]),
+            match &unread.source {
+                NodeSource::Rows(rows) => {
+                    mat_vec_on(&rows[j + 1], &self.w0, &self.live, &mut w[..mech])
+                }
+                NodeSource::Series => {
+                    series_into(&series, nw, node * h, self.terms, &mut w[..mech])
+                }
+                NodeSource::Held => w[..mech].copy_from_slice(&self.node_w[j]),
             }
             self.forcing_at(node * h, &rate, &mut w);
             unread.rates.integrated_rates(&w, out);
@@ -1251,7 +1283,7 @@ pub(super) mod tests {
             if unread {
                 let rates: Arc<dyn IntegratedRates> = Arc::new(Damping(c));
                 motion.set_nodes_unread(Some(UnreadNodes {
-                    rows: Some(Arc::new(rows.clone())),
+                    source: NodeSource::Rows(Arc::new(rows.clone())),
                     rates,
                 }));
             }

@@ -19,8 +19,8 @@ mod switching;
 
 pub use exact::{
     dot, live_of, mat_vec, mat_vec_on, quadrature, series, series_at, series_into, step_bound,
-    terms_for, transition, IntegratedRates, JerkRows, Motion, Sparse, UnreadNodes, GAUSS_NODES,
-    GAUSS_WEIGHTS, MAX_RHO, OFFSETS, QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS,
+    terms_for, transition, IntegratedRates, JerkRows, Motion, NodeSource, Sparse, UnreadNodes,
+    GAUSS_NODES, GAUSS_WEIGHTS, MAX_RHO, OFFSETS, QUADRATURE_NODES, QUADRATURE_WEIGHTS, TERMS,
     THREE_POINT_REACH,
 };
 pub use interval::{

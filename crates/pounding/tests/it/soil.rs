@@ -270,3 +270,35 @@ fn a_pair_on_soil_under_wave_passage_is_the_stepped_run() {
         .unwrap();
     whole_intervals_are_the_stepped_run(&s);
 }
+
+/// The energies a history reads inside a whole interval are the same whether the stepper read the
+/// interval's Gauss nodes as it went (every interval sampled, output every 0.01 s) or left them for the
+/// reader (one interval in two or three sampled, every 0.05 s: the nodes of an interval after an unsampled
+/// one are found when the sample asks). At the common times, within rounding of the largest energy.
+#[test]
+fn energies_inside_whole_intervals_do_not_depend_on_which_were_sampled() {
+    let run = |dt: f64| soil_pair().with_output_dt(dt).unwrap().run().unwrap();
+    let (every, some) = (run(0.01), run(0.05));
+    let largest = every.histories.energy[0]
+        .iter()
+        .fold(0.0f64, |a, &e| a.max(e.abs()));
+    let mut compared = 0;
+    for (k, (a, b)) in every
+        .histories
+        .energy
+        .iter()
+        .zip(&some.histories.energy)
+        .enumerate()
+    {
+        for (j, y) in b.iter().enumerate() {
+            let x = a[5 * j];
+            assert!(
+                (x - y).abs() <= 1e-12 * largest,
+                "energy {k} at {} s: {x} vs {y}",
+                0.05 * j as f64
+            );
+            compared += 1;
+        }
+    }
+    assert!(compared > 6 * 150, "{compared}");
+}
