@@ -162,9 +162,20 @@ fn jerk_root(
         let jerk = rows.then(|| m.jerk_probe(i, k)).flatten();
         jerk.unwrap_or_else(|| m.second_rate_at(k, n + i)) + slope
     });
-    let jerk = |t: f64| motion.w_at(t - t0, n + i)[2] + slope;
-    let tm = brent_root(jerk, ta, tb, ja, jb, tol)?;
-    Some((tm, motion.w_at(tm - t0, n + i)[1] + ground(tm - t0)))
+    // The bracket lies in one piece: the velocity's series there, differentiated once and twice (each of
+    // the search's readings a scalar Horner instead of the motion's).
+    let mut v = [0.0; TERMS];
+    let (start, terms) = motion.functional_series(0.5 * (ta + tb) - t0, |c| c[n + i], &mut v);
+    let (mut acc, mut jerk) = ([0.0; TERMS], [0.0; TERMS]);
+    for k in 1..terms {
+        acc[k - 1] = k as f64 * v[k];
+    }
+    for k in 1..terms.saturating_sub(1) {
+        jerk[k - 1] = k as f64 * acc[k];
+    }
+    let at = |c: &[f64; TERMS], t: f64| horner(&c[..terms], t - t0 - start);
+    let tm = brent_root(|t| at(&jerk, t) + slope, ta, tb, ja, jb, tol)?;
+    Some((tm, at(&acc, tm) + ground(tm - t0)))
 }
 
 /// Room for the states of the element with the most.
