@@ -1465,6 +1465,15 @@ fn bad_studies_get_one_line_exit_2_and_leave_the_store_untouched() {
             "scale = [1.0, nan]",
             "axes.scale.1 = nan is not allowed: a finite number",
         ),
+        // Values alike but for their numbers are read once; one of another kind is read too.
+        (
+            "contact.0.gap = [0.01, 0.02, \"wide\"]",
+            "axis \"contact.0.gap\" has a value of the wrong type",
+        ),
+        (
+            "\"building.0.masses\" = [[5e5], [5e5, 2e5], [5e5, \"x\"]]",
+            "building.0.masses.1: invalid type: string \"x\"",
+        ),
     ];
     for (i, (axes, needle)) in cases.iter().enumerate() {
         let file = study(&dir, &format!("case{i}.toml"), axes);

@@ -336,6 +336,29 @@ fn show(v: &Value) -> String {
     }
 }
 
+/// What of a value a scenario's shape check reads: its text with every number replaced by its kind (an
+/// unsigned, a negative or a fractional number, and for the last whether it is too small to allow:
+/// [`pounding::limits::not_tiny`]), strings and booleans and keys as they are.
+fn kind(v: &Value) -> String {
+    match v {
+        Value::Number(n) if n.is_u64() => "u".into(),
+        Value::Number(n) if n.is_i64() => "i".into(),
+        Value::Number(n) => match n.as_f64().is_some_and(pounding::limits::not_tiny) {
+            true => "f".into(),
+            false => "t".into(),
+        },
+        Value::Array(a) => format!("[{}]", a.iter().map(kind).collect::<Vec<_>>().join(",")),
+        Value::Object(m) => {
+            let fields: Vec<String> = m
+                .iter()
+                .map(|(k, v)| format!("{k:?}:{}", kind(v)))
+                .collect();
+            format!("{{{}}}", fields.join(","))
+        }
+        other => other.to_string(),
+    }
+}
+
 /// Applies the setting `name = v` to `scenario`.
 fn apply(scenario: &mut Value, name: &str, v: &Value) -> Result<(), String> {
     match name {
@@ -463,13 +486,20 @@ impl Study {
     /// The scenarios whose keys [`Study::check_keys`] reads: for a product, the base with one axis set to
     /// each of its values in turn (axes set disjoint keys, so every run's keys are among these); for a list,
     /// every entry.
+    /// Values that differ only in numbers of the same kind ([`kind`]) give the same shape errors: one
+    /// probe stands for them all (a sweep of 10,000 gaps reads one scenario, not 10,000).
     fn probes(&self) -> Vec<Value> {
+        let mut seen = std::collections::HashSet::new();
         match &self.runs {
-            Runs::List(variants) => variants.iter().map(|v| v.value.clone()).collect(),
+            Runs::List(variants) => variants
+                .iter()
+                .filter(|v| seen.insert((0, kind(&v.value))))
+                .map(|v| v.value.clone())
+                .collect(),
             Runs::Product { base, .. } => {
                 let mut out = Vec::new();
-                for axis in &self.axes {
-                    for v in &axis.values {
+                for (a, axis) in self.axes.iter().enumerate() {
+                    for v in axis.values.iter().filter(|v| seen.insert((a, kind(v)))) {
                         let mut value = base.clone();
                         if apply(&mut value, &axis.name, v).is_ok() {
                             out.push(value);
