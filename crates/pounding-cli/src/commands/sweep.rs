@@ -49,6 +49,19 @@ struct Tally {
     first_warning: Option<(usize, String)>,
 }
 
+/// Runs whose headline rows the first reading of the store keeps for the second (about 400 bytes each):
+/// past it, the store is read twice and memory stays flat.
+const KEPT_ROWS: usize = 50_000;
+
+/// A run's headline row (`(column, value)`) and its first warning, or its error.
+type Headline = Result<(Vec<(String, Cell)>, Option<String>), String>;
+
+/// A run's headline as the first reading keeps it: its columns by their index in the union.
+enum Kept {
+    Ok(Vec<(u32, Cell)>, Option<String>),
+    Err(String),
+}
+
 /// `runs.csv`: index, key, status, the axes' values, the headline results (the union of every run's
 /// columns, in the order they first appear), with a `contacts` axis the amplification of each building's
 /// peaks over the run without contact of the same other values, the error; written row by row. Returns
@@ -61,15 +74,30 @@ fn write_runs_csv(
 ) -> Result<Tally, CliError> {
     let contacts_axis = study.axes.iter().position(|a| a.name == "contacts");
     let mut columns: Vec<String> = Vec::new();
+    let mut index: HashMap<String, u32> = HashMap::new();
     let mut off_runs: HashMap<Vec<String>, Vec<(String, Cell)>> = HashMap::new();
+    let keep = swept.keys.len() <= KEPT_ROWS;
+    let mut kept = Vec::with_capacity(if keep { swept.keys.len() } else { 0 });
     each_outcome(swept, store, |i, o| {
-        let Ok(summary) = o else { return Ok(()) };
+        let summary = match o {
+            Ok(summary) => summary,
+            Err(e) => {
+                kept.extend(keep.then_some(Kept::Err(e)));
+                return Ok(());
+            }
+        };
         let row = headline(&summary);
-        for (c, _) in &row {
-            if !columns.contains(c) {
+        let mut cells = Vec::with_capacity(if keep { row.len() } else { 0 });
+        for (c, v) in &row {
+            let k = *index.entry(c.clone()).or_insert_with(|| {
                 columns.push(c.clone());
+                (columns.len() - 1) as u32
+            });
+            if keep {
+                cells.push((k, *v));
             }
         }
+        kept.extend(keep.then(|| Kept::Ok(cells, summary.warnings.first().cloned())));
         if let (Some(a), Contacts::Off) = (contacts_axis, summary.contacts) {
             off_runs.insert(others(study, i, a), row);
         }
@@ -93,9 +121,9 @@ fn write_runs_csv(
         let mut wtr = csv::Writer::from_writer(w);
         let mut buf = pounding_study::format::Shortest::new();
         wtr.write_record(&header)?;
-        let r = each_outcome(swept, store, |i, o| {
+        let mut emit = |i: usize, o: Headline| {
             let csv_err = |e: csv::Error| CliError::Io(format!("cannot write runs.csv: {e}"));
-            let mut row = o.as_ref().map(headline).unwrap_or_default();
+            let mut row = o.as_ref().map(|(row, _)| row.clone()).unwrap_or_default();
             if let Some(off) = contacts_axis.and_then(|a| off_runs.get(&others(study, i, a))) {
                 row.extend(amplification(&row, off));
             }
@@ -117,23 +145,25 @@ fn write_runs_csv(
             let error = o.as_ref().err().map_or("", String::as_str);
             wtr.write_field(error).map_err(csv_err)?;
             wtr.write_record(None::<&[u8]>).map_err(csv_err)?;
-            match o {
-                Err(e) => {
-                    tally.failed += 1;
-                    if tally.first_failed.len() < 5 {
-                        tally.first_failed.push((i, e));
-                    }
-                }
-                Ok(s) if !s.warnings.is_empty() => {
-                    tally.warned += 1;
-                    if tally.first_warning.is_none() {
-                        tally.first_warning = Some((i, s.warnings[0].clone()));
-                    }
-                }
-                Ok(_) => {}
-            }
+            tally.count(i, o);
             Ok(())
-        });
+        };
+        let r = if keep {
+            let named = |cells: Vec<(u32, Cell)>| {
+                let named = cells
+                    .into_iter()
+                    .map(|(k, v)| (columns[k as usize].clone(), v));
+                named.collect()
+            };
+            kept.into_iter().enumerate().try_for_each(|(i, k)| match k {
+                Kept::Ok(cells, warning) => emit(i, Ok((named(cells), warning))),
+                Kept::Err(e) => emit(i, Err(e)),
+            })
+        } else {
+            each_outcome(swept, store, |i, o| {
+                emit(i, o.map(|s| (headline(&s), s.warnings.first().cloned())))
+            })
+        };
         wtr.flush()?;
         // A failure to read the store is kept to say it as it is; the file is not written.
         r.map_err(|e| {
@@ -143,6 +173,27 @@ fn write_runs_csv(
     })
     .map_err(|e| inner.take().unwrap_or_else(|| io(e)))?;
     Ok(tally)
+}
+
+impl Tally {
+    /// Counts run `i`'s outcome: failed, or with a warning (its first).
+    fn count(&mut self, i: usize, o: Headline) {
+        match o {
+            Err(e) => {
+                self.failed += 1;
+                if self.first_failed.len() < 5 {
+                    self.first_failed.push((i, e));
+                }
+            }
+            Ok((_, Some(w))) => {
+                self.warned += 1;
+                if self.first_warning.is_none() {
+                    self.first_warning = Some((i, w));
+                }
+            }
+            Ok(_) => {}
+        }
+    }
 }
 
 /// `pounding sweep`.
