@@ -435,7 +435,7 @@ pub fn parse_doc(value: &Value) -> Result<ScenarioDoc, (Option<String>, String)>
         };
         return Err((Some(key), msg));
     }
-    if let Some((key, x)) = tiny_number("", value) {
+    if let Some((key, x)) = tiny_number(value) {
         return Err((
             Some(key.clone()),
             format!("{} = {x:e} is not allowed: 0, or at least 1e-30 in magnitude (limits::MIN_MAGNITUDE: smaller numbers are zero for any structure and slow the analysis)", shown_key(&key)),
@@ -499,20 +499,27 @@ pub fn toml_float(x: f64) -> &'static str {
 
 /// The first number of `v` that is neither 0 nor at least [`pounding::limits::MIN_MAGNITUDE`] in magnitude,
 /// with its dotted key.
-fn tiny_number(key: &str, v: &Value) -> Option<(String, f64)> {
-    let child = |k: &str| dotted_child(key, k);
-    match v {
-        Value::Number(n) => n
-            .as_f64()
-            .filter(|x| !pounding::limits::not_tiny(*x))
-            .map(|x| (key.to_string(), x)),
-        Value::Object(m) => m.iter().find_map(|(k, v)| tiny_number(&child(k), v)),
-        Value::Array(a) => a
-            .iter()
-            .enumerate()
-            .find_map(|(i, v)| tiny_number(&child(&i.to_string()), v)),
-        _ => None,
+fn tiny_number(v: &Value) -> Option<(String, f64)> {
+    /// The number and its keys, innermost first (pushed on the way out: nothing is built where none is).
+    fn find(v: &Value, path: &mut Vec<String>) -> Option<f64> {
+        let (k, x) = match v {
+            Value::Number(n) => return n.as_f64().filter(|x| !pounding::limits::not_tiny(*x)),
+            Value::Object(m) => m
+                .iter()
+                .find_map(|(k, v)| find(v, path).map(|x| (k.clone(), x)))?,
+            Value::Array(a) => {
+                let mut items = a.iter().enumerate();
+                items.find_map(|(i, v)| find(v, path).map(|x| (i.to_string(), x)))?
+            }
+            _ => return None,
+        };
+        path.push(k);
+        Some(x)
     }
+    let mut path = Vec::new();
+    let x = find(v, &mut path)?;
+    path.reverse();
+    Some((path.join("."), x))
 }
 
 /// `value` as a `T` (a scenario, or another set of named parameters such as Python's synthetic record's),

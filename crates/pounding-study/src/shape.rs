@@ -20,16 +20,24 @@ pub fn scenario_schema() -> &'static Value {
 pub fn lists_where_tables_belong(value: &Value) -> Option<String> {
     let root = scenario_schema();
     let mut path = Vec::new();
-    first_misplaced_list(value, root, root, &mut path).then(|| path.join("."))
+    first_misplaced_list(value, root, root, &mut path).then(|| {
+        path.reverse();
+        path.join(".")
+    })
 }
 
-/// Whether a misplaced list is at or below `value` (read against `schema`); `path` then holds its keys.
+/// Whether a misplaced list is at or below `value` (read against `schema`); `path` then holds its keys,
+/// innermost first (pushed on the way out: nothing is built where none is found).
 fn first_misplaced_list(
     value: &Value,
     schema: &Value,
     root: &Value,
     path: &mut Vec<String>,
 ) -> bool {
+    // A number, a name: no list below, whatever the schema.
+    if !(value.is_array() || value.is_object()) {
+        return false;
+    }
     let alternatives = resolve(schema, root);
     match value {
         Value::Array(items) => {
@@ -40,10 +48,9 @@ fn first_misplaced_list(
                 return false;
             };
             items.iter().enumerate().any(|(i, v)| {
-                path.push(i.to_string());
                 let found = first_misplaced_list(v, item, root, path);
-                if !found {
-                    path.pop();
+                if found {
+                    path.push(i.to_string());
                 }
                 found
             })
@@ -56,10 +63,9 @@ fn first_misplaced_list(
                 // A key the schema does not know: serde names it.
                 return false;
             };
-            path.push(k.clone());
             let found = first_misplaced_list(v, sub, root, path);
-            if !found {
-                path.pop();
+            if found {
+                path.push(k.clone());
             }
             found
         }),
