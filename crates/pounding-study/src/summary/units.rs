@@ -77,6 +77,22 @@ impl Units {
     }
 }
 
+impl Units {
+    /// Whether these are the shared units ([`Self::shared`]), not a map a summary read.
+    pub fn is_shared(&self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &Self::shared().0)
+    }
+}
+
+/// What a summary's compact JSON holds of the shared units: `,"units":` and their map.
+pub(super) fn shared_field_text() -> &'static str {
+    static TEXT: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    TEXT.get_or_init(|| {
+        let map = serde_json::to_string(&Units::shared()).expect("units are JSON");
+        format!(",\"units\":{map}")
+    })
+}
+
 impl Default for Units {
     fn default() -> Self {
         Self::shared()

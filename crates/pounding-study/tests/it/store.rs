@@ -73,7 +73,40 @@ fn a_stored_row_leaves_out_the_units_and_reads_back_whole() {
         assert_eq!(back, whole);
         assert_eq!(RunSummary::row_to_whole(&row), full);
         assert_eq!(RunSummary::whole_to_row(&full), row);
+        // The row is the summary's value without `units`, written: cut out of the text for the shared
+        // units, from the value for units of its own.
+        let without_units = |s: &RunSummary| {
+            let mut v = s.to_value();
+            v.as_object_mut().unwrap().shift_remove("units");
+            v.to_string()
+        };
+        assert_eq!(row, without_units(&whole));
+        let mut own = whole.clone();
+        own.units = serde_json::from_str(r#"{"duration": "s"}"#).unwrap();
+        assert!(whole.units.is_shared() && !own.units.is_shared());
+        assert_eq!(own.to_row(), without_units(&own));
     }
     drop(store);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A summary names the first number of its results that is not finite, found past the text it is written
+/// as; a name that says "null" is no such number.
+#[test]
+fn a_summary_refuses_a_result_that_is_not_finite_and_only_that() {
+    let mut value = pair(1);
+    value["building"][0]["name"] = json!("null");
+    value["contact"][0]["between"] = json!(["null", "b"]);
+    let loaded = pounding_study::input::from_value(&value, "null pair").unwrap();
+    let mut results = loaded.scenario.run().unwrap();
+    let summary = RunSummary::new(&loaded, &results).unwrap();
+    assert_eq!(summary.buildings[0].name, "null");
+    results.buildings[1].peak_displacement[0] = f64::NAN;
+    let e = RunSummary::new(&loaded, &results).unwrap_err();
+    assert!(
+        e.starts_with(
+            "the result summary.buildings[1].peak_displacement[0] is not a finite number"
+        ),
+        "{e}"
+    );
 }
