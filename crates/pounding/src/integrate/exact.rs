@@ -581,18 +581,24 @@ impl Motion {
     pub fn set_jerks(&mut self, fd: usize) {
         let (nw, mech) = (self.w0.len(), self.mech);
         let n = mech / 2;
-        let m = &self.m;
-        // Each channel's slope, the second of its pair.
-        let slopes = self.w0[mech..mech + fd].chunks_exact(2);
-        for (end, rates) in [0, 4].into_iter().enumerate() {
-            let rates = &self.rates[rates][..mech];
-            for (i, jerk) in self.jerk[end][..n].iter_mut().enumerate() {
-                let row = &m[(n + i) * nw..(n + i + 1) * nw];
-                let mut j: f64 = row[..mech].iter().zip(rates).map(|(a, b)| a * b).sum();
-                let forcing = row[mech..mech + fd].chunks_exact(2).zip(slopes.clone());
-                j += forcing.map(|(a, s)| a[0] * s[1]).sum::<f64>();
-                *jerk = j;
+        let slopes = &self.w0[mech..mech + fd];
+        let (start, end) = (&self.rates[0][..mech], &self.rates[4][..mech]);
+        let [j0, j1] = &mut self.jerk;
+        for (i, (j0, j1)) in j0[..n].iter_mut().zip(&mut j1[..n]).enumerate() {
+            let (motion, forcing) = self.m[(n + i) * nw..(n + i + 1) * nw].split_at(mech);
+            // The forcing's rates are its channels' slopes (the second of each pair), the same at both
+            // ends: its part is summed once.
+            let mut f = 0.0;
+            for (a, s) in forcing[..fd].chunks_exact(2).zip(slopes.chunks_exact(2)) {
+                f += a[0] * s[1];
             }
+            let (mut a, mut b) = (0.0, 0.0);
+            for ((m, x), y) in motion.iter().zip(start).zip(end) {
+                a += m * x;
+                b += m * y;
+            }
+            *j0 = a + f;
+            *j1 = b + f;
         }
     }
 
