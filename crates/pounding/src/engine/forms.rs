@@ -105,6 +105,9 @@ pub(crate) struct AffineRates {
     n: usize,
     /// The nonzeros of `M`, row by row: the velocities' rows are read (each summed in a register).
     rows: Sparse,
+    /// The velocities' rows of `M` whole (`n x nw`), where most of their entries are not 0 (a building on
+    /// soil): a dense product costs less than walking the nonzeros.
+    dense: Option<Vec<f64>>,
     /// For each integrated quantity with a form (layout component `2 n + k`): `k` and the form's entries
     /// `(a, b, c)` for `c w_a w_b`, each pair once (`a <= b`).
     forms: Vec<(usize, Entries)>,
@@ -132,7 +135,22 @@ impl AffineRates {
                 (*k, entries)
             })
             .collect();
-        Self { n, rows, forms }
+        let nonzeros: usize = (n..2 * n).map(|i| rows.row(i).len()).sum();
+        let dense = (2 * nonzeros >= n * nw).then(|| {
+            let mut d = vec![0.0; n * nw];
+            for (i, row) in d.chunks_exact_mut(nw).enumerate() {
+                for &(j, v) in rows.row(n + i) {
+                    row[j] = v;
+                }
+            }
+            d
+        });
+        Self {
+            n,
+            rows,
+            dense,
+            forms,
+        }
     }
 
     /// The integrated quantities' rates at `w`, one per quantity (as [`Self::write`] writes them past the
@@ -154,6 +172,14 @@ impl AffineRates {
     pub(crate) fn write_motion(&self, w: &[f64], out: &mut [f64]) {
         let n = self.n;
         out[..n].copy_from_slice(&w[n..2 * n]);
+        if let Some(dense) = &self.dense {
+            // The same sums as over the nonzeros, with zeros between (a zero's sign aside).
+            let nw = dense.len() / n;
+            for (o, row) in out[n..2 * n].iter_mut().zip(dense.chunks_exact(nw)) {
+                *o = row.iter().zip(&w[..nw]).fold(0.0, |a, (v, x)| a + v * x);
+            }
+            return;
+        }
         for (i, o) in out[n..2 * n].iter_mut().enumerate() {
             // From 0 in the row's order, as the entries were once added to it.
             *o = self
