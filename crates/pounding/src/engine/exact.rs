@@ -471,13 +471,13 @@ fn unread_nodes(
     series_five: bool,
     integrals_read: bool,
 ) -> Option<UnreadNodes> {
-    let rates = config.rates.clone()?;
     let source = match (block, built) {
         (None, Some(i)) => NodeSource::Rows(config.lengths.get(i)?.phi.clone()),
         (None, None) if series_five => NodeSource::Series,
         (Some(_), _) if !integrals_read => NodeSource::Held,
         _ => return None,
     };
+    let rates = config.rates.clone()?;
     Some(UnreadNodes { source, rates })
 }
 

@@ -136,7 +136,7 @@ impl AffineRates {
             })
             .collect();
         let nonzeros: usize = (n..2 * n).map(|i| rows.row(i).len()).sum();
-        let dense = (2 * nonzeros >= n * nw).then(|| {
+        let dense = (n > 0 && 2 * nonzeros >= n * nw).then(|| {
             let mut d = vec![0.0; n * nw];
             for (i, row) in d.chunks_exact_mut(nw).enumerate() {
                 for &(j, v) in rows.row(n + i) {
