@@ -392,12 +392,14 @@ impl Peaks {
         let n = l.dofs();
         let (xa, xb, va, vb) = (drift(y0, 0), drift(y1, 0), drift(y0, n), drift(y1, n));
         let curve = Hermite::new(xa, xb, va, vb, h);
-        let mut end = 0.0;
-        for (k, &(e, c)) in st.elements.iter().enumerate() {
-            let [pa, qa, pb, qb] = ends[e];
-            curves[k] = Hermite::new(pa, pb, qa, qb, h);
-            end += c * forces[e];
-        }
+        let end: f64 = st.elements.iter().map(|&(e, c)| c * forces[e]).sum();
+        // Each element's deformation on its cubic Hermite, where a shear between the ends is read on them.
+        let mut set_curves = || {
+            for (k, &(e, _)) in st.elements.iter().enumerate() {
+                let [pa, qa, pb, qb] = ends[e];
+                curves[k] = Hermite::new(pa, pb, qa, qb, h);
+            }
+        };
         let mut shear = end.abs();
         if let Some(m) = seg.dense.motion() {
             let (tm, peak_drift) = step_peak(seg, motion, self.drift[i], (xa, xb, va, vb), drift);
@@ -431,8 +433,13 @@ impl Peaks {
                 self.shear[i] = self.shear[i].max(shear).max(p);
                 return;
             }
-            // The shear at the drift's extremum on the Hermite curves (within 1 %) first: only one that may
-            // beat the peak is read on the exact motion.
+            // The shear at the drift's extremum inside the step on the Hermite curves (within 1 %) first:
+            // only one that may beat the peak is read on the exact motion.
+            if tm >= seg.t1 {
+                self.shear[i] = self.shear[i].max(shear);
+                return;
+            }
+            set_curves();
             let s = (tm - seg.t0) / h;
             let estimate: f64 = st
                 .elements
@@ -443,7 +450,7 @@ impl Peaks {
                     c * sys.elements()[e].force(p.at(s), p.slope(s), &room[..l.block(e).len()])
                 })
                 .sum();
-            if tm < seg.t1 && estimate.abs() >= 0.99 * self.shear[i] {
+            if estimate.abs() >= 0.99 * self.shear[i] {
                 seg.dense.eval_prefix(tm, motion);
                 let mut f = 0.0;
                 for &(e, c) in &st.elements {
@@ -456,6 +463,7 @@ impl Peaks {
             return;
         }
         let peak_drift = hermite_peak(xa, xb, va, vb, h).1;
+        set_curves();
         for s in curve.extrema() {
             if s.is_nan() {
                 continue;
