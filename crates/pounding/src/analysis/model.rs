@@ -80,6 +80,10 @@ pub(super) struct Model<'a> {
     pub system: System<'a>,
     /// First degree of freedom of each building (floor 1; for a building in plan, its x block).
     pub offsets: Vec<usize>,
+    /// The degrees of freedom reported as floors (each building's storeys from its offset; not a
+    /// foundation's sway and rocking, a floor in plan's y and twist, a struck column's point): the floors
+    /// whose absolute accelerations the results give.
+    pub floors: Vec<usize>,
     /// Element index of the first element of storey 1 of each building.
     pub first_storey: Vec<usize>,
     /// Elements per storey of each building (1, or a plan's number of lines); storey `j`'s are
@@ -477,9 +481,16 @@ impl<'a> Model<'a> {
         }
         let contacts = contact_elements(s, (&offsets, &column_dofs), &supports, &mut elements);
         let devices = device_elements(s, &offsets, &supports, &mut elements);
+        let floors = s
+            .buildings()
+            .iter()
+            .zip(&offsets)
+            .flat_map(|(b, &o)| o..o + b.structure.storeys())
+            .collect();
         Self {
             system: System::new(&dofs, elements, s.ground()),
             offsets,
+            floors,
             first_storey,
             per_storey,
             storeys,

@@ -194,7 +194,10 @@ fn room(m: &Model) -> Vec<f64> {
 pub(super) struct Peaks {
     storeys: Vec<StoreyRef>,
     pub displacement: Vec<Peak>,
+    /// The largest absolute acceleration of each floor ([`Model::floors`]; 0 for the other degrees of
+    /// freedom, whose accelerations no result reports), m/s^2 or rad/s^2.
     pub acceleration: Vec<Peak>,
+    floors: Vec<usize>,
     pub drift: Vec<f64>,
     pub shear: Vec<f64>,
     /// The elements of the lines of buildings in plan, and the largest |deformation| of each, m.
@@ -237,6 +240,7 @@ impl Peaks {
             storeys: m.storeys.clone(),
             displacement: vec![Peak::default(); n],
             acceleration: vec![Peak::default(); n],
+            floors: m.floors.clone(),
             drift: vec![0.0; n],
             shear: vec![0.0; n],
             lines: m.lines.clone(),
@@ -269,8 +273,9 @@ impl Peaks {
     fn accelerations(&mut self, sys: &System, t: f64, rate: &[f64]) {
         let l = sys.layout();
         let g = sys.ground().at_xy(t);
-        for (i, p) in self.acceleration.iter_mut().enumerate() {
-            p.offer((rate[l.v(i)] + sys.ground_from(i, t, g)).abs(), t);
+        for &i in &self.floors {
+            let a = rate[l.v(i)] + sys.ground_from(i, t, g);
+            self.acceleration[i].offer(a.abs(), t);
         }
     }
 
@@ -289,7 +294,8 @@ impl Peaks {
         // what the step holds past it (the motion as if no event) is not offered.
         let step = seg.dense.t1() - t0;
         let cut = h < step - 4.0 * f64::EPSILON * t1.abs();
-        for i in 0..n {
+        for k in 0..self.floors.len() {
+            let i = self.floors[k];
             let line = sys.ground_in(i, &motion.w0, 2 * n);
             let ground = |tau: f64| line.at(tau);
             let slope = line.slope();
@@ -344,7 +350,8 @@ impl Peaks {
         // The part of the step this segment covers (an event may cut it short), as fractions of the step.
         let (lo, hi) = (((seg.t0 - t0) / h).max(0.0), ((seg.t1 - t0) / h).min(1.0));
         let (ga, gb) = (sys.ground().at_xy(t0), sys.ground().at_xy(t0 + h));
-        for i in 0..l.dofs() {
+        for k in 0..self.floors.len() {
+            let i = self.floors[k];
             let Some(c) = dense.quartic(l.v(i)) else {
                 return;
             };
