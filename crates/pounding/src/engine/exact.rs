@@ -75,8 +75,10 @@ struct Length {
 struct Whole {
     /// The interval, s.
     h: f64,
-    /// Transition rows to the three Gauss nodes of each block (built when a block is first taken).
+    /// Transition rows to the three Gauss nodes of each block (built when a block is first taken), and the
+    /// rows of the accelerations there ([`node_acceleration_rows`]).
     nodes: Vec<Option<[Vec<f64>; 3]>>,
+    node_acc: Vec<Option<[Vec<f64>; 3]>>,
     /// The transition rows of the blocks of `2^i` pieces, `i = 0 ..= log2(pieces)`, one after the other
     /// (`mech x nw` each; the last is the interval's): what the dense output's chain jumps with too
     /// ([`Motion::chained`]).
@@ -298,6 +300,7 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
         h,
         jerks: Arc::default(),
         nodes: (0..blocks.len()).map(|_| None).collect(),
+        node_acc: (0..blocks.len()).map(|_| None).collect(),
         quantities: forms.iter().map(|(k, _)| *k).collect(),
         probe_keys,
         probe_rows,
@@ -356,6 +359,36 @@ fn pair_products(w: &[f64], out: &mut [f64]) {
 /// that takes whole intervals `whole`: a series-length step within the piece holding `tau`, carried on by the
 /// blocks of the binary digits of the pieces before it ([`crate::integrate::times_transition`]), in a few
 /// products where scaling and squaring would take a dozen.
+/// The rows (`n x nw`) giving the accelerations (the velocities' rates) at `tau` into a step from `w` at its
+/// start, `Φ(tau)`'s motion rows `rows` (`mech x nw`) given: `M`'s velocity rows applied to the motion there
+/// and to the forcing, which moves on its lines (`w_f + tau M_f w`: a channel's value by its slope, the
+/// constants not at all). One product with `w` where the motion's rows and then `M`'s would be two.
+fn node_acceleration_rows(
+    m: &[f64],
+    rows: &[f64],
+    tau: f64,
+    (nw, mech): (usize, usize),
+) -> Vec<f64> {
+    let n = mech / 2;
+    let mut out = vec![0.0; n * nw];
+    for (r, acc) in out.chunks_exact_mut(nw).enumerate() {
+        let row = &m[(n + r) * nw..(n + r + 1) * nw];
+        for (k, &a) in row.iter().enumerate().filter(|(_, a)| **a != 0.0) {
+            if k < mech {
+                for (o, p) in acc.iter_mut().zip(&rows[k * nw..(k + 1) * nw]) {
+                    *o += a * p;
+                }
+            } else {
+                acc[k] += a;
+                for (o, p) in acc.iter_mut().zip(&m[k * nw..(k + 1) * nw]) {
+                    *o += a * tau * p;
+                }
+            }
+        }
+    }
+    out
+}
+
 fn rows_at(m: &[f64], whole: &Whole, tau: f64, (nw, mech): (usize, usize)) -> Vec<f64> {
     let piece = whole.piece();
     let before = ((tau / piece).floor() as usize).min(whole.pieces());
@@ -481,20 +514,12 @@ fn unread_nodes(
     Some(UnreadNodes { source, rates })
 }
 
-/// Holds the motion at a block's Gauss nodes `wn[1..4]` in `motion` and writes its rates there (the
-/// integrated quantities' left for a reader, [`NodeSource::Held`]); `w` the step's start, `mech` and `fd`
-/// forcing components after it.
-fn hold_nodes(
-    motion: &mut Motion,
-    rates: &AffineRates,
-    (w, mech, fd): (&[f64], usize, usize),
-    (wn, h): (&[Vec<f64>; 4], f64),
-    wfull: &mut [f64],
-) {
-    motion.hold_nodes([&wn[1], &wn[2], &wn[3]]);
-    for (j, node) in GAUSS_NODES.iter().enumerate() {
-        full_w_at(&wn[j + 1], (w, mech, fd), node * h, wfull);
-        rates.write_motion(wfull, &mut motion.rates[j + 1]);
+/// The motion's rates at a block's Gauss nodes: the velocities of `wn[1..4]` and the accelerations `wacc`
+/// ([`Exact::propagate_block`]); `n` degrees of freedom.
+fn block_node_rates(motion: &mut Motion, wn: &[Vec<f64>; 4], wacc: &[Vec<f64>; 3], n: usize) {
+    for (rates, (w, acc)) in motion.rates[1..4].iter_mut().zip(wn[1..].iter().zip(wacc)) {
+        rates[..n].copy_from_slice(&w[n..2 * n]);
+        rates[n..2 * n].copy_from_slice(acc);
     }
 }
 
@@ -513,6 +538,8 @@ pub struct Exact {
     dense: Dense,
     w: Vec<f64>,
     wn: [Vec<f64>; 4],
+    /// The accelerations at a whole interval's block's Gauss nodes ([`Self::propagate_block`]).
+    wacc: [Vec<f64>; 3],
     /// The motion at the step's [`QUADRATURE_NODES`], where a step's integrated quantities are read for
     /// their growth when no form integrals give it (set by [`Self::propagate`] on one-piece steps).
     wq: [Vec<f64>; 5],
@@ -600,6 +627,7 @@ impl Exact {
             dense: Dense::exact(Motion::new(mech, nw, dim - mech)),
             w: vec![0.0; nw],
             wn: std::array::from_fn(|_| vec![0.0; nw]),
+            wacc: std::array::from_fn(|_| vec![0.0; mech / 2]),
             wq: std::array::from_fn(|_| vec![0.0; nw]),
             scratch: vec![0.0; dim],
             series: vec![0.0; TERMS * nw],
@@ -932,7 +960,13 @@ impl Exact {
         if whole.nodes[i].is_none() {
             let length = (1usize << i) as f64 * whole.piece();
             let rows = GAUSS_NODES.map(|g| rows_at(&c.m, whole, g * length, (nw, mech)));
+            let mut j = 0;
+            let acc = GAUSS_NODES.map(|g| {
+                j += 1;
+                node_acceleration_rows(&c.m, &rows[j - 1], g * length, (nw, mech))
+            });
             whole.nodes[i] = Some(rows);
+            whole.node_acc[i] = Some(acc);
         }
         // Over the components of w that are not 0 (constant forces of linear laws, a ground channel the
         // record does not have).
@@ -942,6 +976,10 @@ impl Exact {
         let nodes = whole.nodes[i].as_ref().expect("built above");
         for (p, out) in nodes.iter().zip(self.wn[1..].iter_mut()) {
             mat_vec_on(p, w, live, &mut out[..mech]);
+        }
+        let acc = whole.node_acc[i].as_ref().expect("built above");
+        for (p, out) in acc.iter().zip(self.wacc.iter_mut()) {
+            mat_vec_on(p, w, live, out);
         }
         let keys = whole.quantities.iter().copied();
         form_growth(
@@ -1142,11 +1180,17 @@ impl Exact {
         let read = unread.is_none();
         let held = matches!(&unread, Some(u) if matches!(u.source, NodeSource::Held));
         motion.set_nodes_unread(unread);
-        if let (true, Some(rates)) = (held, config.rates.as_deref()) {
-            let w = (&self.w[..], mech, self.lines.len());
-            hold_nodes(motion, rates, w, (&self.wn, h), &mut self.wfull);
+        if held {
+            motion.hold_nodes([&self.wn[1], &self.wn[2], &self.wn[3]]);
         }
         for (j, node) in GAUSS_NODES.iter().enumerate().filter(|_| read) {
+            if let (Some(_), Some(rates)) = (block, config.rates.as_deref()) {
+                // A block's motion rates come from its rows below: the integrated quantities' only.
+                let w = (&self.w[..], mech, self.lines.len());
+                full_w_at(&self.wn[j + 1], w, node * h, &mut self.wfull);
+                rates.write_integrated(&self.wfull, &mut motion.rates[j + 1][mech..]);
+                continue;
+            }
             let at = (&self.w[..], &self.wn[j + 1][..], self.lines.len());
             let room = (&mut self.wfull[..], &mut self.ynode[..]);
             let rates = config.rates.as_deref();
@@ -1158,6 +1202,10 @@ impl Exact {
                 room,
                 &mut motion.rates[j + 1],
             );
+        }
+        if block.is_some() {
+            // The accelerations by their rows, read or held alike (a history does not move a peak).
+            block_node_rates(motion, &self.wn, &self.wacc, mech / 2);
         }
         if whole.is_none() {
             if !grown && !five {

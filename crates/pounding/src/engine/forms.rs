@@ -155,7 +155,7 @@ impl AffineRates {
 
     /// The integrated quantities' rates at `w`, one per quantity (as [`Self::write`] writes them past the
     /// motion).
-    fn write_integrated(&self, w: &[f64], out: &mut [f64]) {
+    pub(crate) fn write_integrated(&self, w: &[f64], out: &mut [f64]) {
         out.fill(0.0);
         for (k, entries) in &self.forms {
             out[*k] = entries.iter().map(|&(a, b, c)| c * w[a] * w[b]).sum();
