@@ -158,7 +158,7 @@ fn jerk_root(
     let mut readings = 0;
     let ((ta, ja), (tb, jb)) = bracket(seg, (j0, j1), &curve, |m, k| {
         readings += 1;
-        let rows = readings > 2 && m.jerk_rows();
+        let rows = readings > 2 && m.jerk_rows(i);
         let jerk = rows.then(|| m.jerk_probe(i, k)).flatten();
         jerk.unwrap_or_else(|| m.second_rate_at(k, n + i)) + slope
     });

@@ -358,15 +358,16 @@ const MAX_JERK_ROWS: usize = 1 << 16;
 /// save 2 to 6 %; with 4 to 8 (the 3-vs-8-storey pair) they cost 0.2 % more than they save.
 const JERK_PIECES: usize = 16;
 
-/// The rows `a_i^T exp(M k p)`, `k = 1 .. pieces - 1`, of each degree of freedom `i`'s jerk `a_i^T w` (`a_i`
+/// The rows `a_i^T exp(M k p)`, `k = 1 .. pieces - 1`, of a degree of freedom `i`'s jerk `a_i^T w` (`a_i`
 /// the velocity's row of `M^2`, m/s^3 or rad/s^3, relative to the ground as the rates are) at the starts of
 /// the pieces `p` of a configuration's whole intervals, one after the other (`nw` each): the jerk there is
-/// one dot product with `w` at a step's start, where the chain of pieces would be walked. Built by the
-/// motion when first asked ([`Motion::jerk_rows`]) and shared by the configuration's steps; empty when they
+/// one dot product with `w` at a step's start, where the chain of pieces would be walked. Built degree of
+/// freedom by degree of freedom, by the motion when first asked for it ([`Motion::jerk_rows`]: the peaks
+/// recorder asks for the floors' only), and shared by the configuration's steps; empty when all of them
 /// would hold more than [`MAX_JERK_ROWS`] numbers.
 #[derive(Debug, Default)]
 pub struct JerkRows {
-    rows: OnceLock<Vec<f64>>,
+    rows: OnceLock<Vec<OnceLock<Vec<f64>>>>,
 }
 
 /// Where the motion at a step's Gauss nodes is found when their integrated quantities are read.
@@ -778,10 +779,10 @@ impl Motion {
         Some((dot(x.get(at.clone())?, &self.w0), dot(&v[at], &self.w0)))
     }
 
-    /// Whether [`Self::jerk_probe`] can read the configuration's jerk rows on this chained step: built at
-    /// the first asking, once, for a configuration whose whole intervals have [`JERK_PIECES`] pieces or more
-    /// (with fewer, a search walks a short chain and may not repay them).
-    pub fn jerk_rows(&self) -> bool {
+    /// Whether [`Self::jerk_probe`] can read degree of freedom `i`'s jerk rows on this chained step: built
+    /// at the first asking, once, for a configuration whose whole intervals have [`JERK_PIECES`] pieces or
+    /// more (with fewer, a search walks a short chain and may not repay them).
+    pub fn jerk_rows(&self, i: usize) -> bool {
         let Some(jerks) = self.jerks.as_ref().filter(|_| self.pieces > 1) else {
             return false;
         };
@@ -792,20 +793,24 @@ impl Motion {
         if whole < JERK_PIECES {
             return false;
         }
-        let rows = jerks.rows.get_or_init(|| {
+        let each = jerks
+            .rows
+            .get_or_init(|| (0..n).map(|_| OnceLock::new()).collect());
+        let Some(cell) = each.get(i) else {
+            return false;
+        };
+        let rows = cell.get_or_init(|| {
             let mut out = Vec::new();
             if n * whole * nw > MAX_JERK_ROWS {
                 return out;
             }
             let m = &self.m;
             let one = &self.jump_rows[..mech * nw];
-            for i in 0..n {
-                let a: Vec<f64> = (0..nw)
-                    .map(|j| (0..nw).map(|k| m[(n + i) * nw + k] * m[k * nw + j]).sum())
-                    .collect();
-                let at = (self.piece, whole);
-                super::functional_at_pieces(&a, (m, one), (nw, mech), at, &mut out);
-            }
+            let a: Vec<f64> = (0..nw)
+                .map(|j| (0..nw).map(|k| m[(n + i) * nw + k] * m[k * nw + j]).sum())
+                .collect();
+            let at = (self.piece, whole);
+            super::functional_at_pieces(&a, (m, one), (nw, mech), at, &mut out);
             out
         });
         !rows.is_empty()
@@ -815,13 +820,13 @@ impl Motion {
     /// `k` of a chained step, one row product; `None` without the rows or the piece (read it by
     /// [`Self::second_rate_at`] then).
     pub fn jerk_probe(&self, i: usize, k: usize) -> Option<f64> {
-        let (nw, n) = (self.w0.len(), self.mech / 2);
+        let nw = self.w0.len();
         if k == 0 || k >= self.pieces {
             return None;
         }
-        let rows = self.jerks.as_ref()?.rows.get()?;
-        let per = rows.len() / (n * nw);
-        let at = (i * per + k - 1) * nw;
+        let rows = self.jerks.as_ref()?.rows.get()?.get(i)?.get()?;
+        let per = rows.len() / nw;
+        let at = (k - 1) * nw;
         (k <= per).then(|| dot(&rows[at..at + nw], &self.w0))
     }
 
@@ -1399,7 +1404,7 @@ pub(super) mod tests {
         let a: Vec<f64> = (0..4)
             .map(|j| (0..4).map(|c| m[4 + c] * m[c * 4 + j]).sum())
             .collect();
-        assert!(!motion.jerk_rows());
+        assert!(!motion.jerk_rows(0));
         let jerks = Arc::new(JerkRows::default());
         motion.chained(
             (pieces, piece),
@@ -1411,7 +1416,7 @@ pub(super) mod tests {
         motion.invalidate();
         // Not built until asked for; then kept.
         assert_eq!(motion.jerk_probe(0, 1), None);
-        assert!(motion.jerk_rows() && motion.jerk_rows());
+        assert!(motion.jerk_rows(0) && motion.jerk_rows(0));
         for k in 1..pieces {
             let tau = k as f64 * piece;
             let e = super::super::exponential(&m, 4, 2, tau, r);
