@@ -355,10 +355,6 @@ fn pair_products(w: &[f64], out: &mut [f64]) {
     }
 }
 
-/// Transition rows (`mech x nw`) over `tau` s (at most the interval) of the configuration of matrix `m`
-/// that takes whole intervals `whole`: a series-length step within the piece holding `tau`, carried on by the
-/// blocks of the binary digits of the pieces before it ([`crate::integrate::times_transition`]), in a few
-/// products where scaling and squaring would take a dozen.
 /// The rows (`n x nw`) giving the accelerations (the velocities' rates) at `tau` into a step from `w` at its
 /// start, `Φ(tau)`'s motion rows `rows` (`mech x nw`) given: `M`'s velocity rows applied to the motion there
 /// and to the forcing, which moves on its lines (`w_f + tau M_f w`: a channel's value by its slope, the
@@ -389,6 +385,10 @@ fn node_acceleration_rows(
     out
 }
 
+/// Transition rows (`mech x nw`) over `tau` s (at most the interval) of the configuration of matrix `m`
+/// that takes whole intervals `whole`: a series-length step within the piece holding `tau`, carried on by the
+/// blocks of the binary digits of the pieces before it ([`crate::integrate::times_transition`]), in a few
+/// products where scaling and squaring would take a dozen.
 fn rows_at(m: &[f64], whole: &Whole, tau: f64, (nw, mech): (usize, usize)) -> Vec<f64> {
     let piece = whole.piece();
     let before = ((tau / piece).floor() as usize).min(whole.pieces());
@@ -960,10 +960,8 @@ impl Exact {
         if whole.nodes[i].is_none() {
             let length = (1usize << i) as f64 * whole.piece();
             let rows = GAUSS_NODES.map(|g| rows_at(&c.m, whole, g * length, (nw, mech)));
-            let mut j = 0;
-            let acc = GAUSS_NODES.map(|g| {
-                j += 1;
-                node_acceleration_rows(&c.m, &rows[j - 1], g * length, (nw, mech))
+            let acc: [Vec<f64>; 3] = std::array::from_fn(|j| {
+                node_acceleration_rows(&c.m, &rows[j], GAUSS_NODES[j] * length, (nw, mech))
             });
             whole.nodes[i] = Some(rows);
             whole.node_acc[i] = Some(acc);
