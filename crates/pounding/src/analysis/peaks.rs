@@ -5,7 +5,8 @@ use super::model::{ColumnRef, DeviceRef, Model, StoreyRef};
 use crate::element::{End, Point};
 use crate::engine::{EventInfo, Observer, Segment, System};
 use crate::integrate::{
-    brent_root, golden_max, hermite_peak, horner, quadratic_roots, Hermite, OdeSystem, TERMS,
+    brent_root, derivative, golden_max, hermite_peak, horner, quadratic_roots, Hermite, OdeSystem,
+    TERMS,
 };
 
 /// A largest value and its time, s.
@@ -166,13 +167,8 @@ fn jerk_root(
     // the search's readings a scalar Horner instead of the motion's).
     let mut v = [0.0; TERMS];
     let (start, terms) = motion.functional_series(0.5 * (ta + tb) - t0, |c| c[n + i], &mut v);
-    let (mut acc, mut jerk) = ([0.0; TERMS], [0.0; TERMS]);
-    for k in 1..terms {
-        acc[k - 1] = k as f64 * v[k];
-    }
-    for k in 1..terms.saturating_sub(1) {
-        jerk[k - 1] = k as f64 * acc[k];
-    }
+    let acc = derivative(&v);
+    let jerk = derivative(&acc);
     let at = |c: &[f64; TERMS], t: f64| horner(&c[..terms], t - t0 - start);
     let tm = brent_root(|t| at(&jerk, t) + slope, ta, tb, ja, jb, tol)?;
     Some((tm, at(&acc, tm) + ground(tm - t0)))
@@ -794,10 +790,7 @@ fn piece_extremum(
     debug_assert!((origin - start).abs() <= 1e-9 * (1.0 + start.abs()));
     poly[0] += f0;
     let origin = t0 + origin;
-    let mut slope = [0.0; TERMS];
-    for j in 1..terms {
-        slope[j - 1] = j as f64 * poly[j];
-    }
+    let slope = derivative(&poly);
     let value = |t: f64| horner(&poly[..terms], t - origin);
     let rate = |t: f64| horner(&slope[..terms - 1], t - origin);
     let tol = 4.0 * f64::EPSILON * tb.abs();

@@ -14,7 +14,7 @@ use crate::contact::{ForceLaw, Phase, PreparedContact, Tension, Turn};
 use crate::element::{
     Affine, ElementEnergy, ElementLaw, Event, Notice, RateGate, Scales, Transition, Watch,
 };
-use crate::integrate::{brent_root, horner, DenseComponent, Piece, TERMS};
+use crate::integrate::{brent_root, derivative, horner, DenseComponent, Piece, TERMS};
 use crate::Error;
 
 const TOUCH: Event = Event(0);
@@ -581,13 +581,7 @@ impl Piece for ContactPiece {
         }
         let mut f: [f64; TERMS] = std::array::from_fn(|j| k * x[j] + c * v[j]);
         f[0] -= k * self.gap;
-        let rate: [f64; TERMS] = std::array::from_fn(|j| {
-            if j + 1 < TERMS {
-                (j + 1) as f64 * f[j + 1]
-            } else {
-                0.0
-            }
-        });
+        let rate = derivative(&f);
         let clamp = |f: f64| match self.tension {
             Tension::Clamp => f.max(0.0),
             Tension::Allow => f,

@@ -335,6 +335,13 @@ pub fn horner(c: &[f64], d: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &x| acc * d + x)
 }
 
+/// The coefficients of the derivative of the polynomial `sum_k c[k] d^k` (a series' rate): `(k + 1)
+/// c[k + 1]`, the last 0.
+#[inline]
+pub fn derivative(c: &[f64; TERMS]) -> [f64; TERMS] {
+    std::array::from_fn(|k| c.get(k + 1).map_or(0.0, |x| (k + 1) as f64 * x))
+}
+
 /// Accuracy settings of [`DormandPrince`]: a step is accepted when the weighted RMS of the local error,
 /// with weight `atol_i + rtol * |y_i|`, is at most 1.
 #[derive(Clone, Debug)]
