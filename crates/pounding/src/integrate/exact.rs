@@ -285,6 +285,9 @@ pub fn series_into(c: &[f64], nw: usize, tau: f64, terms: usize, out: &mut [f64]
 pub struct Sparse {
     nonzeros: Vec<(usize, f64)>,
     row_ends: Vec<usize>,
+    /// The nonzeros again as `(row, column, value)`, in the same order: one flat loop per product (most
+    /// rows hold one to four, where a loop per row costs more than its multiply-adds).
+    flat: Vec<(u32, u32, f64)>,
 }
 
 impl Sparse {
@@ -299,13 +302,13 @@ impl Sparse {
     pub fn set(&mut self, m: &[f64], n: usize) {
         self.nonzeros.clear();
         self.row_ends.clear();
-        for row in m.chunks_exact(n) {
-            self.nonzeros.extend(
-                row.iter()
-                    .enumerate()
-                    .filter(|(_, x)| **x != 0.0)
-                    .map(|(j, x)| (j, *x)),
-            );
+        self.flat.clear();
+        for (i, row) in m.chunks_exact(n).enumerate() {
+            let nonzeros = row.iter().enumerate().filter(|(_, x)| **x != 0.0);
+            for (j, &x) in nonzeros {
+                self.nonzeros.push((j, x));
+                self.flat.push((i as u32, j as u32, x));
+            }
             self.row_ends.push(self.nonzeros.len());
         }
     }
@@ -328,16 +331,14 @@ impl Sparse {
         out[..nw].copy_from_slice(w0);
         for k in 1..terms {
             let (done, rest) = out.split_at_mut(k * nw);
-            let prev = &done[(k - 1) * nw..];
-            let f = 1.0 / k as f64;
-            let mut start = 0;
-            for (x, &end) in rest[..nw].iter_mut().zip(&self.row_ends) {
-                *x = f * self.nonzeros[start..end]
-                    .iter()
-                    .map(|&(j, a)| a * prev[j])
-                    .sum::<f64>();
-                start = end;
+            let (prev, next) = (&done[(k - 1) * nw..], &mut rest[..nw]);
+            // Each row's sum in the order of its nonzeros, from -0 as a sum of f64 starts.
+            next.fill(-0.0);
+            for &(i, j, a) in &self.flat {
+                next[i as usize] += a * prev[j as usize];
             }
+            let f = 1.0 / k as f64;
+            next.iter_mut().for_each(|x| *x *= f);
         }
     }
 }
