@@ -20,6 +20,7 @@
 //! (`h^11 (5!)^4 / (11 (10!)^3) f^(10)`), and the quartic is bent to meet it at the step's end
 //! ([`quadrature`]).
 
+use super::memo::{remembered, Key, Memo};
 use std::cell::{Cell, RefCell};
 use std::sync::{Arc, OnceLock};
 
@@ -173,6 +174,20 @@ pub fn step_bound(m: &[f64], nw: usize, dofs: usize) -> f64 {
 /// `P <- I + (M h / k) P` from the last term down, on the blocks (the forcing block of `P` is
 /// `I + F h / (k + 1)` at every stage, as `F^2 = 0`).
 pub fn transition(m: &[f64], nw: usize, mech: usize, h: f64) -> Vec<f64> {
+    thread_local! {
+        static BUILT: RefCell<Memo<Vec<f64>>> = const { RefCell::new(Memo::new()) };
+    }
+    let key = Key::default().count(nw).count(mech).num(h).slice(m);
+    remembered(
+        &BUILT,
+        key,
+        |p| 8 * p.len(),
+        || build_transition(m, nw, mech, h),
+    )
+}
+
+/// [`transition`], built.
+fn build_transition(m: &[f64], nw: usize, mech: usize, h: f64) -> Vec<f64> {
     let q = nw - mech;
     // B F (mech x q).
     let mut bf = vec![0.0; mech * q];

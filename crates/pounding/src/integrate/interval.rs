@@ -4,6 +4,8 @@
 //! the scaled step), and integrals of quadratic forms along the motion by doubling.
 
 use super::exact::{quadrature, transition, MAX_RHO};
+use super::memo::{remembered, Key, Memo};
+use std::cell::RefCell;
 
 /// The halvings `s` that bring a step of `rho = r h` within the series' reach: the least with
 /// `rho / 2^s <= MAX_RHO`.
@@ -86,7 +88,7 @@ fn add_congruence(p: &[f64], q: &[f64], weight: f64, nw: usize, out: &mut [f64],
 }
 
 /// One block of a step's doubling ([`form_blocks`]): `2^i` of its pieces.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct Block {
     /// The first `mech` rows of `exp(M t)` over the block (row-major `mech x nw`).
     pub rows: Vec<f64>,
@@ -101,6 +103,28 @@ pub struct Block {
 /// of an exact step's energies), the pieces summed exactly by doubling: `G(2 t) = G(t) + exp(M t)^T G(t)
 /// exp(M t)`, the transitions by squaring (as [`exponential`]).
 pub fn form_blocks(
+    m: &[f64],
+    nw: usize,
+    mech: usize,
+    (h, r): (f64, f64),
+    forms: &[&[f64]],
+) -> Vec<Block> {
+    thread_local! {
+        static BUILT: RefCell<Memo<Vec<Block>>> = const { RefCell::new(Memo::new()) };
+    }
+    let key = Key::default().count(nw).count(mech).num(h).num(r).slice(m);
+    let key = forms.iter().fold(key, |k, q| k.slice(q));
+    let bytes = |blocks: &Vec<Block>| {
+        let numbers = |b: &Block| b.rows.len() + b.integrals.iter().map(Vec::len).sum::<usize>();
+        8 * blocks.iter().map(numbers).sum::<usize>()
+    };
+    remembered(&BUILT, key, bytes, || {
+        build_form_blocks(m, nw, mech, (h, r), forms)
+    })
+}
+
+/// [`form_blocks`], built.
+fn build_form_blocks(
     m: &[f64],
     nw: usize,
     mech: usize,
@@ -184,13 +208,32 @@ pub fn functional_at_pieces(
     (piece, pieces): (f64, usize),
     out: &mut Vec<f64>,
 ) {
-    let mut r = a.to_vec();
-    let mut next = vec![0.0; nw];
-    for _ in 1..pieces {
-        times_transition(&r, (m, rows), (nw, mech), piece, &mut next);
-        std::mem::swap(&mut r, &mut next);
-        out.extend_from_slice(&r);
+    thread_local! {
+        static BUILT: RefCell<Memo<Vec<f64>>> = const { RefCell::new(Memo::new()) };
     }
+    let key = Key::default()
+        .count(nw)
+        .count(mech)
+        .num(piece)
+        .count(pieces);
+    let key = key.slice(a).slice(m).slice(rows);
+    let built = remembered(
+        &BUILT,
+        key,
+        |v| 8 * v.len(),
+        || {
+            let mut built = Vec::with_capacity(pieces.saturating_sub(1) * nw);
+            let mut r = a.to_vec();
+            let mut next = vec![0.0; nw];
+            for _ in 1..pieces {
+                times_transition(&r, (m, rows), (nw, mech), piece, &mut next);
+                std::mem::swap(&mut r, &mut next);
+                built.extend_from_slice(&r);
+            }
+            built
+        },
+    );
+    out.extend_from_slice(&built);
 }
 
 #[cfg(test)]

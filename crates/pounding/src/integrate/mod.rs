@@ -12,6 +12,7 @@
 mod exact;
 mod interval;
 pub(crate) mod lu;
+mod memo;
 mod peaks;
 mod roots;
 mod rosenbrock;
