@@ -372,15 +372,25 @@ impl Store {
         })
     }
 
-    /// The keys of the runs already finished.
-    pub fn finished_keys(&self) -> Result<HashSet<String>, StoreError> {
+    /// The keys of the runs already finished, as numbers (a key that is not hexadecimal is no run of a
+    /// study's, and is left out): each parsed as it is read, so that a store of a million runs is never held
+    /// as a million strings (about 90 MB more at the start of a resumed sweep).
+    pub fn finished_keys(&self) -> Result<HashSet<u128>, StoreError> {
         let err = io(&self.path);
         let mut st = self.conn.prepare("SELECT key FROM runs").map_err(&err)?;
-        let keys = st
-            .query_map([], |r| r.get::<_, String>(0))
-            .and_then(|rows| rows.collect::<Result<HashSet<_>, _>>())
-            .map_err(&err);
-        keys
+        let mut keys = HashSet::new();
+        let mut rows = st.query([]).map_err(&err)?;
+        while let Some(row) = rows.next().map_err(&err)? {
+            let key = row.get_ref(0).map_err(&err)?;
+            if let Some(k) = key
+                .as_str()
+                .ok()
+                .and_then(|k| u128::from_str_radix(k, 16).ok())
+            {
+                keys.insert(k);
+            }
+        }
+        Ok(keys)
     }
 
     /// Commits `runs` in one transaction (a run stored again, after its stored summary was found damaged,

@@ -495,11 +495,7 @@ pub fn run(
     );
     let claimed = Mutex::new(HashSet::new());
     let held: HashSet<u128> = match store.as_deref().map(Store::finished_keys).transpose() {
-        Ok(keys) => keys
-            .into_iter()
-            .flatten()
-            .filter_map(|k| u128::from_str_radix(&k, 16).ok())
-            .collect(),
+        Ok(keys) => keys.unwrap_or_default(),
         Err(e) => return Err(SweepError::Store(e)),
     };
     let cache = RecordCache::default();
