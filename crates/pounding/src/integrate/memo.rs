@@ -13,6 +13,12 @@ use std::thread::LocalKey;
 /// about 0.5 MB, a two-storey pair's transitions a few hundred bytes).
 const MEMO_BYTES: usize = 8 << 20;
 
+/// Most results of one kind a thread keeps: a lookup and a making of room read every entry, and a study that
+/// changes its structures in every run (a stiffness axis) misses every time; 256 entries take about a
+/// thousand instructions to read, where 8 MiB of a two-storey pair's transitions (10,000 entries) would take
+/// thirty thousand per build.
+const MEMO_ENTRIES: usize = 256;
+
 /// The exact inputs of a build, bit for bit.
 #[derive(Default)]
 pub(crate) struct Key(Vec<u64>);
@@ -96,7 +102,7 @@ pub(crate) fn remembered<V: Clone + 'static>(
     let size = bytes(&value) + 8 * key.0.len();
     if size <= MEMO_BYTES {
         memo.with_borrow_mut(|m| {
-            while m.bytes + size > MEMO_BYTES {
+            while m.bytes + size > MEMO_BYTES || m.entries.len() >= MEMO_ENTRIES {
                 let oldest = (0..m.entries.len()).min_by_key(|&i| m.entries[i].used);
                 let Some(i) = oldest else { break };
                 m.bytes -= m.entries.swap_remove(i).bytes;
@@ -160,5 +166,17 @@ mod tests {
         square(5.0, MEMO_BYTES / 8 + 1);
         square(5.0, MEMO_BYTES / 8 + 1);
         assert_eq!(builds.get(), before + 3);
+        // Small results beyond the count push the oldest out too.
+        square(6.0, 1);
+        (0..MEMO_ENTRIES).for_each(|k| {
+            square(100.0 + k as f64, 1);
+        });
+        let before = builds.get();
+        square(6.0, 1);
+        assert_eq!(
+            builds.get(),
+            before + 1,
+            "forgotten: more entries than allowed"
+        );
     }
 }
