@@ -1097,8 +1097,18 @@ fn rate_quartic(rates: &[f64; 5]) -> [f64; 5] {
     static INVERSE: std::sync::OnceLock<[[f64; 5]; 5]> = std::sync::OnceLock::new();
     let inv = INVERSE.get_or_init(|| {
         let nodes = [0.0, GAUSS_NODES[0], GAUSS_NODES[1], GAUSS_NODES[2], 1.0];
-        // V[i][m] = nodes[i]^m, row-major.
-        let mut v: [f64; 25] = std::array::from_fn(|k| nodes[k / 5].powi((k % 5) as i32));
+        // V[i][m] = nodes[i]^m, row-major, by repeated multiplication: `powi` of these constants is folded
+        // by the compiler to the correctly rounded power in some builds and squared and multiplied at run
+        // time in others (the fourth powers differ in their last bit), which moved the last digits of every
+        // energy read inside a step from one build of the same code to the next.
+        let mut v = [0.0; 25];
+        for (row, &x) in v.chunks_exact_mut(5).zip(&nodes) {
+            let mut p = 1.0;
+            for vm in row {
+                *vm = p;
+                p *= x;
+            }
+        }
         let mut piv = [0; 5];
         assert!(super::lu::factor(&mut v, &mut piv, 5), "distinct nodes");
         // Column j of the inverse solves V x = e_j; kept row-major.
