@@ -75,9 +75,7 @@ impl Units {
             std::sync::OnceLock::new();
         Units(SHARED.get_or_init(|| std::sync::Arc::new(units())).clone())
     }
-}
 
-impl Units {
     /// Whether these are the shared units ([`Self::shared`]), not a map a summary read.
     pub fn is_shared(&self) -> bool {
         std::sync::Arc::ptr_eq(&self.0, &Self::shared().0)

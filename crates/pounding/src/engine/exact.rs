@@ -66,6 +66,15 @@ struct Length {
     quadrature: Option<[Vec<f64>; 5]>,
 }
 
+/// A whole interval's rows at the three Gauss nodes of one of its blocks, `mech x nw` and `n x nw` each.
+#[derive(Debug)]
+struct NodeRows {
+    /// Transition rows: the motion there.
+    motion: [Vec<f64>; 3],
+    /// The accelerations there ([`node_acceleration_rows`]).
+    acc: [Vec<f64>; 3],
+}
+
 /// A whole record interval in one step ([`crate::integrate::exponential`]), for a configuration whose
 /// fast modes would split it into many series-length steps: its transitions, the pieces its motion is read
 /// on inside, and the integrals of the rates' forms over it; and the same over blocks of `1, 2, 4, ...` of
@@ -75,10 +84,8 @@ struct Length {
 struct Whole {
     /// The interval, s.
     h: f64,
-    /// Transition rows to the three Gauss nodes of each block (built when a block is first taken), and the
-    /// rows of the accelerations there ([`node_acceleration_rows`]).
-    nodes: Vec<Option<[Vec<f64>; 3]>>,
-    node_acc: Vec<Option<[Vec<f64>; 3]>>,
+    /// The rows at the three Gauss nodes of each block (built when a block is first taken).
+    nodes: Vec<Option<NodeRows>>,
     /// The transition rows of the blocks of `2^i` pieces, `i = 0 ..= log2(pieces)`, one after the other
     /// (`mech x nw` each; the last is the interval's): what the dense output's chain jumps with too
     /// ([`Motion::chained`]).
@@ -300,7 +307,6 @@ fn build_whole(sys: &System, c: &Configuration, (nw, mech): (usize, usize), h: f
         h,
         jerks: Arc::default(),
         nodes: (0..blocks.len()).map(|_| None).collect(),
-        node_acc: (0..blocks.len()).map(|_| None).collect(),
         quantities: forms.iter().map(|(k, _)| *k).collect(),
         probe_keys,
         probe_rows,
@@ -959,12 +965,11 @@ impl Exact {
         let whole = c.whole.as_mut().expect("built by step_whole");
         if whole.nodes[i].is_none() {
             let length = (1usize << i) as f64 * whole.piece();
-            let rows = GAUSS_NODES.map(|g| rows_at(&c.m, whole, g * length, (nw, mech)));
-            let acc: [Vec<f64>; 3] = std::array::from_fn(|j| {
-                node_acceleration_rows(&c.m, &rows[j], GAUSS_NODES[j] * length, (nw, mech))
+            let motion = GAUSS_NODES.map(|g| rows_at(&c.m, whole, g * length, (nw, mech)));
+            let acc = std::array::from_fn(|j| {
+                node_acceleration_rows(&c.m, &motion[j], GAUSS_NODES[j] * length, (nw, mech))
             });
-            whole.nodes[i] = Some(rows);
-            whole.node_acc[i] = Some(acc);
+            whole.nodes[i] = Some(NodeRows { motion, acc });
         }
         // Over the components of w that are not 0 (constant forces of linear laws, a ground channel the
         // record does not have).
@@ -972,11 +977,10 @@ impl Exact {
         let (w, live) = (&self.w, &self.live);
         mat_vec_on(whole.rows(i), w, live, &mut self.wn[0][..mech]);
         let nodes = whole.nodes[i].as_ref().expect("built above");
-        for (p, out) in nodes.iter().zip(self.wn[1..].iter_mut()) {
+        for (p, out) in nodes.motion.iter().zip(self.wn[1..].iter_mut()) {
             mat_vec_on(p, w, live, &mut out[..mech]);
         }
-        let acc = whole.node_acc[i].as_ref().expect("built above");
-        for (p, out) in acc.iter().zip(self.wacc.iter_mut()) {
+        for (p, out) in nodes.acc.iter().zip(self.wacc.iter_mut()) {
             mat_vec_on(p, w, live, out);
         }
         let keys = whole.quantities.iter().copied();

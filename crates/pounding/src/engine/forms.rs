@@ -139,7 +139,7 @@ impl AffineRates {
         let dense = (n > 0 && 2 * nonzeros >= n * nw).then(|| {
             let mut d = vec![0.0; n * nw];
             for (i, row) in d.chunks_exact_mut(nw).enumerate() {
-                for &(j, v) in rows.row(n + i) {
+                for (j, v) in rows.row(n + i) {
                     row[j] = v;
                 }
             }
@@ -182,11 +182,7 @@ impl AffineRates {
         }
         for (i, o) in out[n..2 * n].iter_mut().enumerate() {
             // From 0 in the row's order, as the entries were once added to it.
-            *o = self
-                .rows
-                .row(n + i)
-                .iter()
-                .fold(0.0, |a, &(j, v)| a + v * w[j]);
+            *o = self.rows.row(n + i).fold(0.0, |a, (j, v)| a + v * w[j]);
         }
     }
 }

@@ -293,16 +293,14 @@ pub fn series_into(c: &[f64], nw: usize, tau: f64, terms: usize, out: &mut [f64]
     }
 }
 
-/// A square row-major matrix by its nonzero entries, row by row (column, value), and where each row ends:
-/// a product in `nnz` multiply-adds instead of `n^2` (`M` of a configuration: a displacement's row holds one
-/// 1, a storey's a few stiffnesses).
+/// A square row-major matrix by its nonzero entries, row by row `(row, column, value)`, and where each row
+/// ends: a product in `nnz` multiply-adds instead of `n^2` (`M` of a configuration: a displacement's row holds
+/// one 1, a storey's a few stiffnesses). Held flat, so that a whole product is one loop (most rows hold one to
+/// four entries, where a loop per row costs more than its multiply-adds).
 #[derive(Clone, Debug, Default)]
 pub struct Sparse {
-    nonzeros: Vec<(usize, f64)>,
+    entries: Vec<(u32, u32, f64)>,
     row_ends: Vec<usize>,
-    /// The nonzeros again as `(row, column, value)`, in the same order: one flat loop per product (most
-    /// rows hold one to four, where a loop per row costs more than its multiply-adds).
-    flat: Vec<(u32, u32, f64)>,
 }
 
 impl Sparse {
@@ -315,16 +313,13 @@ impl Sparse {
 
     /// Becomes the nonzeros of `m` (`n x n`, row-major), reusing its room.
     pub fn set(&mut self, m: &[f64], n: usize) {
-        self.nonzeros.clear();
+        self.entries.clear();
         self.row_ends.clear();
-        self.flat.clear();
         for (i, row) in m.chunks_exact(n).enumerate() {
             let nonzeros = row.iter().enumerate().filter(|(_, x)| **x != 0.0);
-            for (j, &x) in nonzeros {
-                self.nonzeros.push((j, x));
-                self.flat.push((i as u32, j as u32, x));
-            }
-            self.row_ends.push(self.nonzeros.len());
+            self.entries
+                .extend(nonzeros.map(|(j, &x)| (i as u32, j as u32, x)));
+            self.row_ends.push(self.entries.len());
         }
     }
 
@@ -333,10 +328,11 @@ impl Sparse {
         self.row_ends.len()
     }
 
-    /// The nonzeros of row `i`.
-    pub fn row(&self, i: usize) -> &[(usize, f64)] {
+    /// The nonzeros of row `i`, `(column, value)` in the order of their columns.
+    pub fn row(&self, i: usize) -> impl ExactSizeIterator<Item = (usize, f64)> + '_ {
         let start = if i == 0 { 0 } else { self.row_ends[i - 1] };
-        &self.nonzeros[start..self.row_ends[i]]
+        let entries = &self.entries[start..self.row_ends[i]];
+        entries.iter().map(|&(_, j, a)| (j as usize, a))
     }
 
     /// The first `terms` Taylor coefficients of `exp(M t) w0` (`terms x nw` to `out`, as [`series`]):
@@ -349,7 +345,7 @@ impl Sparse {
             let (prev, next) = (&done[(k - 1) * nw..], &mut rest[..nw]);
             // Each row's sum in the order of its nonzeros, from -0 as a sum of f64 starts.
             next.fill(-0.0);
-            for &(i, j, a) in &self.flat {
+            for &(i, j, a) in &self.entries {
                 next[i as usize] += a * prev[j as usize];
             }
             let f = 1.0 / k as f64;
@@ -759,7 +755,7 @@ impl Motion {
         let w: &[f64] = &w;
         if self.sparse.rows() == nw {
             for (i, o) in out.iter_mut().enumerate() {
-                *o = self.sparse.row(n + i).iter().map(|&(j, a)| a * w[j]).sum();
+                *o = self.sparse.row(n + i).map(|(j, a)| a * w[j]).sum();
             }
         } else {
             mat_vec(&self.m[n * nw..(n + out.len()) * nw], w, out);
@@ -861,8 +857,7 @@ impl Motion {
             return (0..nw).map(|c| self.m[j * nw + c] * rate(c)).sum();
         }
         row(j)
-            .iter()
-            .map(|&(c, a)| a * row(c).iter().map(|&(d, b)| b * w[d]).sum::<f64>())
+            .map(|(c, a)| a * row(c).map(|(d, b)| b * w[d]).sum::<f64>())
             .sum()
     }
 
